@@ -1,0 +1,61 @@
+// The reductions of §1.3–§1.4: aligned and oriented boxes become the canonical box, the cylinder is
+// moved into the box's frame. Generic over T: exact for exact T, rounded (once per operation) for
+// float/double — issue #4 bounds that rounding.
+#pragma once
+
+#include "boxcyl/geometry/box.hpp"
+#include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/number/traits.hpp"
+
+namespace boxcyl {
+
+// A canonical box and a unit-axis cylinder in the box's frame: the input of §2–§4.
+template <class T>
+struct CanonicalQuery {
+    CanonicalBox<T> box;
+    UnitCylinder<T> cylinder;
+};
+
+// Floating point only: normalise the axis (one rounding per component plus the sqrt).
+template <class T>
+UnitCylinder<T> to_unit(const Cylinder<T>& c) {
+    const T len = inexact_sqrt(dot(c.axis, c.axis));
+    return {c.center, {c.axis[0] / len, c.axis[1] / len, c.axis[2] / len}, c.radius, c.height / T(2)};
+}
+
+// §1.3: subtract the centre K = (min + max)/2; extents E = (max − min)/2.
+template <class T>
+CanonicalQuery<T> to_canonical(const AlignedBox<T>& b, const UnitCylinder<T>& c) {
+    CanonicalQuery<T> q;
+    for (int i = 0; i < 3; ++i) {
+        const T k = (b.max[i] + b.min[i]) / T(2);
+        q.box.extents[i] = (b.max[i] - b.min[i]) / T(2);
+        q.cylinder.center[i] = c.center[i] - k;
+    }
+    q.cylinder.direction = c.direction;
+    q.cylinder.radius = c.radius;
+    q.cylinder.half_height = c.half_height;
+    return q;
+}
+
+// §1.4: C' = Rᵀ(C − K), D' = Rᵀ D with R = [W0 W1 W2]. Exact only for exactly orthonormal W.
+template <class T>
+CanonicalQuery<T> to_canonical(const OrientedBox<T>& b, const UnitCylinder<T>& c) {
+    CanonicalQuery<T> q;
+    const Vec3<T> delta = c.center - b.center;
+    for (int i = 0; i < 3; ++i) {
+        q.box.extents[i] = b.extents[i];
+        q.cylinder.center[i] = dot(b.axes[i], delta);
+        q.cylinder.direction[i] = dot(b.axes[i], c.direction);
+    }
+    q.cylinder.radius = c.radius;
+    q.cylinder.half_height = c.half_height;
+    return q;
+}
+
+template <class T>
+CanonicalQuery<T> to_canonical(const CanonicalBox<T>& b, const UnitCylinder<T>& c) {
+    return {b, c};
+}
+
+}  // namespace boxcyl

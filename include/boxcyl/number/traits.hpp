@@ -1,0 +1,43 @@
+// What a number type can do. Algorithms are written once over T; they ask these traits instead of
+// assuming floating point (STYLE §2, §avoid-GT): an exact T never reaches std::sqrt.
+#pragma once
+
+#include <cmath>        // std::sqrt for the floating-point specialisation
+#include <type_traits>  // std::is_floating_point_v
+
+namespace boxcyl {
+
+// Primary template: unknown types are not exact and have no sqrt; specialise to opt in.
+template <class T, class Enable = void>
+struct number_traits {
+    static constexpr bool is_exact = false;
+    static constexpr bool has_sqrt = false;
+};
+
+template <class T>
+struct number_traits<T, std::enable_if_t<std::is_floating_point_v<T>>> {
+    static constexpr bool is_exact = false;
+    static constexpr bool has_sqrt = true;
+    static T sqrt(T x) { return std::sqrt(x); }
+};
+
+template <class T>
+inline constexpr bool is_exact_v = number_traits<T>::is_exact;
+
+// The only door to a square root. Instantiating it for an exact type is a compile error, by design:
+// exact paths reformulate instead of normalising (issue #3).
+template <class T>
+T inexact_sqrt(const T& x) {
+    static_assert(number_traits<T>::has_sqrt,
+                  "boxcyl: sqrt is inexact; exact number types must not normalise (use squared norms "
+                  "or quadratic-field numbers)");
+    return number_traits<T>::sqrt(x);
+}
+
+// Sign of a value as -1, 0, +1. Exact types specialise sign_of for speed.
+template <class T>
+int sign_of(const T& x) {
+    return (T(0) < x) - (x < T(0));
+}
+
+}  // namespace boxcyl
