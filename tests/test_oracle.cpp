@@ -137,9 +137,9 @@ TEST(OracleInvariance, RigidMotionsReflectionsPermutationsAxisSign) {
         Case c = gen.next();
         const bool want = testing::oracle_answer(c);
         hits += want;
-        RBox box = c.kind == BoxKind::aligned    ? as_parallelepiped(to_exact(c.aligned))
+        RBox box = c.kind == BoxKind::aligned    ? as_oriented_box(to_exact(c.aligned))
                    : c.kind == BoxKind::oriented ? to_exact(c.oriented)
-                                                 : as_parallelepiped(to_exact(c.canonical));
+                                                 : as_oriented_box(to_exact(c.canonical));
         const RCyl cyl = to_exact(c.cylinder);
         SCOPED_TRACE(describe(c));
 
@@ -222,7 +222,7 @@ TEST(OracleNumeric, AgreesWithProjectedGradientAwayFromTouching) {
 
 TEST(OraclePreconditions, RejectsWhatItCannotDecide) {
     EXPECT_THROW(oracle::intersects(unit_box, Cylinder<double>{{0, 0, 0}, {0, 0, 0}, 1, 1}), std::invalid_argument);
-    RBox flat = as_parallelepiped(to_exact(unit_box));
+    RBox flat = as_oriented_box(to_exact(unit_box));
     flat.axes[2] = flat.axes[0];
     EXPECT_THROW(oracle::intersects(flat, to_exact(Cylinder<double>{{0, 0, 0}, {0, 0, 1}, 1, 1})), std::invalid_argument);
 }

@@ -3,6 +3,9 @@
 // float/double — issue #4 bounds that rounding.
 #pragma once
 
+#include <algorithm>  // std::max
+#include <cmath>      // std::fabs, std::ilogb, std::scalbn
+
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/number/traits.hpp"
@@ -16,11 +19,17 @@ struct CanonicalQuery {
     UnitCylinder<T> cylinder;
 };
 
-// Floating point only: normalise the axis (one rounding per component plus the sqrt).
+// Floating point only: normalise the axis. It is first scaled by a power of two (exact) that brings its
+// largest component to [1, 2), so that D·D can neither underflow (all-subnormal axes) nor overflow;
+// then one rounding per component plus the sqrt.
 template <class T>
 UnitCylinder<T> to_unit(const Cylinder<T>& c) {
-    const T len = inexact_sqrt(dot(c.axis, c.axis));
-    return {c.center, {c.axis[0] / len, c.axis[1] / len, c.axis[2] / len}, c.radius, c.height / T(2)};
+    T m = T(0);
+    for (int i = 0; i < 3; ++i) m = std::max(m, std::fabs(c.axis[i]));
+    const int e = std::ilogb(m);
+    const Vec3<T> a{std::scalbn(c.axis[0], -e), std::scalbn(c.axis[1], -e), std::scalbn(c.axis[2], -e)};
+    const T len = inexact_sqrt(dot(a, a));
+    return {c.center, {a[0] / len, a[1] / len, a[2] / len}, c.radius, c.height / T(2)};
 }
 
 // §1.3: subtract the centre K = (min + max)/2; extents E = (max − min)/2.

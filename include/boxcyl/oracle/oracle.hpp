@@ -55,7 +55,7 @@ inline Cylinder<Rational> to_exact(const Cylinder<float>& c) {
 
 // An aligned box is the parallelepiped with the standard axes, centre (min+max)/2, extents
 // (max−min)/2 — exact in rationals.
-inline OrientedBox<Rational> as_parallelepiped(const AlignedBox<Rational>& b) {
+inline OrientedBox<Rational> as_oriented_box(const AlignedBox<Rational>& b) {
     OrientedBox<Rational> p;
     for (int i = 0; i < 3; ++i) {
         p.center[i] = (b.min[i] + b.max[i]) / 2;
@@ -64,7 +64,7 @@ inline OrientedBox<Rational> as_parallelepiped(const AlignedBox<Rational>& b) {
     }
     return p;
 }
-inline OrientedBox<Rational> as_parallelepiped(const CanonicalBox<Rational>& b) {
+inline OrientedBox<Rational> as_oriented_box(const CanonicalBox<Rational>& b) {
     return {{0, 0, 0}, {Vec3<Rational>{1, 0, 0}, Vec3<Rational>{0, 1, 0}, Vec3<Rational>{0, 0, 1}}, b.extents};
 }
 
@@ -248,10 +248,10 @@ inline bool intersects(const OrientedBox<Rational>& box, const Cylinder<Rational
 }
 
 inline bool intersects(const AlignedBox<Rational>& box, const Cylinder<Rational>& cyl) {
-    return intersects(as_parallelepiped(box), cyl);
+    return intersects(as_oriented_box(box), cyl);
 }
 inline bool intersects(const CanonicalBox<Rational>& box, const Cylinder<Rational>& cyl) {
-    return intersects(as_parallelepiped(box), cyl);
+    return intersects(as_oriented_box(box), cyl);
 }
 template <class Box>
 bool intersects(const Box& box, const Cylinder<double>& cyl) {
