@@ -2,7 +2,8 @@
 // copy-pasteable C++ (hex-float literals, so the printed case is bit-exact).
 #pragma once
 
-#include <cmath>     // std::ldexp, std::nextafter, std::cos, std::sin
+#include <algorithm> // std::max
+#include <cmath>     // std::ldexp, std::nextafter, std::cos, std::sin, std::ilogb, std::scalbn
 #include <cstdint>   // std::uint64_t
 #include <cstdio>    // std::snprintf
 #include <cstring>   // std::memcpy
@@ -214,8 +215,11 @@ inline Case with_parameter(Case c, Parameter p, double v, const Vec3<double>& ax
             }
             break;
         case Parameter::rotation: {
-            // Rotate axis0 in the plane spanned by axis0 and a perpendicular by angle v.
-            const Vec3<double> a = axis0;
+            // Rotate axis0 in the plane spanned by axis0 and a perpendicular by angle v. Prescale by a
+            // power of two so that tiny (subnormal) axes do not underflow in the norms.
+            const double m = std::max({std::abs(axis0[0]), std::abs(axis0[1]), std::abs(axis0[2])});
+            const int ex = std::ilogb(m);
+            const Vec3<double> a{std::scalbn(axis0[0], -ex), std::scalbn(axis0[1], -ex), std::scalbn(axis0[2], -ex)};
             Vec3<double> perp = std::abs(a[0]) < std::abs(a[1]) ? Vec3<double>{0, a[2], -a[1]} : Vec3<double>{a[2], 0, -a[0]};
             if (perp[0] == 0 && perp[1] == 0 && perp[2] == 0) perp = {a[1], -a[0], 0};
             const double la = std::sqrt(dot(a, a)), lp = std::sqrt(dot(perp, perp));
@@ -233,8 +237,11 @@ template <class Answer>
 std::pair<double, double> bisect_ulp(double lo, double hi, Answer&& answer) {
     std::int64_t a = ordered_bits(lo), b = ordered_bits(hi);
     const bool at_a = answer(lo);
-    while (b - a > 1) {
-        const std::int64_t m = a + (b - a) / 2;
+    // b − a may exceed INT64_MAX when [lo, hi] straddles 0: take the difference in uint64 (exact, as
+    // 0 < b − a < 2^64) and step by half of it, which always fits.
+    auto gap = [&] { return static_cast<std::uint64_t>(b) - static_cast<std::uint64_t>(a); };
+    while (gap() > 1) {
+        const std::int64_t m = a + static_cast<std::int64_t>(gap() / 2);
         if (answer(from_ordered_bits(m)) == at_a) a = m;
         else b = m;
     }
