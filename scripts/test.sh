@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Builds boxcyl and runs the whole test suite (everything but the "long" label) — the README's test
+# command and what CI runs. Exits non-zero on any failure. BUILD_DIR and JOBS may be overridden.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/deps.sh
+build="${BUILD_DIR:-build-test}"
+jobs="${JOBS:-$(nproc)}"
+# RelWithDebInfo with assertions kept on (no -DNDEBUG): preconditions are checked while testing.
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g" \
+      -DBOXCYL_BUILD_TESTS=ON -DBOXCYL_BUILD_TOOLS=ON
+cmake --build "$build" -j "$jobs"
+ctest --test-dir "$build" --output-on-failure -j "$jobs" -LE long --timeout 1500

@@ -1,0 +1,163 @@
+// See app.hpp. CLI11 parses the command line; jsonl_query does the work.
+#include "app.hpp"
+
+#include <cerrno>      // errno after a failed open
+#include <cstring>     // std::strerror
+#include <filesystem>  // refuse directories (they "open" but read nothing)
+#include <fstream>     // input files
+#include <iostream>    // the standard streams
+#include <string>      // help text
+#include <vector>      // option value lists
+
+#include <CLI/CLI.hpp>
+
+#include "boxcyl/version.hpp"
+#include "jsonl_query.hpp"
+#include "options.hpp"
+
+namespace boxcyl::cli {
+
+namespace {
+
+constexpr const char* help_body = R"(INPUT
+  JSON Lines (UTF-8): one query per line, a JSON object
+    {"id": ID, "box": BOX, "cylinder": CYLINDER}
+  ID        optional; a string or a number, echoed back unchanged as the first key
+  BOX       an aligned box   {"min": [x,y,z], "max": [x,y,z]}                 (min <= max)
+            or an oriented box
+                             {"center": [x,y,z], "axes": [[x,y,z],[x,y,z],[x,y,z]],
+                              "extents": [a,b,c]}                           (extents >= 0)
+  CYLINDER  {"center": [x,y,z], "axis": [x,y,z], "radius": r, "height": h}  (r, h >= 0)
+  Other keys are ignored. A number is read as the nearest double (correctly rounded), so
+  values written with 17 significant digits round-trip exactly; integers are numbers too.
+  A number beyond the double range (e.g. 1e400) makes the line bad, as do duplicate keys.
+
+SEMANTICS
+  Both solids are closed: touching counts as intersecting. The cylinder is the set of
+  points X with |u.(X - center)| <= height/2 and distance from X to the axis line
+  <= radius, where u = axis/|axis|: the axis need not be unit length (only its direction
+  counts) but must not be zero. radius 0 is a segment, height 0 a disk. The aligned box
+  is min <= X <= max componentwise (min == max in a component gives a flat box). The
+  oriented box is the parallelepiped { center + x0*A0 + x1*A1 + x2*A2 : |xi| <= extents[i] }
+  spanned by its axes A0, A1, A2 exactly as given; the axes must be orthonormal within
+  1e-4 (|Ai.Aj - delta_ij| <= 1e-4), else the line is bad. NaN and Inf cannot be written
+  in JSON and are never accepted. With --arithmetic float the inputs are rounded to float
+  first and must still be valid then (finite, non-zero axis, ...).
+
+OUTPUT
+  Exactly one JSON line per input line, in input order:
+    {"id": ID, "intersect": true}   or   {"id": ID, "intersect": false}
+    {"id": ID, "error": "line N: FIELD: REASON"}       for a bad line
+  ("id" only when the line has a valid one). A bad line is invalid JSON, a missing or
+  mistyped field, an invalid value (e.g. "line 7: cylinder.radius: is negative") or an
+  empty line; the tool reports it and goes on with the next line.
+
+EXIT STATUS
+  0  every line was a good query (also for empty input)
+  1  at least one line was bad
+  2  usage error: unknown option or value, unreadable file
+
+EXAMPLE
+  boxcyl intersect examples/queries.jsonl
+  echo '{"box":{"min":[0,0,0],"max":[1,1,1]},"cylinder":{"center":[2,0.5,0.5],"axis":[0,0,1],"radius":1,"height":1}}' | boxcyl intersect
+)";
+
+template <class Table>
+std::vector<std::string> names_of(const Table& table) {
+    std::vector<std::string> names;
+    for (const auto& row : table) names.emplace_back(row.name);
+    return names;
+}
+
+// The options of `intersect`, from the tables, for the top-level --help (which CLI11 would not show).
+std::string options_section() {
+    std::string s = "OPTIONS OF intersect\n  boxcyl intersect [--algorithm NAME] [--arithmetic NAME] [FILE|-]\n";
+    s += "  FILE: JSON Lines input; '-' or none reads standard input.\n";
+    s += "  --algorithm NAME (default " + std::string(default_algorithm) + ")\n";
+    for (const auto& row : algorithm_choices)
+        s += "    " + std::string(row.name) + ": " + std::string(row.description) + "\n";
+    s += "  --arithmetic NAME (default " + std::string(default_arithmetic) + ")\n";
+    for (const auto& row : arithmetic_choices)
+        s += "    " + std::string(row.name) + ": " + std::string(row.description) + "\n";
+    return s + "\n";
+}
+
+template <class Table>
+std::string describe(const std::string& what, const Table& table) {
+    std::string s = what;
+    for (const auto& row : table) {
+        s += "\n  ";
+        s += row.name;
+        s += ": ";
+        s += row.description;
+    }
+    return s;
+}
+
+int run_on(std::istream& input, std::ostream& out, const RunOptions& options) {
+    const std::size_t bad = process_stream(input, out, options);
+    if (input.bad()) return exit_usage;  // a read error: the output is incomplete
+    return bad == 0 ? exit_ok : exit_bad_lines;
+}
+
+}  // namespace
+
+int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& out, std::ostream& err) {
+    CLI::App app{"boxcyl " BOXCYL_VERSION_STRING
+                 ": exact box-cylinder intersection queries (does a finite cylinder intersect a box?)",
+                 "boxcyl"};
+    app.footer(options_section() + help_body);
+    app.set_version_flag("--version", "boxcyl " BOXCYL_VERSION_STRING, "Print the version and exit");
+    app.require_subcommand(1);
+
+    std::string algorithm{default_algorithm};
+    std::string arithmetic{default_arithmetic};
+    std::string file = "-";
+    CLI::App* intersect = app.add_subcommand(
+        "intersect", "Answer one query per input line: does the cylinder intersect the box?");
+    intersect->footer(help_body);  // its options are listed by CLI11 above it
+    intersect->add_option("--algorithm", algorithm,
+                          describe("Algorithm (default " + std::string(default_algorithm) + "):", algorithm_choices))
+        ->check(CLI::IsMember(names_of(algorithm_choices)));
+    intersect->add_option("--arithmetic", arithmetic,
+                          describe("Arithmetic (default " + std::string(default_arithmetic) + "):", arithmetic_choices))
+        ->check(CLI::IsMember(names_of(arithmetic_choices)));
+    intersect->add_option("file", file, "JSON Lines input; '-' or none: standard input");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e, out, err);
+        return code == 0 ? exit_ok : exit_usage;
+    }
+
+    const RunOptions options = make_run_options(algorithm, arithmetic);
+#if !defined(BOXCYL_HAS_EXACT)
+    if (options.query.algorithm == Algorithm::oracle) {
+        err << "boxcyl: --algorithm oracle needs the exact backend (GMP); this build has none\n";
+        return exit_usage;
+    }
+#endif
+    if (file == "-") return run_on(in, out, options);
+
+    std::error_code ec;
+    if (std::filesystem::is_directory(file, ec)) {
+        err << "boxcyl: cannot read '" << file << "': is a directory\n";
+        return exit_usage;
+    }
+    std::ifstream f(file, std::ios::binary);
+    if (!f) {
+        err << "boxcyl: cannot open '" << file << "': " << std::strerror(errno) << "\n";
+        return exit_usage;
+    }
+    return run_on(f, out, options);
+}
+
+int run_app(int argc, const char* const* argv) {
+    // Unsynchronised streams buffer properly; process_stream flushes whenever input runs dry.
+    std::ios::sync_with_stdio(false);
+    std::cin.tie(nullptr);  // no flush per read: process_stream decides
+    return run_app(argc, argv, std::cin, std::cout, std::cerr);
+}
+
+}  // namespace boxcyl::cli

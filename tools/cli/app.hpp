@@ -1,0 +1,19 @@
+// The command line of `boxcyl`: options, help text, input selection and exit codes.
+#pragma once
+
+#include <iosfwd>  // std::istream, std::ostream
+
+namespace boxcyl::cli {
+
+// Exit codes (also documented in --help).
+inline constexpr int exit_ok = 0;         // every line was a good query
+inline constexpr int exit_bad_lines = 1;  // some line was bad (it got an "error" line)
+inline constexpr int exit_usage = 2;      // unknown option or value, unreadable file
+
+// Runs the tool; `in` is what "-" (or no file) reads.
+int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& out, std::ostream& err);
+
+// The same on the process's standard streams.
+int run_app(int argc, const char* const* argv);
+
+}  // namespace boxcyl::cli

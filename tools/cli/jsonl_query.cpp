@@ -1,0 +1,359 @@
+// See jsonl_query.hpp. Parsing goes through nlohmann-json's SAX interface into our own small DOM
+// builder, for three things the plain DOM parser cannot give: the path of a number that overflows the
+// double range (nlohmann reports it as a bare parse error), the exact text of a numeric "id" (echoed
+// unchanged, e.g. 12345678901234567890123 or 1e2, which a double would rewrite), and a refusal of
+// duplicate keys (the DOM parser silently keeps the last one).
+//
+// Numbers: nlohmann's lexer converts with strtod, which is correctly rounded (glibc), so every JSON
+// number becomes the nearest double and 17-significant-digit values round-trip; integers that fit
+// 64 bits are converted with a (correctly rounded) cast, larger ones go through strtod.
+#include "jsonl_query.hpp"
+
+#include <cstdint>    // integer SAX events
+#include <exception>  // failures of the library call
+#include <istream>    // std::getline
+#include <ostream>    // output lines
+#include <utility>    // std::move
+#include <vector>     // the DOM builder's stack
+
+#include <nlohmann/json.hpp>
+
+namespace boxcyl::cli {
+
+namespace {
+
+using json = nlohmann::json;
+
+// Builds a nlohmann::json value from SAX events, tracking where in the document the parser is.
+class DomBuilder {
+public:
+    explicit DomBuilder(json& root) : root_(root) {}
+
+    bool null() { return put(nullptr) != nullptr; }
+    bool boolean(bool b) { return put(b) != nullptr; }
+    bool number_integer(json::number_integer_t v) {
+        note_id_text(std::to_string(v));
+        return put(v) != nullptr;
+    }
+    bool number_unsigned(json::number_unsigned_t v) {
+        note_id_text(std::to_string(v));
+        return put(v) != nullptr;
+    }
+    bool number_float(json::number_float_t v, const json::string_t& text) {
+        note_id_text(text);
+        return put(v) != nullptr;
+    }
+    bool string(json::string_t& s) { return put(std::move(s)) != nullptr; }
+    bool binary(json::binary_t& b) { return put(json::binary(std::move(b))) != nullptr; }
+
+    bool start_object(std::size_t) { return open(json::object()); }
+    bool start_array(std::size_t) { return open(json::array()); }
+    bool end_object() { return close(); }
+    bool end_array() { return close(); }
+
+    bool key(json::string_t& k) {
+        Frame& f = stack_.back();
+        f.key = k;
+        if (f.node->contains(k)) {
+            error_ = path() + ": duplicate key";
+            return false;
+        }
+        return true;
+    }
+
+    bool parse_error(std::size_t, const std::string&, const nlohmann::json::exception& ex) {
+        // 406 is "number overflow": strtod gave ±Inf, i.e. the literal is beyond the double range.
+        if (ex.id == 406) {
+            const std::string where = path();
+            error_ = (where.empty() ? std::string("value") : where) + ": out of double range";
+        } else {
+            error_ = "invalid JSON: " + strip_exception_prefix(ex.what());
+        }
+        return false;
+    }
+
+    const std::string& error() const { return error_; }
+    const std::string& id_text() const { return id_text_; }
+
+private:
+    struct Frame {
+        json* node;
+        std::string key;  // objects: the key whose value is being read
+    };
+
+    // Adds a value where the parser is: the root, the next array element or the current key's value.
+    template <class V>
+    json* put(V&& v) {
+        if (stack_.empty()) {
+            root_ = json(std::forward<V>(v));
+            return &root_;
+        }
+        Frame& f = stack_.back();
+        if (f.node->is_array()) {
+            f.node->push_back(json(std::forward<V>(v)));
+            return &f.node->back();
+        }
+        json& slot = (*f.node)[f.key];
+        slot = json(std::forward<V>(v));
+        return &slot;
+    }
+
+    bool open(json&& empty) {
+        json* p = put(std::move(empty));
+        stack_.push_back({p, {}});
+        return true;
+    }
+
+    bool close() {
+        stack_.pop_back();
+        return true;
+    }
+
+    // The top-level "id" as written, when it is a number (strings are re-serialised from the DOM).
+    void note_id_text(const std::string& text) {
+        if (stack_.size() == 1 && stack_.back().node->is_object() && stack_.back().key == "id") id_text_ = text;
+    }
+
+    // Where the parser is, as a field name: "cylinder.center[2]". The innermost array's next element
+    // is the one being read; enclosing arrays already hold the element being read.
+    std::string path() const {
+        std::string p;
+        for (std::size_t i = 0; i < stack_.size(); ++i) {
+            const Frame& f = stack_[i];
+            if (f.node->is_array()) {
+                std::size_t index = f.node->size();
+                if (i + 1 < stack_.size()) --index;
+                // Appended piecewise: `"[" + std::string` trips GCC 12's false -Wrestrict (bug 105329).
+                p += '[';
+                p += std::to_string(index);
+                p += ']';
+            } else {
+                if (!p.empty()) p += ".";
+                p += f.key;
+            }
+        }
+        return p;
+    }
+
+    // "[json.exception.parse_error.101] parse error at line 1, column 5: syntax error ..." ->
+    // "column 5: syntax error ...": the exception id and the always-1 line say nothing to the user.
+    static std::string strip_exception_prefix(const std::string& what) {
+        std::string m = what;
+        if (!m.empty() && m.front() == '[') {
+            const auto end = m.find("] ");
+            if (end != std::string::npos) m.erase(0, end + 2);
+        }
+        const std::string line1 = "parse error at line 1, ";
+        if (m.compare(0, line1.size(), line1) == 0) m.erase(0, line1.size());
+        return m;
+    }
+
+    json& root_;
+    std::vector<Frame> stack_;
+    std::string error_;
+    std::string id_text_;
+};
+
+// Serialises a string as a JSON string; invalid UTF-8 (possible in echoed input) becomes U+FFFD.
+std::string json_string(const std::string& s) {
+    return json(s).dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+// Structure checks. Each returns "" when fine, else "<field>: <reason>".
+std::string read_number(const json& obj, const char* key, const std::string& field, double& out) {
+    const auto it = obj.find(key);
+    if (it == obj.end()) return field + ": missing";
+    if (!it->is_number()) return field + ": expected a number";
+    out = it->get<double>();
+    return {};
+}
+
+bool is_vec3(const json& j) {
+    return j.is_array() && j.size() == 3 && j[0].is_number() && j[1].is_number() && j[2].is_number();
+}
+
+Vec3<double> to_vec3(const json& j) { return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()}; }
+
+std::string read_vec3(const json& obj, const char* key, const std::string& field, Vec3<double>& out) {
+    const auto it = obj.find(key);
+    if (it == obj.end()) return field + ": missing";
+    if (!is_vec3(*it)) return field + ": expected an array of 3 numbers";
+    out = to_vec3(*it);
+    return {};
+}
+
+std::string read_box(const json& root, AnyBox& out) {
+    const auto it = root.find("box");
+    if (it == root.end()) return "box: missing";
+    const json& b = *it;
+    if (!b.is_object()) return "box: expected an object";
+    const bool aligned = b.contains("min") || b.contains("max");
+    const bool oriented = b.contains("center") || b.contains("axes") || b.contains("extents");
+    if (aligned && oriented) return "box: has both min/max and center/axes/extents";
+    if (!aligned && !oriented)
+        return "box: expected min/max (aligned box) or center/axes/extents (oriented box)";
+    if (aligned) {
+        AlignedBox<double> a;
+        if (auto e = read_vec3(b, "min", "box.min", a.min); !e.empty()) return e;
+        if (auto e = read_vec3(b, "max", "box.max", a.max); !e.empty()) return e;
+        out = a;
+        return {};
+    }
+    OrientedBox<double> o;
+    if (auto e = read_vec3(b, "center", "box.center", o.center); !e.empty()) return e;
+    const auto axes = b.find("axes");
+    if (axes == b.end()) return "box.axes: missing";
+    if (!axes->is_array() || axes->size() != 3) return "box.axes: expected an array of 3 axes";
+    for (std::size_t i = 0; i < 3; ++i) {
+        if (!is_vec3((*axes)[i])) return "box.axes[" + std::to_string(i) + "]: expected an array of 3 numbers";
+        o.axes[i] = to_vec3((*axes)[i]);
+    }
+    if (auto e = read_vec3(b, "extents", "box.extents", o.extents); !e.empty()) return e;
+    out = o;
+    return {};
+}
+
+std::string read_cylinder(const json& root, Cylinder<double>& c) {
+    const auto it = root.find("cylinder");
+    if (it == root.end()) return "cylinder: missing";
+    const json& j = *it;
+    if (!j.is_object()) return "cylinder: expected an object";
+    if (auto e = read_vec3(j, "center", "cylinder.center", c.center); !e.empty()) return e;
+    if (auto e = read_vec3(j, "axis", "cylinder.axis", c.axis); !e.empty()) return e;
+    if (auto e = read_number(j, "radius", "cylinder.radius", c.radius); !e.empty()) return e;
+    if (auto e = read_number(j, "height", "cylinder.height", c.height); !e.empty()) return e;
+    return {};
+}
+
+template <class U>
+Vec3<U> round_vec(const Vec3<double>& v) {
+    return {static_cast<U>(v[0]), static_cast<U>(v[1]), static_cast<U>(v[2])};
+}
+template <class U>
+Cylinder<U> round_shape(const Cylinder<double>& c) {
+    return {round_vec<U>(c.center), round_vec<U>(c.axis), static_cast<U>(c.radius), static_cast<U>(c.height)};
+}
+template <class U>
+AlignedBox<U> round_shape(const AlignedBox<double>& b) {
+    return {round_vec<U>(b.min), round_vec<U>(b.max)};
+}
+template <class U>
+OrientedBox<U> round_shape(const OrientedBox<double>& b) {
+    return {round_vec<U>(b.center), {round_vec<U>(b.axes[0]), round_vec<U>(b.axes[1]), round_vec<U>(b.axes[2])},
+            round_vec<U>(b.extents)};
+}
+
+}  // namespace
+
+ParsedLine parse_line(std::string_view text, std::size_t line_number) {
+    ParsedLine r;
+    const std::string where = "line " + std::to_string(line_number) + ": ";
+    if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+        r.error = where + "empty line";
+        return r;
+    }
+
+    json root;
+    DomBuilder builder(root);
+    const bool parsed = json::sax_parse(text.begin(), text.end(), &builder);
+    // The id is echoed whenever a valid one was read, even if the line fails later (a scalar enters
+    // the DOM whole, so a present id is complete even in a partly parsed line).
+    bool id_ok = true;
+    if (root.is_object()) {
+        if (const auto id = root.find("id"); id != root.end()) {
+            if (id->is_string())
+                r.id = json_string(id->get_ref<const std::string&>());
+            else if (id->is_number())
+                r.id = builder.id_text();
+            else
+                id_ok = false;
+        }
+    }
+    if (!parsed) {
+        r.error = where + builder.error();
+        return r;
+    }
+    if (!root.is_object()) {
+        r.error = where + "expected a JSON object";
+        return r;
+    }
+    if (!id_ok) {
+        r.error = where + "id: expected a string or a number";
+        return r;
+    }
+
+    Query q;
+    if (auto e = read_box(root, q.box); !e.empty()) {
+        r.error = where + e;
+        return r;
+    }
+    if (auto e = read_cylinder(root, q.cylinder); !e.empty()) {
+        r.error = where + e;
+        return r;
+    }
+    const Validity vb = std::visit([](const auto& b) { return validate(b); }, q.box);
+    if (!vb.ok()) {
+        r.error = where + vb.message();
+        return r;
+    }
+    if (const Validity vc = validate(q.cylinder); !vc.ok()) {
+        r.error = where + vc.message();
+        return r;
+    }
+    r.query = std::move(q);
+    return r;
+}
+
+Validity check_arithmetic(const Query& q, const RunOptions& opt) {
+    if (!opt.rounds_to_float) return {};
+    Validity v = std::visit([](const auto& b) { return validate(round_shape<float>(b)); }, q.box);
+    if (v.ok()) v = validate(round_shape<float>(q.cylinder));
+    if (!v.ok()) v.reason += " after rounding to float (--arithmetic float)";
+    return v;
+}
+
+std::string format_answer(const std::string& id, bool intersect) {
+    std::string s = "{";
+    if (!id.empty()) s += "\"id\": " + id + ", ";
+    s += intersect ? "\"intersect\": true}" : "\"intersect\": false}";
+    return s;
+}
+
+std::string format_error(const std::string& id, const std::string& message) {
+    std::string s = "{";
+    if (!id.empty()) s += "\"id\": " + id + ", ";
+    s += "\"error\": " + json_string(message) + "}";
+    return s;
+}
+
+LineAnswer answer_line(std::string_view text, std::size_t line_number, const RunOptions& opt) {
+    ParsedLine p = parse_line(text, line_number);
+    if (!p.query) return {format_error(p.id, p.error), false};
+    const std::string where = "line " + std::to_string(line_number) + ": ";
+    if (const Validity v = check_arithmetic(*p.query, opt); !v.ok())
+        return {format_error(p.id, where + v.message()), false};
+    try {
+        return {format_answer(p.id, run_query(*p.query, opt.query)), true};
+    } catch (const std::exception& e) {
+        // Not expected for validated input; reported per line rather than ending the run.
+        return {format_error(p.id, where + "query failed: " + e.what()), false};
+    }
+}
+
+std::size_t process_stream(std::istream& in, std::ostream& out, const RunOptions& opt) {
+    std::size_t line_number = 0;
+    std::size_t bad = 0;
+    std::string line;
+    for (;;) {
+        // Flush before a read could block, so a caller feeding lines one by one sees each answer.
+        if (in.rdbuf() == nullptr || in.rdbuf()->in_avail() <= 0) out.flush();
+        if (!std::getline(in, line)) break;
+        const LineAnswer a = answer_line(line, ++line_number, opt);
+        out << a.text << '\n';
+        if (!a.good) ++bad;
+    }
+    out.flush();
+    return bad;
+}
+
+}  // namespace boxcyl::cli

@@ -1,0 +1,62 @@
+// JSON Lines in, JSON Lines out: the parsing, checking and formatting behind `boxcyl intersect`.
+// Separate from main.cpp so that tests can drive it directly. The geometry is the library's: this only
+// turns one line of text into a box and a cylinder (or a message naming what is wrong) and an answer
+// back into one line of text.
+#pragma once
+
+#include <cstddef>      // std::size_t
+#include <iosfwd>       // std::istream, std::ostream
+#include <optional>     // a line may not yield a query
+#include <string>       // JSON text, messages
+#include <string_view>  // input lines
+#include <variant>      // aligned or oriented box
+
+#include "boxcyl/geometry/box.hpp"
+#include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/validate.hpp"
+#include "options.hpp"
+
+namespace boxcyl::cli {
+
+using AnyBox = std::variant<AlignedBox<double>, OrientedBox<double>>;
+
+struct Query {
+    AnyBox box;
+    Cylinder<double> cylinder;
+};
+
+// The outcome of reading one input line.
+struct ParsedLine {
+    std::string id;              // the "id" value as JSON text (echoed as is); empty when absent or bad
+    std::optional<Query> query;  // set exactly when the line is good
+    std::string error;           // "line N: <what>" when the line is bad
+};
+
+// Reads one line (without its newline; a trailing '\r' is JSON whitespace and harmless) as a query:
+// JSON syntax, structure, number range and boxcyl::validate(). `line_number` counts from 1.
+ParsedLine parse_line(std::string_view text, std::size_t line_number);
+
+// A query that is valid in double may not survive rounding to float (overflow to ±Inf, an axis that
+// underflows to zero, ...). When `opt.rounds_to_float`, says which field breaks; otherwise ok().
+Validity check_arithmetic(const Query& q, const RunOptions& opt);
+
+// The one place the tool asks the library (boxcyl::intersects from boxcyl/query.hpp).
+bool run_query(const Query& q, const QueryOptions& opt);
+
+// Output lines, without the newline. `id` is JSON text or empty (no "id" key).
+std::string format_answer(const std::string& id, bool intersect);
+std::string format_error(const std::string& id, const std::string& message);
+
+// Answers one line: the output line (without newline) and whether the input line was good.
+struct LineAnswer {
+    std::string text;
+    bool good;
+};
+LineAnswer answer_line(std::string_view text, std::size_t line_number, const RunOptions& opt);
+
+// Reads `in` line by line (memory bounded by the longest line), writes one output line per input
+// line in order. Returns the number of bad lines. Flushes `out` whenever no more input is buffered,
+// so that the tool also works as an interactive filter.
+std::size_t process_stream(std::istream& in, std::ostream& out, const RunOptions& opt);
+
+}  // namespace boxcyl::cli

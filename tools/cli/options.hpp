@@ -1,0 +1,72 @@
+// The one place that maps command-line option values to boxcyl::QueryOptions. Adding an algorithm or
+// an arithmetic to the tool means adding one row here (help text and validation follow from it).
+#pragma once
+
+#include <array>        // the tables
+#include <optional>     // lookups that may fail
+#include <string>       // help text
+#include <string_view>  // names
+
+#include "boxcyl/query.hpp"
+
+namespace boxcyl::cli {
+
+struct AlgorithmChoice {
+    std::string_view name;        // the --algorithm value
+    Algorithm value;
+    bool uses_arithmetic;         // false: --arithmetic does not apply (exact algorithms)
+    std::string_view description; // one line for --help
+};
+
+struct ArithmeticChoice {
+    std::string_view name;        // the --arithmetic value
+    Arithmetic value;
+    std::string_view description; // one line for --help
+};
+
+inline constexpr std::array<AlgorithmChoice, 2> algorithm_choices{{
+    {"inequalities", Algorithm::inequalities, true,
+     "section 4 linear inequalities; fast, rounded (may misjudge near-touching inputs)"},
+    {"oracle", Algorithm::oracle, false,
+     "the exact reference; slow; exact for the inputs as given; ignores --arithmetic"},
+}};
+
+inline constexpr std::array<ArithmeticChoice, 2> arithmetic_choices{{
+    {"float", Arithmetic::float32, "32-bit floats: inputs are rounded to float first"},
+    {"double", Arithmetic::float64, "64-bit doubles"},
+}};
+
+inline constexpr std::string_view default_algorithm = "inequalities";
+inline constexpr std::string_view default_arithmetic = "double";
+
+inline const AlgorithmChoice* find_algorithm(std::string_view name) {
+    for (const auto& c : algorithm_choices)
+        if (c.name == name) return &c;
+    return nullptr;
+}
+
+inline const ArithmeticChoice* find_arithmetic(std::string_view name) {
+    for (const auto& c : arithmetic_choices)
+        if (c.name == name) return &c;
+    return nullptr;
+}
+
+// What the tool runs with: the library's options plus whether the chosen algorithm rounds its inputs
+// to float (then inputs must survive that rounding, see check_arithmetic in jsonl_query.hpp).
+struct RunOptions {
+    QueryOptions query;
+    bool rounds_to_float = false;
+};
+
+// Both names must be table entries (the command line checks that first).
+inline RunOptions make_run_options(std::string_view algorithm, std::string_view arithmetic) {
+    const AlgorithmChoice* alg = find_algorithm(algorithm);
+    const ArithmeticChoice* ari = find_arithmetic(arithmetic);
+    RunOptions o;
+    if (alg) o.query.algorithm = alg->value;
+    if (ari) o.query.arithmetic = ari->value;
+    o.rounds_to_float = alg && alg->uses_arithmetic && ari && ari->value == Arithmetic::float32;
+    return o;
+}
+
+}  // namespace boxcyl::cli

@@ -1,0 +1,370 @@
+// Unit tests of the JSON Lines layer of the boxcyl tool (tools/cli/jsonl_query.hpp): number
+// conversion, structure checks and messages, id echo, output format, line accounting.
+#include <gtest/gtest.h>
+
+#include <bit>           // std::bit_cast for bit-exact comparison
+#include <charconv>      // std::to_chars for 17-digit printing
+#include <cmath>         // std::signbit
+#include <cstdint>       // bit patterns
+#include <random>        // fixed-seed random doubles
+#include <sstream>       // process_stream on strings
+#include <string>
+#include <system_error>  // std::errc
+#include <vector>
+
+#include "jsonl_query.hpp"
+#include "options.hpp"
+
+namespace boxcyl::cli {
+namespace {
+
+const std::string kBox = R"("box": {"min": [0, 0, 0], "max": [1, 1, 1]})";
+const std::string kCyl = R"("cylinder": {"center": [2, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1})";
+
+std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
+
+// Parses `literal` as JSON number text through a whole query line (as cylinder.center[1], where any
+// finite value is valid) and returns the double the tool would use.
+double parse_number(const std::string& literal) {
+    const std::string line = "{" + kBox + R"(, "cylinder": {"center": [0, )" + literal +
+                             R"(, 0], "axis": [0, 0, 1], "radius": 1, "height": 1}})";
+    const ParsedLine p = parse_line(line, 1);
+    EXPECT_TRUE(p.query.has_value()) << "literal " << literal << ": " << p.error;
+    return p.query ? p.query->cylinder.center[1] : 0.0;
+}
+
+std::string error_of(const std::string& line) {
+    const ParsedLine p = parse_line(line, 7);
+    EXPECT_FALSE(p.query.has_value()) << line;
+    return p.error;
+}
+
+// --- numbers: nearest double, bit-exact ---
+
+TEST(JsonlNumbers, DecimalLiteralsBecomeTheNearestDouble) {
+    // Expected bit patterns as hex floats, computed independently (Python float(), David Gay's
+    // correctly rounded conversion).
+    struct Case {
+        const char* literal;
+        double expected;
+    };
+    const Case cases[] = {
+        {"0.1", 0x1.999999999999ap-4},
+        {"1e-300", 0x1.56e1fc2f8f359p-997},
+        {"4.9406564584124654e-324", 0x0.0000000000001p-1022},  // smallest subnormal
+        {"1.7976931348623157e308", 0x1.fffffffffffffp+1023},   // largest finite
+        {"1.7976931348623158e308", 0x1.fffffffffffffp+1023},   // just below the overflow midpoint
+        {"2.2250738585072014e-308", 0x1p-1022},                // smallest normal
+        {"2.2250738585072009e-308", 0x0.fffffffffffffp-1022},  // largest subnormal
+        {"2.2250738585072011e-308", 0x0.fffffffffffffp-1022},
+        {"2.4703282292062327e-324", 0.0},                      // just below half the smallest subnormal
+        {"2.4703282292062328e-324", 0x0.0000000000001p-1022},  // just above it
+        {"1e-400", 0.0},                                       // underflow rounds to zero: in range
+        {"0.30000000000000004", 0x1.3333333333334p-2},
+        {"1.0000000000000002", 0x1.0000000000001p+0},
+        {"3.14159265358979323846264338327950288", 0x1.921fb54442d18p+1},
+        {"1e23", 0x1.52d02c7e14af6p+76},
+        {"8.589973e9", 0x1.00004b04p+33},
+        {"1E+2", 100.0},
+        {"0.1e1", 1.0},
+        // Integers: exact when they fit, otherwise rounded to nearest-even like any literal.
+        {"3", 3.0},
+        {"-17", -17.0},
+        {"9007199254740993", 0x1p+53},
+        {"9007199254740995", 0x1.0000000000002p+53},
+        {"9223372036854775807", 0x1p+63},
+        {"-9223372036854775808", -0x1p+63},
+        {"-9223372036854775809", -0x1p+63},
+        {"18446744073709551615", 0x1p+64},
+        {"18446744073709551616", 0x1p+64},
+        {"123456789012345678901234567890", 0x1.8ee90ff6c373ep+96},
+    };
+    for (const Case& c : cases)
+        EXPECT_EQ(bits(parse_number(c.literal)), bits(c.expected)) << "literal " << c.literal;
+}
+
+TEST(JsonlNumbers, NegativeZeroKeepsItsSign) {
+    EXPECT_TRUE(std::signbit(parse_number("-0.0")));
+    EXPECT_FALSE(std::signbit(parse_number("0.0")));
+}
+
+TEST(JsonlNumbers, SeventeenSignificantDigitsRoundTripBitExactly) {
+    const std::uint64_t seed = 20240611;
+    std::mt19937_64 rng(seed);
+    int checked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const double x = std::bit_cast<double>(rng());
+        if (!std::isfinite(x)) continue;
+        char buf[64];
+        const auto r = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::scientific, 16);
+        ASSERT_EQ(r.ec, std::errc()) << "seed " << seed;
+        const std::string text(buf, r.ptr);
+        ASSERT_EQ(bits(parse_number(text)), bits(x)) << "seed " << seed << ", literal " << text;
+        ++checked;
+    }
+    EXPECT_GT(checked, 19000);
+}
+
+TEST(JsonlNumbers, ShortestRepresentationsRoundTrip) {
+    std::mt19937_64 rng(7);  // seed 7
+    std::uniform_real_distribution<double> u(-1e6, 1e6);
+    for (int i = 0; i < 5000; ++i) {
+        const double x = i % 2 ? u(rng) : std::ldexp(u(rng), static_cast<int>(rng() % 2000) - 1000);
+        char buf[64];
+        const auto r = std::to_chars(buf, buf + sizeof buf, x);
+        const std::string text(buf, r.ptr);
+        ASSERT_EQ(bits(parse_number(text)), bits(x)) << "seed 7, literal " << text;
+    }
+}
+
+TEST(JsonlNumbers, BeyondDoubleRangeIsReportedWithTheField) {
+    EXPECT_EQ(error_of("{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 1e400, "height": 1}})"),
+              "line 7: cylinder.radius: out of double range");
+    EXPECT_EQ(error_of("{" + kBox + R"(, "cylinder": {"center": [0, -1e400, 0], "axis": [0, 0, 1], "radius": 1, "height": 1}})"),
+              "line 7: cylinder.center[1]: out of double range");
+    EXPECT_EQ(error_of(R"({"box": {"center": [0, 0, 0], "axes": [[1, 0, 0], [0, 1, 1.7976931348623159e308], [0, 0, 1]], "extents": [1, 1, 1]}})"),
+              "line 7: box.axes[1][2]: out of double range");
+    EXPECT_EQ(error_of(R"({"id": 1e999})"), "line 7: id: out of double range");
+    EXPECT_EQ(error_of("1e400"), "line 7: value: out of double range");
+}
+
+// --- structure and validation messages ---
+
+TEST(JsonlStructure, MessagesNameTheField) {
+    struct Case {
+        std::string line;
+        std::string error;
+    };
+    const std::string c = kCyl;
+    const std::string ob = R"("center": [0, 0, 0], "extents": [1, 1, 1])";
+    const Case cases[] = {
+        {"", "line 7: empty line"},
+        {" \t \r", "line 7: empty line"},
+        {"[1, 2, 3]", "line 7: expected a JSON object"},
+        {"\"text\"", "line 7: expected a JSON object"},
+        {"{" + c + "}", "line 7: box: missing"},
+        {"{" + kBox + "}", "line 7: cylinder: missing"},
+        {R"({"box": null, )" + c + "}", "line 7: box: expected an object"},
+        {R"({"box": {"min": [0, 0, 0], "max": [1, 1, 1], "axes": []}, )" + c + "}",
+         "line 7: box: has both min/max and center/axes/extents"},
+        {R"({"box": {}, )" + c + "}",
+         "line 7: box: expected min/max (aligned box) or center/axes/extents (oriented box)"},
+        {R"({"box": {"max": [1, 1, 1]}, )" + c + "}", "line 7: box.min: missing"},
+        {R"({"box": {"min": [0, 0, 0, 0], "max": [1, 1, 1]}, )" + c + "}",
+         "line 7: box.min: expected an array of 3 numbers"},
+        {R"({"box": {"min": [0, 0, 0], "max": [1, true, 1]}, )" + c + "}",
+         "line 7: box.max: expected an array of 3 numbers"},
+        {R"({"box": {"min": [0, 0, 0], "max": {"x": 1}}, )" + c + "}",
+         "line 7: box.max: expected an array of 3 numbers"},
+        {R"({"box": {"axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [1, 1, 1]}, )" + c + "}",
+         "line 7: box.center: missing"},
+        {R"({"box": {"center": [0, 0, 0], "extents": [1, 1, 1]}, )" + c + "}", "line 7: box.axes: missing"},
+        {R"({"box": {)" + ob + R"(, "axes": [1, 0, 0]}, )" + c + "}", "line 7: box.axes[0]: expected an array of 3 numbers"},
+        {R"({"box": {)" + ob + R"(, "axes": [[1, 0, 0]]}, )" + c + "}", "line 7: box.axes: expected an array of 3 axes"},
+        {R"({"box": {)" + ob + R"(, "axes": [[1, 0, 0], [0, 1, 0], [0, 0, "1"]]}, )" + c + "}",
+         "line 7: box.axes[2]: expected an array of 3 numbers"},
+        {R"({"box": {"center": [0, 0, 0], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}, )" + c + "}",
+         "line 7: box.extents: missing"},
+        {"{" + kBox + R"(, "cylinder": [])", "line 7: invalid JSON: column 61: syntax error while parsing object - unexpected end of input; expected '}'"},
+        {"{" + kBox + R"(, "cylinder": []})", "line 7: cylinder: expected an object"},
+        {"{" + kBox + R"(, "cylinder": {"axis": [0, 0, 1], "radius": 1, "height": 1}})", "line 7: cylinder.center: missing"},
+        {"{" + kBox + R"(, "cylinder": {"center": [0, 0], "axis": [0, 0, 1], "radius": 1, "height": 1}})",
+         "line 7: cylinder.center: expected an array of 3 numbers"},
+        {"{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "radius": 1, "height": 1}})", "line 7: cylinder.axis: missing"},
+        {"{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "height": 1}})", "line 7: cylinder.radius: missing"},
+        {"{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": [1], "height": 1}})",
+         "line 7: cylinder.radius: expected a number"},
+        {"{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 1, "height": null}})",
+         "line 7: cylinder.height: expected a number"},
+        // Field checks by boxcyl::validate().
+        {"{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": -1, "height": 1}})",
+         "line 7: cylinder.radius: is negative"},
+        {"{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, -0.0, 0], "radius": 1, "height": 1}})",
+         "line 7: cylinder.axis: is the zero vector"},
+        {R"({"box": {"min": [0, 0, 2], "max": [1, 1, 1]}, )" + c + "}", "line 7: box.max[2]: is less than box.min[2]"},
+        {R"({"box": {"center": [0, 0, 0], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [1, 1, -2]}, )" + c + "}",
+         "line 7: box.extents[2]: is negative"},
+        // Syntax.
+        {"{", "line 7: invalid JSON: column 2: syntax error while parsing object key - unexpected end of input; expected string literal"},
+        {"{} {}", "line 7: invalid JSON: column 4: syntax error while parsing value - unexpected '{'; expected end of input"},
+        {R"({"box": 1, "box": 2})", "line 7: box: duplicate key"},
+        {"{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "center": [0, 0, 0]}})", "line 7: cylinder.center: duplicate key"},
+        {R"({"id": null})", "line 7: id: expected a string or a number"},
+        {R"({"id": {"a": 1}})", "line 7: id: expected a string or a number"},
+    };
+    for (const Case& k : cases) EXPECT_EQ(error_of(k.line), k.error) << k.line;
+}
+
+TEST(JsonlStructure, GoodLinesYieldTheShapes) {
+    const ParsedLine a = parse_line("{" + kBox + ", " + kCyl + R"(, "extra": {"deep": [1e300, "x"]}})", 1);
+    ASSERT_TRUE(a.query) << a.error;
+    EXPECT_TRUE(a.id.empty());
+    const auto& ab = std::get<AlignedBox<double>>(a.query->box);
+    EXPECT_EQ(ab.min, (Vec3<double>{0, 0, 0}));
+    EXPECT_EQ(ab.max, (Vec3<double>{1, 1, 1}));
+    EXPECT_EQ(a.query->cylinder.center, (Vec3<double>{2, 0.5, 0.5}));
+    EXPECT_EQ(a.query->cylinder.axis, (Vec3<double>{0, 0, 1}));
+    EXPECT_EQ(a.query->cylinder.radius, 1.0);
+    EXPECT_EQ(a.query->cylinder.height, 1.0);
+
+    const ParsedLine o = parse_line(
+        R"( {"cylinder": {"height": 4, "radius": 3, "axis": [1, 2, 3], "center": [-1, -2, -3]}, "box": {"extents": [0.5, 0, 2], "axes": [[0, 1, 0], [-1, 0, 0], [0, 0, 1]], "center": [7, 8, 9]}}  )",
+        2);
+    ASSERT_TRUE(o.query) << o.error;
+    const auto& ob = std::get<OrientedBox<double>>(o.query->box);
+    EXPECT_EQ(ob.center, (Vec3<double>{7, 8, 9}));
+    EXPECT_EQ(ob.axes[0], (Vec3<double>{0, 1, 0}));
+    EXPECT_EQ(ob.axes[1], (Vec3<double>{-1, 0, 0}));
+    EXPECT_EQ(ob.axes[2], (Vec3<double>{0, 0, 1}));
+    EXPECT_EQ(ob.extents, (Vec3<double>{0.5, 0, 2}));
+    EXPECT_EQ(o.query->cylinder.axis, (Vec3<double>{1, 2, 3}));
+    EXPECT_EQ(o.query->cylinder.radius, 3.0);
+    EXPECT_EQ(o.query->cylinder.height, 4.0);
+
+    // A trailing CR (CRLF files) is JSON whitespace.
+    EXPECT_TRUE(parse_line("{" + kBox + ", " + kCyl + "}\r", 3).query);
+}
+
+// --- id echo ---
+
+TEST(JsonlId, EchoedAsWritten) {
+    struct Case {
+        std::string id_json;
+        std::string echoed;
+    };
+    const Case cases[] = {
+        {"7", "7"},
+        {"-12", "-12"},
+        {"18446744073709551615", "18446744073709551615"},
+        {"123456789012345678901234567890", "123456789012345678901234567890"},
+        {"1e2", "1e2"},
+        {"0.10000000000000000001", "0.10000000000000000001"},
+        {R"("query-1")", R"("query-1")"},
+        {R"("tab\tquote\"slash\/é\u00e9")", R"("tab\tquote\"slash/éé")"},
+        {R"("")", R"("")"},
+    };
+    for (const Case& k : cases) {
+        const ParsedLine p = parse_line(R"({"id": )" + k.id_json + ", " + kBox + ", " + kCyl + "}", 1);
+        ASSERT_TRUE(p.query) << p.error;
+        EXPECT_EQ(p.id, k.echoed) << k.id_json;
+    }
+    // Only the top-level id counts.
+    EXPECT_TRUE(parse_line(R"({"x": {"id": 5}, )" + kBox + ", " + kCyl + "}", 1).id.empty());
+}
+
+TEST(JsonlId, EchoedOnBadLinesWhenReadable) {
+    const RunOptions opt = make_run_options("oracle", "double");
+    EXPECT_EQ(answer_line(R"({"id": "a", "box": {)", 4, opt).text,
+              R"({"id": "a", "error": "line 4: invalid JSON: column 21: syntax error while parsing object key - unexpected end of input; expected string literal"})");
+    EXPECT_EQ(answer_line(R"({"id": 5, )" + kBox + "}", 5, opt).text,
+              R"({"id": 5, "error": "line 5: cylinder: missing"})");
+    EXPECT_EQ(answer_line(R"({"id": true, )" + kBox + "}", 6, opt).text,
+              R"({"error": "line 6: id: expected a string or a number"})");
+}
+
+// --- output format and the whole line ---
+
+TEST(JsonlFormat, ExactText) {
+    EXPECT_EQ(format_answer("", true), R"({"intersect": true})");
+    EXPECT_EQ(format_answer("", false), R"({"intersect": false})");
+    EXPECT_EQ(format_answer("\"x\"", true), R"({"id": "x", "intersect": true})");
+    EXPECT_EQ(format_answer("12", false), R"({"id": 12, "intersect": false})");
+    EXPECT_EQ(format_error("", "line 1: empty line"), R"({"error": "line 1: empty line"})");
+    EXPECT_EQ(format_error("3", "a \"q\" \\ \n"), R"({"id": 3, "error": "a \"q\" \\ \n"})");
+    // Invalid UTF-8 (only possible from echoed input in a message) is replaced, never a throw.
+    EXPECT_EQ(format_error("", "bad \xff"), "{\"error\": \"bad \xEF\xBF\xBD\"}");
+}
+
+TEST(JsonlAnswer, AnswersWithTheChosenAlgorithm) {
+    for (const char* alg : {"inequalities", "oracle"})
+        for (const char* ari : {"float", "double"}) {
+            const RunOptions opt = make_run_options(alg, ari);
+            EXPECT_EQ(answer_line(R"({"id": 1, )" + kBox + ", " + kCyl + "}", 1, opt).text,
+                      R"({"id": 1, "intersect": true})")
+                << alg << " " << ari;
+            EXPECT_EQ(answer_line(R"({"id": 2, "box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [3, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}})",
+                                  2, opt)
+                          .text,
+                      R"({"id": 2, "intersect": false})")
+                << alg << " " << ari;
+        }
+}
+
+TEST(JsonlOptions, TableMapping) {
+    const RunOptions d = make_run_options(default_algorithm, default_arithmetic);
+    EXPECT_EQ(d.query.algorithm, Algorithm::inequalities);
+    EXPECT_EQ(d.query.arithmetic, Arithmetic::float64);
+    EXPECT_FALSE(d.rounds_to_float);
+    const RunOptions f = make_run_options("inequalities", "float");
+    EXPECT_EQ(f.query.arithmetic, Arithmetic::float32);
+    EXPECT_TRUE(f.rounds_to_float);
+    const RunOptions o = make_run_options("oracle", "float");
+    EXPECT_EQ(o.query.algorithm, Algorithm::oracle);
+    EXPECT_FALSE(o.rounds_to_float);  // exact: nothing is rounded
+    EXPECT_EQ(find_algorithm("nope"), nullptr);
+    EXPECT_EQ(find_arithmetic("nope"), nullptr);
+}
+
+TEST(JsonlOptions, FloatArithmeticRefusesInputsThatDoNotSurviveRounding) {
+    const RunOptions f = make_run_options("inequalities", "float");
+    const RunOptions d = make_run_options("inequalities", "double");
+    const std::string big = "{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 1e39, "height": 1}})";
+    EXPECT_EQ(answer_line(big, 3, f).text,
+              R"x({"error": "line 3: cylinder.radius: is +Inf after rounding to float (--arithmetic float)"})x");
+    EXPECT_EQ(answer_line(big, 3, d).text, R"({"intersect": true})");
+    const std::string tiny = "{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [1e-50, 0, 0], "radius": 1, "height": 1}})";
+    EXPECT_EQ(answer_line(tiny, 4, f).text,
+              R"x({"error": "line 4: cylinder.axis: is the zero vector after rounding to float (--arithmetic float)"})x");
+    const std::string low = R"({"box": {"min": [-1e39, 0, 0], "max": [1, 1, 1]}, )" + kCyl + "}";
+    EXPECT_EQ(answer_line(low, 5, f).text,
+              R"x({"error": "line 5: box.min[0]: is -Inf after rounding to float (--arithmetic float)"})x");
+    // Just below the float overflow threshold rounds to FLT_MAX: fine.
+    const std::string edge = "{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 3.4028235e38, "height": 1}})";
+    EXPECT_EQ(answer_line(edge, 6, f).text, R"({"intersect": true})");
+}
+
+// --- streams: one output line per input line ---
+
+std::vector<std::string> lines_of(const std::string& s) {
+    std::vector<std::string> v;
+    std::istringstream in(s);
+    for (std::string l; std::getline(in, l);) v.push_back(l);
+    return v;
+}
+
+TEST(JsonlStream, OneOutputLinePerInputLineInOrder) {
+    const std::string good = "{" + kBox + ", " + kCyl + "}";
+    const std::string input = good + "\n\n" + "garbage\n" + "\r\n" + good + "\r\n" + good;  // no final newline
+    std::istringstream in(input);
+    std::ostringstream out;
+    const std::size_t bad = process_stream(in, out, make_run_options("inequalities", "double"));
+    EXPECT_EQ(bad, 3u);
+    const std::vector<std::string> got = lines_of(out.str());
+    ASSERT_EQ(got.size(), 6u) << out.str();
+    EXPECT_EQ(got[0], R"({"intersect": true})");
+    EXPECT_EQ(got[1], R"({"error": "line 2: empty line"})");
+    EXPECT_EQ(got[2].rfind(R"({"error": "line 3: invalid JSON: )", 0), 0u) << got[2];
+    EXPECT_EQ(got[3], R"({"error": "line 4: empty line"})");
+    EXPECT_EQ(got[4], R"({"intersect": true})");
+    EXPECT_EQ(got[5], R"({"intersect": true})");
+    EXPECT_EQ(out.str().back(), '\n');
+}
+
+TEST(JsonlStream, EmptyInputGivesNoOutput) {
+    std::istringstream in("");
+    std::ostringstream out;
+    EXPECT_EQ(process_stream(in, out, make_run_options("oracle", "double")), 0u);
+    EXPECT_EQ(out.str(), "");
+}
+
+TEST(JsonlStream, OnlyNewlinesAreEmptyLines) {
+    std::istringstream in("\n\n\n");
+    std::ostringstream out;
+    EXPECT_EQ(process_stream(in, out, make_run_options("oracle", "double")), 3u);
+    EXPECT_EQ(out.str(),
+              "{\"error\": \"line 1: empty line\"}\n{\"error\": \"line 2: empty line\"}\n"
+              "{\"error\": \"line 3: empty line\"}\n");
+}
+
+}  // namespace
+}  // namespace boxcyl::cli
