@@ -2,30 +2,40 @@
 // boxes. Closed solids: touching counts as intersecting. Inputs must satisfy validate() (finite, non-zero
 // axis, non-negative sizes, min ≤ max, orthonormal oriented-box axes); that is asserted in debug builds.
 //
-// Options choose the algorithm and arithmetic:
-//   Algorithm::inequalities  §4 linear inequalities (default), in float32 or float64 arithmetic
-//                            (rounded: may err on near-touching inputs; issue #4 makes it exact)
-//   Algorithm::oracle        the exact reference (oracle/oracle.hpp): exact for the inputs as given,
-//                            slow. Needs the exact backend (link boxcyl::exact, which defines
-//                            BOXCYL_HAS_EXACT); without it, choosing it throws std::invalid_argument.
+// Options choose the algorithm (the specification's three, or the oracle) and the arithmetic:
+//   Algorithm::inequalities  §4 linear inequalities (default)      algo/linear_inequalities.hpp
+//   Algorithm::hull          §3 clip, project, convex hull          algo/convex_hull.hpp
+//   Algorithm::lcp           §2 convex QP as an LCP (Lemke)         algo/quadratic_programming.hpp
+//   Algorithm::oracle        the exact reference, any arithmetic    oracle/oracle.hpp
+//   Arithmetic::float32 / float64: rounded; may misjudge inputs within a tiny gap of touching.
+//   Arithmetic::exact: rationals and a + b·√d, exact for the inputs as given (exact_paths.hpp).
+// §2 in float/double can fail (Lemke's method is not robust in floating point, as §2 warns); the query
+// then answers with §2 in exact arithmetic instead of guessing. The oracle and Arithmetic::exact need
+// the exact backend (link boxcyl::exact, which defines BOXCYL_HAS_EXACT); without it, choosing them
+// throws std::invalid_argument. Exact §2/§4 on an oriented box whose axes are not exactly
+// orthonormal throw std::domain_error (see exact_paths.hpp); §3 and the oracle handle any box.
 #pragma once
 
 #include <cassert>    // debug-build precondition checks
+#include <optional>   // results of algorithms that may fail
 #include <stdexcept>  // std::invalid_argument for an unavailable option
 
+#include "boxcyl/algo/convex_hull.hpp"
 #include "boxcyl/algo/linear_inequalities.hpp"
+#include "boxcyl/algo/quadratic_programming.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/reduce.hpp"
 #include "boxcyl/geometry/validate.hpp"
 #if defined(BOXCYL_HAS_EXACT)
+#include "boxcyl/exact_paths.hpp"
 #include "boxcyl/oracle/oracle.hpp"
 #endif
 
 namespace boxcyl {
 
-enum class Algorithm { inequalities, oracle };
-enum class Arithmetic { float32, float64 };
+enum class Algorithm { inequalities, hull, lcp, oracle };
+enum class Arithmetic { float32, float64, exact };
 
 struct QueryOptions {
     Algorithm algorithm = Algorithm::inequalities;
@@ -55,27 +65,55 @@ CanonicalBox<U> cast(const CanonicalBox<T>& b) {
     return {cast<U>(b.extents)};
 }
 
+// One algorithm in rounded arithmetic U on the box and cylinder converted to U.
+template <class U, class Box, class T>
+std::optional<bool> rounded(Algorithm a, const Box& box, const Cylinder<T>& cyl) {
+    const UnitCylinder<U> u = to_unit(cast<U>(cyl));
+    switch (a) {
+        case Algorithm::inequalities: {
+            const auto q = to_canonical(cast<U>(box), u);
+            return algo::linear_inequalities(q.box, q.cylinder);
+        }
+        case Algorithm::hull: return algo::convex_hull(algo::as_parallelepiped(cast<U>(box)), u);
+        case Algorithm::lcp: {
+            const auto q = to_canonical(cast<U>(box), u);
+            return algo::quadratic_programming(q.box, q.cylinder);
+        }
+        case Algorithm::oracle: break;
+    }
+    throw std::invalid_argument("boxcyl: not a rounded algorithm");
+}
+
+#if defined(BOXCYL_HAS_EXACT)
+inline exact::Method exact_method(Algorithm a) {
+    switch (a) {
+        case Algorithm::inequalities: return exact::Method::inequalities;
+        case Algorithm::hull: return exact::Method::hull;
+        case Algorithm::lcp: return exact::Method::lcp;
+        case Algorithm::oracle: break;
+    }
+    throw std::invalid_argument("boxcyl: not a specification algorithm");
+}
+#endif
+
 template <class Box, class T>
 bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
     assert(validate(box).ok() && "boxcyl::intersects: invalid box (see boxcyl::validate)");
     assert(validate(cyl).ok() && "boxcyl::intersects: invalid cylinder (see boxcyl::validate)");
-    switch (opt.algorithm) {
-        case Algorithm::inequalities:
-            if (opt.arithmetic == Arithmetic::float32) {
-                const auto q = to_canonical(cast<float>(box), to_unit(cast<float>(cyl)));
-                return algo::linear_inequalities(q.box, q.cylinder);
-            } else {
-                const auto q = to_canonical(cast<double>(box), to_unit(cast<double>(cyl)));
-                return algo::linear_inequalities(q.box, q.cylinder);
-            }
-        case Algorithm::oracle:
-#if defined(BOXCYL_HAS_EXACT)
-            return oracle::intersects(to_exact(cast<double>(box)), to_exact(cast<double>(cyl)));
-#else
-            throw std::invalid_argument("boxcyl: Algorithm::oracle needs the exact backend (boxcyl::exact)");
-#endif
+    if (opt.algorithm != Algorithm::oracle && opt.arithmetic != Arithmetic::exact) {
+        const std::optional<bool> r = opt.arithmetic == Arithmetic::float32 ? rounded<float>(opt.algorithm, box, cyl)
+                                                                          : rounded<double>(opt.algorithm, box, cyl);
+        if (r) return *r;
+        // Only §2 can fail (its Lemke solver in floating point); answer exactly rather than guess.
     }
-    throw std::invalid_argument("boxcyl: unknown Algorithm value");
+#if defined(BOXCYL_HAS_EXACT)
+    const auto ebox = to_exact(cast<double>(box));
+    const auto ecyl = to_exact(cast<double>(cyl));
+    if (opt.algorithm == Algorithm::oracle) return oracle::intersects(ebox, ecyl);
+    return exact::intersects(exact_method(opt.algorithm), ebox, ecyl);
+#else
+    throw std::invalid_argument("boxcyl: exact arithmetic and the oracle need the exact backend (boxcyl::exact)");
+#endif
 }
 
 }  // namespace detail

@@ -79,15 +79,29 @@ inline std::array<Vec3<double>, 3> random_rotation(std::mt19937_64& rng) {
 
 // Mixed random queries: box kinds, scales 1e-6…1e6, thin boxes, long and short cylinders, zero and tiny
 // (1e-12, 1e-300, subnormal) axis components, random rotations. Sizes are set so roughly half hit.
+// A signed permutation: an exactly orthonormal frame (rotations rounded to double never are).
+inline std::array<Vec3<double>, 3> random_signed_permutation(std::mt19937_64& rng) {
+    std::array<int, 3> p{0, 1, 2};
+    std::shuffle(p.begin(), p.end(), rng);
+    std::array<Vec3<double>, 3> axes{};
+    for (int i = 0; i < 3; ++i) axes[i][p[i]] = (rng() & 1) ? 1.0 : -1.0;
+    return axes;
+}
+
+// Profiles: `mixed` is the standard set; `degenerate` stresses magnitudes (scales 2^-600…2^600,
+// sizes that are zero or differ by 2^±40 within a case) on top of the mixed choices.
+enum class Profile { mixed, degenerate };
+
 class CaseGenerator {
 public:
-    explicit CaseGenerator(std::uint64_t seed) : rng_(seed) {}
+    explicit CaseGenerator(std::uint64_t seed, Profile profile = Profile::mixed) : rng_(seed), profile_(profile) {}
 
     std::mt19937_64& rng() { return rng_; }
 
     Case next() {
         Case c;
-        const double scale = std::ldexp(1.0, static_cast<int>(uniform(-20, 20)));  // ~1e-6 … 1e6
+        const int range = profile_ == Profile::degenerate ? 600 : 20;
+        const double scale = std::ldexp(1.0, static_cast<int>(uniform(-range, range)));  // 2^±20 ≈ 1e-6 … 1e6
         const int kind = static_cast<int>(uniform(0, 3));
         c.kind = kind == 0 ? BoxKind::aligned : kind == 1 ? BoxKind::oriented : BoxKind::canonical;
 
@@ -104,7 +118,8 @@ public:
                 break;
             case BoxKind::oriented:
                 c.oriented.center = origin;
-                c.oriented.axes = random_rotation(rng_);
+                // A quarter get an exactly orthonormal frame, so exact §2/§4 are tested on oriented boxes too.
+                c.oriented.axes = uniform(0, 1) < 0.25 ? random_signed_permutation(rng_) : random_rotation(rng_);
                 c.oriented.extents = ext;
                 break;
             case BoxKind::canonical:
@@ -126,6 +141,7 @@ public:
 
 private:
     double extent_factor() {
+        if (profile_ == Profile::degenerate && uniform(0, 1) < 0.3) return std::ldexp(uniform(0.5, 1.0), uniform(0, 1) < 0.5 ? -40 : 40);
         switch (static_cast<int>(uniform(0, 10))) {
             case 0: return 0.0;                       // flat
             case 1: return std::ldexp(1.0, -30);      // thin
@@ -133,6 +149,7 @@ private:
         }
     }
     double length_factor() {
+        if (profile_ == Profile::degenerate && uniform(0, 1) < 0.3) return std::ldexp(uniform(0.5, 1.0), uniform(0, 1) < 0.5 ? -40 : 40);
         switch (static_cast<int>(uniform(0, 12))) {
             case 0: return 0.0;                       // segment / disk
             case 1: return uniform(5.0, 40.0);        // long
@@ -161,6 +178,7 @@ private:
     }
 
     std::mt19937_64 rng_;
+    Profile profile_;
 };
 
 // ---- Boundary (one-ulp) generation ----
