@@ -43,9 +43,9 @@ inline std::string describe(const Case& c) {
             s += "BoxKind::aligned, AlignedBox<double>{" + hex(c.aligned.min) + ", " + hex(c.aligned.max) + "}, {}, {}";
             break;
         case BoxKind::oriented:
-            s += "BoxKind::oriented, {}, OrientedBox<double>{" + hex(c.oriented.center) + ", {" +
-                 hex(c.oriented.axes[0]) + ", " + hex(c.oriented.axes[1]) + ", " + hex(c.oriented.axes[2]) +
-                 "}, " + hex(c.oriented.extents) + "}, {}";
+            s += "BoxKind::oriented, {}, OrientedBox<double>{" + hex(c.oriented.center) + ", {Vec3<double>" +
+                 hex(c.oriented.axes[0]) + ", Vec3<double>" + hex(c.oriented.axes[1]) + ", Vec3<double>" +
+                 hex(c.oriented.axes[2]) + "}, " + hex(c.oriented.extents) + "}, {}";
             break;
         case BoxKind::canonical:
             s += "BoxKind::canonical, {}, {}, CanonicalBox<double>{" + hex(c.canonical.extents) + "}";

@@ -24,16 +24,23 @@ struct ArithmeticChoice {
     std::string_view description; // one line for --help
 };
 
-inline constexpr std::array<AlgorithmChoice, 2> algorithm_choices{{
+inline constexpr std::array<AlgorithmChoice, 4> algorithm_choices{{
     {"inequalities", Algorithm::inequalities, true,
-     "section 4 linear inequalities; fast, rounded (may misjudge near-touching inputs)"},
+     "section 4 linear inequalities (default); fast; exact with --arithmetic exact"},
+    {"hull", Algorithm::hull, true,
+     "section 3 clip, project, convex hull; exact with --arithmetic exact (any box)"},
+    {"lcp", Algorithm::lcp, true,
+     "section 2 convex QP solved as an LCP (Lemke); a floating-point failure is answered exactly"},
     {"oracle", Algorithm::oracle, false,
      "the exact reference; slow; exact for the inputs as given; ignores --arithmetic"},
 }};
 
-inline constexpr std::array<ArithmeticChoice, 2> arithmetic_choices{{
+inline constexpr std::array<ArithmeticChoice, 3> arithmetic_choices{{
     {"float", Arithmetic::float32, "32-bit floats: inputs are rounded to float first"},
-    {"double", Arithmetic::float64, "64-bit doubles"},
+    {"double", Arithmetic::float64, "64-bit doubles (rounded: may misjudge inputs within a tiny gap of touching)"},
+    {"exact", Arithmetic::exact,
+     "rationals and a + b*sqrt(d): exact for the inputs as given; sections 2 and 4 refuse oriented "
+     "boxes whose axes are not exactly orthonormal (use hull or oracle)"},
 }};
 
 inline constexpr std::string_view default_algorithm = "inequalities";

@@ -52,6 +52,28 @@ examples_oracle)
     run 0 intersect --algorithm=oracle --arithmetic=float "$examples/queries.jsonl"
     same_bytes "$work/out" "$expected/queries.out"
     ;;
+examples_every_algorithm)
+    # Every algorithm gives the exact answers on the examples in double and in exact arithmetic.
+    for alg in inequalities hull lcp; do
+        for ari in double exact; do
+            if [[ $alg != hull && $ari == exact ]]; then continue; fi  # oriented examples: see below
+            run 0 intersect --algorithm "$alg" --arithmetic "$ari" "$examples/queries.jsonl"
+            same_bytes "$work/out" "$expected/queries.out"
+        done
+    done
+    # Exact §2/§4 refuse an oriented box whose axes are orthonormal only up to rounding, naming why,
+    # and answer the aligned and exactly orthonormal ones.
+    printf '%s\n' \
+      '{"box": {"min": [0,0,0], "max": [1,1,1]}, "cylinder": {"center": [1.5,0.5,0.5], "axis": [0,0,1], "radius": 0.5, "height": 1}}' \
+      '{"box": {"center": [0,0,0], "axes": [[0.6,0.8,0],[-0.8,0.6,0],[0,0,1]], "extents": [1,1,1]}, "cylinder": {"center": [3,0,0], "axis": [0,0,1], "radius": 1, "height": 1}}' \
+      > "$work/in"
+    for alg in inequalities lcp; do
+        run 1 intersect --algorithm "$alg" --arithmetic exact "$work/in"
+        head -1 "$work/out" | grep -qx '{"intersect": true}' || fail "$alg exact: aligned line"
+        sed -n 2p "$work/out" | grep -q 'exactly orthonormal' || fail "$alg exact: refusal message"
+    done
+    run 0 intersect --algorithm hull --arithmetic exact "$work/in"
+    ;;
 examples_bad_lines)
     run 1 intersect "$examples/bad_lines.jsonl"
     same_bytes "$work/out" "$expected/bad_lines.out"

@@ -301,6 +301,11 @@ TEST(JsonlOptions, TableMapping) {
     const RunOptions o = make_run_options("oracle", "float");
     EXPECT_EQ(o.query.algorithm, Algorithm::oracle);
     EXPECT_FALSE(o.rounds_to_float);  // exact: nothing is rounded
+    const RunOptions h = make_run_options("hull", "exact");
+    EXPECT_EQ(h.query.algorithm, Algorithm::hull);
+    EXPECT_EQ(h.query.arithmetic, Arithmetic::exact);
+    EXPECT_FALSE(h.rounds_to_float);
+    EXPECT_EQ(make_run_options("lcp", "double").query.algorithm, Algorithm::lcp);
     EXPECT_EQ(find_algorithm("nope"), nullptr);
     EXPECT_EQ(find_arithmetic("nope"), nullptr);
 }
