@@ -62,7 +62,7 @@ struct Row {
 };
 
 template <class U>
-Row measure(int alg, const std::vector<Case>& cases, const std::vector<char>& want, double tau) {
+Row measure(int alg, const std::vector<Case>& cases, const std::vector<unsigned char>& want, double tau) {
     Row r;
     for (std::size_t i = 0; i < cases.size(); ++i) {
         if (sizeof(U) == sizeof(float) && !in_float_range(cases[i])) continue;
@@ -72,7 +72,7 @@ Row measure(int alg, const std::vector<Case>& cases, const std::vector<char>& wa
             ++r.failures;
             continue;
         }
-        if (*got != bool(want[i])) {
+        if (*got != (want[i] != 0)) {
             ++r.wrong;
             r.within += near_touching(cases[i], tau, *got);
         }
@@ -93,11 +93,11 @@ int main(int argc, char** argv) {
     const long n_random = argc > 1 ? std::atol(argv[1]) : 20000;
     const long n_pairs = argc > 2 ? std::atol(argv[2]) : 300;
     std::vector<Case> random, boundary;
-    std::vector<char> want_random, want_boundary;
+    std::vector<unsigned char> want_random, want_boundary;
     CaseGenerator gen(424242);
     for (long i = 0; i < n_random; ++i) {
         random.push_back(gen.next());
-        want_random.push_back(oracle_answer(random.back()));
+        want_random.push_back(oracle_answer(random.back()) ? 1 : 0);
     }
     CaseGenerator bgen(434343);
     while (static_cast<long>(boundary.size()) < 2 * n_pairs) {
@@ -105,9 +105,9 @@ int main(int argc, char** argv) {
         Parameter p;
         if (!boundary_pair(bgen, a, b, p)) continue;
         boundary.push_back(a);
-        want_boundary.push_back(oracle_answer(a));
+        want_boundary.push_back(oracle_answer(a) ? 1 : 0);
         boundary.push_back(b);
-        want_boundary.push_back(oracle_answer(b));
+        want_boundary.push_back(oracle_answer(b) ? 1 : 0);
     }
     const char* names[4] = {"§4 linear inequalities", "§3 convex hull", "§2 LCP (boxcyl)", "§2 LCP as specified"};
     std::printf("| algorithm | arithmetic | set | cases | wrong | rate | wrong, far from touching | solver failures |\n");

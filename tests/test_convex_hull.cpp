@@ -148,7 +148,8 @@ BoxKind peek_kind(const boxcyl::testing::CaseGenerator& gen) {
 // √q for a rational square q, else nullopt.
 std::optional<Rational> rational_sqrt(const Rational& q) {
     if (sgn(q) < 0) return std::nullopt;
-    const mpz_class n = q.get_num(), m = q.get_den();
+    const mpz_class& n = q.get_num();
+    const mpz_class& m = q.get_den();
     if (mpz_perfect_square_p(n.get_mpz_t()) == 0 || mpz_perfect_square_p(m.get_mpz_t()) == 0) return std::nullopt;
     return Rational(mpz_class(sqrt(n)), mpz_class(sqrt(m)));
 }
@@ -572,7 +573,7 @@ TEST(ParallelepipedSlabCull, TouchingIsNotOutside) {
     // Sheared box: a0 = (1,0,0), a1 = (1,1,0), a2 = (0,0,1), K = (0,0,5). Axis z: ρ = 1, γ = 5 − c_z.
     const Parallelepiped<Rational> p{{0, 0, 5}, {Vec3<Rational>{1, 0, 0}, Vec3<Rational>{1, 1, 0}, Vec3<Rational>{0, 0, 1}}};
     const Rational eps(1, mpz_class(1) << 80);
-    auto cyl_at = [](Rational cz, Rational hh) {
+    auto cyl_at = [](const Rational& cz, const Rational& hh) {
         return UnitCylinder<Rational>{{7, -3, cz}, {0, 0, 1}, 0, hh};
     };
     // Top of the slab at c_z + 1 touches the bottom face z = 4.
@@ -583,7 +584,7 @@ TEST(ParallelepipedSlabCull, TouchingIsNotOutside) {
     EXPECT_TRUE(algo::parallelepiped_outside_slab(p, cyl_at(7 + eps, 1)));
     // Axis (0,3,4)/5 through the origin: γ = D·(K − C) = 4, ρ = |D·a0| + |D·a1| + |D·a2| = 0 + 3/5 + 4/5,
     // so the slab reaches the box exactly when h/2 = 4 − 7/5 = 13/5.
-    auto tilted = [](Rational hh) {
+    auto tilted = [](const Rational& hh) {
         return UnitCylinder<Rational>{{0, 0, 0}, {0, Rational(3, 5), Rational(4, 5)}, 1, hh};
     };
     EXPECT_FALSE(algo::parallelepiped_outside_slab(p, tilted(Rational(13, 5))));
@@ -608,7 +609,9 @@ const Parallelepiped<Rational> sheared{
 std::vector<ShearedHand> sheared_cases() {
     const Rational e(1, mpz_class(1) << 70), h(1, 2), q(1, 4);
     const Rational v0(8, 5), v1(4, 5);  // the vertex V in the cross-section
-    auto c = [](Vec3<Rational> cc, Vec3<Rational> ax, Rational r, Rational hh) { return Cylinder<Rational>{cc, ax, r, hh}; };
+    auto c = [](const Vec3<Rational>& cc, const Vec3<Rational>& ax, const Rational& r, const Rational& hh) {
+        return Cylinder<Rational>{cc, ax, r, hh};
+    };
     const Vec3<Rational> z{0, 0, 1};
     return {
         // Axis z, side tangent to the slanted face along the line through a0: C = a0 + r·n.

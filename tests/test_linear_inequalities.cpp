@@ -55,7 +55,8 @@ bool exact_li(const Case& c) {
 }
 
 std::optional<Rational> exact_sqrt(const Rational& q) {
-    const mpz_class n = q.get_num(), d = q.get_den();
+    const mpz_class& n = q.get_num();
+    const mpz_class& d = q.get_den();
     if (!mpz_perfect_square_p(n.get_mpz_t()) || !mpz_perfect_square_p(d.get_mpz_t())) return std::nullopt;
     return Rational(mpz_class(sqrt(n)), mpz_class(sqrt(d)));
 }

@@ -544,7 +544,8 @@ bool qp_exact(const AlignedBox<Rational>& box, const Cylinder<Rational>& cyl) {
 // √x for a rational square, else nullopt.
 std::optional<Rational> rational_sqrt(const Rational& x) {
     if (sgn(x) < 0) return std::nullopt;
-    const mpz_class n = x.get_num(), d = x.get_den();
+    const mpz_class& n = x.get_num();
+    const mpz_class& d = x.get_den();
     if (!mpz_perfect_square_p(n.get_mpz_t()) || !mpz_perfect_square_p(d.get_mpz_t())) return std::nullopt;
     return Rational(mpz_class(sqrt(n)), mpz_class(sqrt(d)));
 }

@@ -279,7 +279,7 @@ inline bool boundary_pair(CaseGenerator& gen, Case& first, Case& second, Paramet
     const double span = 8 * (s + std::abs(c.cylinder.center[0]) + std::abs(c.cylinder.center[1]) +
                              std::abs(c.cylinder.center[2]));
     switch (which) {
-        case Parameter::radius: lo = 0; hi = span; break;
+        case Parameter::radius:
         case Parameter::height: lo = 0; hi = span; break;
         case Parameter::center_x: case Parameter::center_y: case Parameter::center_z: {
             const int i = static_cast<int>(which) - static_cast<int>(Parameter::center_x);

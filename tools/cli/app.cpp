@@ -65,6 +65,7 @@ EXAMPLE
 template <class Table>
 std::vector<std::string> names_of(const Table& table) {
     std::vector<std::string> names;
+    names.reserve(table.size());
     for (const auto& row : table) names.emplace_back(row.name);
     return names;
 }

@@ -300,7 +300,7 @@ ParsedLine parse_line(std::string_view text, std::size_t line_number) {
         r.error = where + vc.message();
         return r;
     }
-    r.query = std::move(q);
+    r.query = q;
     return r;
 }
 

@@ -115,7 +115,8 @@ private:
     }
     // √q for a rational square q (only reached when the norm vanished, which proves q is a square).
     static R exact_root(const R& q) {
-        mpz_class n = q.get_num(), m = q.get_den();
+        const mpz_class& n = q.get_num();
+        const mpz_class& m = q.get_den();
         mpz_class rn = sqrt(n), rm = sqrt(m);
         assert(rn * rn == n && rm * rm == m);
         return R(rn, rm);

@@ -244,7 +244,11 @@ TEST(JsonlId, EchoedAsWritten) {
         {R"("")", R"("")"},
     };
     for (const Case& k : cases) {
-        const ParsedLine p = parse_line(R"({"id": )" + k.id_json + ", " + kBox + ", " + kCyl + "}", 1);
+        std::string line = R"({"id": )";
+        line += k.id_json;
+        line += ", " + kBox;
+        line += ", " + kCyl + "}";
+        const ParsedLine p = parse_line(line, 1);
         ASSERT_TRUE(p.query) << p.error;
         EXPECT_EQ(p.id, k.echoed) << k.id_json;
     }
@@ -279,7 +283,9 @@ TEST(JsonlAnswer, AnswersWithTheChosenAlgorithm) {
     for (const char* alg : {"inequalities", "oracle"})
         for (const char* ari : {"float", "double"}) {
             const RunOptions opt = make_run_options(alg, ari);
-            EXPECT_EQ(answer_line(R"({"id": 1, )" + kBox + ", " + kCyl + "}", 1, opt).text,
+            std::string line = R"({"id": 1, )" + kBox;
+            line += ", " + kCyl + "}";
+            EXPECT_EQ(answer_line(line, 1, opt).text,
                       R"({"id": 1, "intersect": true})")
                 << alg << " " << ari;
             EXPECT_EQ(answer_line(R"({"id": 2, "box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [3, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}})",
