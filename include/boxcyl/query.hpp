@@ -10,7 +10,8 @@
 //   Arithmetic::float32 / float64: rounded; may misjudge inputs within a tiny gap of touching.
 //   Arithmetic::exact: rationals and a + b·√d, exact for the inputs as given (exact_paths.hpp).
 // §2 in float/double can fail (Lemke's method is not robust in floating point, as §2 warns); the query
-// then answers with §2 in exact arithmetic instead of guessing. The oracle and Arithmetic::exact need
+// then answers exactly instead of guessing (exact §2, or exact §3 for an oriented box whose axes are
+// not exactly orthonormal). The oracle and Arithmetic::exact need
 // the exact backend (link boxcyl::exact, which defines BOXCYL_HAS_EXACT); without it, choosing them
 // throws std::invalid_argument. Exact §2/§4 on an oriented box whose axes are not exactly
 // orthonormal throw std::domain_error (see exact_paths.hpp); §3 and the oracle handle any box.
@@ -19,6 +20,7 @@
 #include <cassert>    // debug-build precondition checks
 #include <optional>   // results of algorithms that may fail
 #include <stdexcept>  // std::invalid_argument for an unavailable option
+#include <type_traits>  // std::is_same_v
 
 #include "boxcyl/algo/convex_hull.hpp"
 #include "boxcyl/algo/linear_inequalities.hpp"
@@ -110,6 +112,12 @@ bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
     const auto ebox = to_exact(cast<double>(box));
     const auto ecyl = to_exact(cast<double>(cyl));
     if (opt.algorithm == Algorithm::oracle) return oracle::intersects(ebox, ecyl);
+    if (opt.arithmetic != Arithmetic::exact) {
+        // A rounded §2 failed. Answer with exact §2 where its canonical frame is exact, else with
+        // exact §3 (any parallelepiped): the user asked for a rounded answer, never for a refusal.
+        if constexpr (std::is_same_v<Box, OrientedBox<T>>)
+            if (!exact::detail::exactly_orthonormal(ebox)) return exact::intersects(exact::Method::hull, ebox, ecyl);
+    }
     return exact::intersects(exact_method(opt.algorithm), ebox, ecyl);
 #else
     throw std::invalid_argument("boxcyl: exact arithmetic and the oracle need the exact backend (boxcyl::exact)");
