@@ -618,5 +618,52 @@ TEST(LinearInequalitiesRandom, ExactDifferentialAgainstOracle) {
     EXPECT_GE(t.cases, 3000);
 }
 
+// Disks (h = 0): no_zero_components checks only the six face cuts then (the six clipped box edges are
+// points of them). Exact §4 against the oracle over every direction class, canonical boxes with and
+// without flat sides, and radii one ulp either side of touching.
+TEST(LinearInequalitiesRandom, DisksAgainstOracle) {
+    const std::uint64_t seed = 0xd15c5u;
+    RationalishGenerator gen(seed);
+    DiffTally t;
+    long by_zeros[3] = {0, 0, 0};  // cases by the number of zero axis components
+    long flat = 0, index = 0;
+    for (int n = 0; n < 2000; ++n, ++index) {
+        Case c = gen.next();
+        if (c.kind == BoxKind::aligned) {  // the same box as a canonical one (centre moved to the origin)
+            for (int i = 0; i < 3; ++i) {
+                const double k = 0.5 * (c.aligned.min[i] + c.aligned.max[i]);
+                c.canonical.extents[i] = 0.5 * (c.aligned.max[i] - c.aligned.min[i]);
+                c.cylinder.center[i] -= k;
+            }
+            c.kind = BoxKind::canonical;
+        }
+        if (gen.uniform_int(0, 3) == 0) c.canonical.extents[gen.uniform_int(0, 2)] = 0.0;  // a flat box
+        c.cylinder.height = 0.0;
+        int zeros = 0;
+        for (int i = 0; i < 3; ++i) zeros += c.cylinder.axis[i] == 0.0;
+        ++by_zeros[zeros];
+        flat += c.canonical.extents[0] == 0.0 || c.canonical.extents[1] == 0.0 || c.canonical.extents[2] == 0.0;
+        check_random_case(t, c, seed, index, "disk");
+        if (gen.uniform_int(0, 9) < 3) {
+            Case miss, hit;
+            if (touching_pair(c, Knob::radius, miss, hit)) {
+                ++t.touching_pairs;
+                check_random_case(t, miss, seed, index, "disk, touching radius - 1 ulp");
+                check_random_case(t, hit, seed, index, "disk, touching radius");
+            }
+        }
+    }
+    std::printf("disks: %ld cases (%.1f%% hits; axis with 0/1/2 zero components: %ld/%ld/%ld; %ld flat boxes), "
+                "%ld touching radius pairs; §4 in double disagrees on %ld (%ld NOT near touching)\n",
+                t.cases, 100.0 * static_cast<double>(t.hits) / static_cast<double>(t.cases), by_zeros[0], by_zeros[1],
+                by_zeros[2], flat, t.touching_pairs, t.double_disagree, t.double_far);
+    EXPECT_GE(t.cases, 2000);
+    EXPECT_GE(by_zeros[0], 500);
+    EXPECT_GE(by_zeros[1], 200);
+    EXPECT_GE(by_zeros[2], 100);
+    EXPECT_GE(flat, 300);
+    EXPECT_GE(t.touching_pairs, 100);
+}
+
 }  // namespace
 }  // namespace boxcyl

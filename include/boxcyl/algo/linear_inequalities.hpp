@@ -282,11 +282,25 @@ bool axis_meets_box_no_zero(const Vec3<T>& C, const Vec3<T>& D, const T& H, cons
 // with D·N < 0 (§4.3.2): the 6 box edges (U_i, −U_j) clipped to the slab and the 6 cuts (U_i, −D),
 // (D, −U_i) of a face by a slab plane. Every candidate lies in the polyhedron, so the polygon is within
 // r of the axis iff one of them is (§4.3.3). The order is the spec's.
+//
+// A disk (H == 0) needs only the six face cuts. The slab is then the plane t = 0 and, as every
+// d_k > 0, it meets each box edge (U_i, −U_j) — parallel to U_k — in at most one point: box_edge()
+// returns that point as a segment of length zero (both ends equal, or vertex a when t_a = 0, or
+// a = b for a flat box). The point lies on the face x_i = +e_i and in the plane t = −H = 0, so it is a
+// point of face_cut(i, true), which is the whole face ∩ plane. The distance to a segment is at most
+// the distance to any of its points, so box_edge(i, j, k) ⇒ face_cut(i, true) in exact arithmetic and
+// the answer is unchanged. For interval T this matters: on the zero-length clipped edge
+// w = D × (P1 − P0) is exactly 0 but its enclosure straddles 0, so segment_within cannot decide its
+// branch and the certified filter (filtered.hpp) would fall back to exact arithmetic.
 template <class T>
 bool no_zero_components(const Vec3<T>& C, const Vec3<T>& D, const T& r, const T& H, const Vec3<T>& E) {
     if (axis_meets_box_no_zero(C, D, H, E)) return true;  // §4.3.1
 
     const ExtremeEdges<T> x(C, D, r, H, E);
+    if (H == T(0)) {  // a disk: the face cuts contain every clipped box edge (see above)
+        return x.face_cut(0, true) || x.face_cut(0, false) || x.face_cut(1, true) || x.face_cut(1, false) ||
+               x.face_cut(2, true) || x.face_cut(2, false);
+    }
     return x.box_edge(0, 1, 2)       // (U0, −U1): V1–V5
            || x.box_edge(1, 0, 2)    // (U1, −U0): V2–V6
            || x.box_edge(0, 2, 1)    // (U0, −U2): V1–V3
