@@ -2,6 +2,12 @@
 // boxes. Closed solids: touching counts as intersecting. Inputs must satisfy validate() (finite, non-zero
 // axis, non-negative sizes, min ≤ max, orthonormal oriented-box axes); that is asserted in debug builds.
 //
+// boxcyl::intersects(box, cylinder) — no options — is EXACT for the inputs as given: a certified
+// interval filter over §4 decides most queries, an exact fallback the rest (filtered.hpp,
+// docs/robustness.md; its cost relative to plain double is measured in docs/performance.md). It needs the exact backend (link boxcyl::exact); without it, that call fails
+// to compile, and the plain double path stays available by explicit choice:
+// intersects(box, cyl, {Algorithm::inequalities, Arithmetic::float64}).
+//
 // Options choose the algorithm (the specification's three, or the oracle) and the arithmetic:
 //   Algorithm::inequalities  §4 linear inequalities (default)      algo/linear_inequalities.hpp
 //   Algorithm::hull          §3 clip, project, convex hull          algo/convex_hull.hpp
@@ -9,6 +15,8 @@
 //   Algorithm::oracle        the exact reference, any arithmetic    oracle/oracle.hpp
 //   Arithmetic::float32 / float64: rounded; may misjudge inputs within a tiny gap of touching.
 //   Arithmetic::exact: rationals and a + b·√d, exact for the inputs as given (exact_paths.hpp).
+//   Arithmetic::filtered (default): the exact answer; with §4 through the filter above, with §3/§2
+//                        (which have no filter) through Arithmetic::exact.
 // §2 in float/double can fail (Lemke's method is not robust in floating point, as §2 warns); the query
 // then answers exactly instead of guessing (exact §2, or exact §3 for an oriented box whose axes are
 // not exactly orthonormal). The oracle and Arithmetic::exact need
@@ -31,17 +39,18 @@
 #include "boxcyl/geometry/validate.hpp"
 #if defined(BOXCYL_HAS_EXACT)
 #include "boxcyl/exact_paths.hpp"
+#include "boxcyl/filtered.hpp"
 #include "boxcyl/oracle/oracle.hpp"
 #endif
 
 namespace boxcyl {
 
 enum class Algorithm { inequalities, hull, lcp, oracle };
-enum class Arithmetic { float32, float64, exact };
+enum class Arithmetic { float32, float64, exact, filtered };
 
 struct QueryOptions {
     Algorithm algorithm = Algorithm::inequalities;
-    Arithmetic arithmetic = Arithmetic::float64;
+    Arithmetic arithmetic = Arithmetic::filtered;
 };
 
 namespace detail {
@@ -102,7 +111,8 @@ template <class Box, class T>
 bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
     assert(validate(box).ok() && "boxcyl::intersects: invalid box (see boxcyl::validate)");
     assert(validate(cyl).ok() && "boxcyl::intersects: invalid cylinder (see boxcyl::validate)");
-    if (opt.algorithm != Algorithm::oracle && opt.arithmetic != Arithmetic::exact) {
+    const bool rounded_arithmetic = opt.arithmetic == Arithmetic::float32 || opt.arithmetic == Arithmetic::float64;
+    if (opt.algorithm != Algorithm::oracle && rounded_arithmetic) {
         const std::optional<bool> r = opt.arithmetic == Arithmetic::float32 ? rounded<float>(opt.algorithm, box, cyl)
                                                                           : rounded<double>(opt.algorithm, box, cyl);
         if (r) return *r;
@@ -112,9 +122,12 @@ bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
     const auto ebox = to_exact(cast<double>(box));
     const auto ecyl = to_exact(cast<double>(cyl));
     if (opt.algorithm == Algorithm::oracle) return oracle::intersects(ebox, ecyl);
+    if (opt.arithmetic == Arithmetic::filtered && opt.algorithm == Algorithm::inequalities)
+        return filtered::query(cast<double>(box), cast<double>(cyl)).intersect;
     if (opt.arithmetic != Arithmetic::exact) {
-        // A rounded §2 failed. Answer with exact §2 where its canonical frame is exact, else with
-        // exact §3 (any parallelepiped): the user asked for a rounded answer, never for a refusal.
+        // A rounded §2 failed, or §2/§3 were asked for an exact answer (filtered). Answer with the exact
+        // algorithm where its canonical frame is exact, else with exact §3 (any parallelepiped): only an
+        // explicit Arithmetic::exact request for §2/§4 refuses a frame it cannot treat exactly.
         if constexpr (std::is_same_v<Box, OrientedBox<T>>)
             if (!exact::detail::exactly_orthonormal(ebox)) return exact::intersects(exact::Method::hull, ebox, ecyl);
     }
@@ -124,19 +137,49 @@ bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
 #endif
 }
 
+template <class T>
+inline constexpr bool dependent_false = false;
+
 }  // namespace detail
 
+#if defined(BOXCYL_HAS_EXACT)
+#define BOXCYL_DEFAULT_QUERY(box, cyl) return detail::dispatch(box, cyl, QueryOptions{})
+#else
+#define BOXCYL_DEFAULT_QUERY(box, cyl)                                                                   \
+    static_assert(detail::dependent_false<T>,                                                            \
+                  "boxcyl: the default query is exact and needs the exact backend: link boxcyl::exact "  \
+                  "(GMP), or choose the plain double path explicitly: "                                   \
+                  "intersects(box, cyl, {Algorithm::inequalities, Arithmetic::float64})");               \
+    return false
+#endif
+
+// The exact answer for the inputs as given (closed solids: touching intersects).
 template <class T>
-bool intersects(const AlignedBox<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt = {}) {
-    return detail::dispatch(box, cyl, opt);
+bool intersects(const AlignedBox<T>& box, const Cylinder<T>& cyl) {
+    BOXCYL_DEFAULT_QUERY(box, cyl);
 }
 template <class T>
-bool intersects(const OrientedBox<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt = {}) {
-    return detail::dispatch(box, cyl, opt);
+bool intersects(const OrientedBox<T>& box, const Cylinder<T>& cyl) {
+    BOXCYL_DEFAULT_QUERY(box, cyl);
 }
 // The cylinder is given in the canonical box's frame (box centred at the origin, axis-aligned).
 template <class T>
-bool intersects(const CanonicalBox<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt = {}) {
+bool intersects(const CanonicalBox<T>& box, const Cylinder<T>& cyl) {
+    BOXCYL_DEFAULT_QUERY(box, cyl);
+}
+#undef BOXCYL_DEFAULT_QUERY
+
+// With an explicit choice of algorithm and arithmetic.
+template <class T>
+bool intersects(const AlignedBox<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
+    return detail::dispatch(box, cyl, opt);
+}
+template <class T>
+bool intersects(const OrientedBox<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
+    return detail::dispatch(box, cyl, opt);
+}
+template <class T>
+bool intersects(const CanonicalBox<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
     return detail::dispatch(box, cyl, opt);
 }
 

@@ -26,7 +26,7 @@ struct ArithmeticChoice {
 
 inline constexpr std::array<AlgorithmChoice, 4> algorithm_choices{{
     {"inequalities", Algorithm::inequalities, true,
-     "section 4 linear inequalities (default); fast; exact with --arithmetic exact"},
+     "section 4 linear inequalities (default)"},
     {"hull", Algorithm::hull, true,
      "section 3 clip, project, convex hull; exact with --arithmetic exact (any box)"},
     {"lcp", Algorithm::lcp, true,
@@ -35,16 +35,19 @@ inline constexpr std::array<AlgorithmChoice, 4> algorithm_choices{{
      "the exact reference; slow; exact for the inputs as given; ignores --arithmetic"},
 }};
 
-inline constexpr std::array<ArithmeticChoice, 3> arithmetic_choices{{
+inline constexpr std::array<ArithmeticChoice, 4> arithmetic_choices{{
+    {"filtered", Arithmetic::filtered,
+     "the exact answer (default): a certified double-interval filter decides most queries, exact "
+     "arithmetic the rest; with hull and lcp it means exact"},
     {"float", Arithmetic::float32, "32-bit floats: inputs are rounded to float first"},
-    {"double", Arithmetic::float64, "64-bit doubles (rounded: may misjudge inputs within a tiny gap of touching)"},
+    {"double", Arithmetic::float64, "plain 64-bit doubles, unfiltered (may misjudge inputs within a tiny gap of touching)"},
     {"exact", Arithmetic::exact,
      "rationals and a + b*sqrt(d): exact for the inputs as given; sections 2 and 4 refuse oriented "
      "boxes whose axes are not exactly orthonormal (use hull or oracle)"},
 }};
 
 inline constexpr std::string_view default_algorithm = "inequalities";
-inline constexpr std::string_view default_arithmetic = "double";
+inline constexpr std::string_view default_arithmetic = "filtered";
 
 inline const AlgorithmChoice* find_algorithm(std::string_view name) {
     for (const auto& c : algorithm_choices)

@@ -299,7 +299,7 @@ TEST(JsonlAnswer, AnswersWithTheChosenAlgorithm) {
 TEST(JsonlOptions, TableMapping) {
     const RunOptions d = make_run_options(default_algorithm, default_arithmetic);
     EXPECT_EQ(d.query.algorithm, Algorithm::inequalities);
-    EXPECT_EQ(d.query.arithmetic, Arithmetic::float64);
+    EXPECT_EQ(d.query.arithmetic, Arithmetic::filtered);  // exact by default
     EXPECT_FALSE(d.rounds_to_float);
     const RunOptions f = make_run_options("inequalities", "float");
     EXPECT_EQ(f.query.arithmetic, Arithmetic::float32);
