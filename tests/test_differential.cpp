@@ -85,19 +85,11 @@ TEST(Differential, BoundaryPairsLinearInequalitiesDouble) {
     const std::uint64_t seed = 3003;
     CaseGenerator gen(seed);
     Tally t;
-    const long pairs = scaled(400);
-    long made = 0;
-    while (made < pairs) {
-        Case a, b;
-        Parameter which;
-        if (!boundary_pair(gen, a, b, which)) continue;
-        ++made;
-        const bool wa = oracle_answer(a), wb = oracle_answer(b);
-        ASSERT_NE(wa, wb) << "boundary generator produced a non-boundary pair\n  " << describe(a) << "\n  " << describe(b);
-        const std::string where = "seed " + std::to_string(seed) + " pair " + std::to_string(made) + " (" + name(which) + ")";
-        check_case(t, a, wa, [](const Case& k) { return run(k, linear_double); }, double_tolerance, where);
-        check_case(t, b, wb, [](const Case& k) { return run(k, linear_double); }, double_tolerance, where);
-    }
+    auto answer = [](const Case& k) { return run(k, linear_double); };
+    for_each_boundary_pair(gen, seed, scaled(400), [&](const Case& a, bool wa, const Case& b, bool wb, const std::string& where) {
+        check_case(t, a, wa, answer, double_tolerance, where);
+        check_case(t, b, wb, answer, double_tolerance, where);
+    });
     print_tally("boundary pairs, §4 double", t);
 }
 

@@ -108,21 +108,12 @@ TEST(ExactBoundary, EveryAlgorithmAgreesWithOracleOnUlpPairs) {
     Tally t[3];
     long refused = 0;
     const Algorithm algs[3] = {Algorithm::inequalities, Algorithm::hull, Algorithm::lcp};
-    const long pairs = scaled(150);
-    long made = 0;
-    while (made < pairs) {
-        Case a, b;
-        Parameter which;
-        if (!boundary_pair(gen, a, b, which)) continue;
-        ++made;
-        const bool wa = oracle_answer(a), wb = oracle_answer(b);
-        ASSERT_NE(wa, wb);
-        const std::string where = "boundary seed 7007 pair " + std::to_string(made) + " (" + name(which) + ")";
+    for_each_boundary_pair(gen, seed, scaled(150), [&](const Case& a, bool wa, const Case& b, bool wb, const std::string& where) {
         for (int k = 0; k < 3; ++k) {
             check_exact(t[k], refused, algs[k], a, [&] { return wa; }, where);
             check_exact(t[k], refused, algs[k], b, [&] { return wb; }, where);
         }
-    }
+    });
     for (int k = 0; k < 3; ++k) {
         print_tally((std::string("exact boundary pairs, ") + name(algs[k])).c_str(), t[k]);
         EXPECT_EQ(t[k].disagreements, 0);

@@ -471,19 +471,10 @@ TEST(Filtered, BoundaryPairsAgreeWithOracle) {
     const std::uint64_t seed = 4501;
     CaseGenerator gen(seed);
     FilterTally f;
-    const long pairs = case_count(300);
-    long made = 0;
-    while (made < pairs) {
-        Case a, b;
-        Parameter which;
-        if (!boundary_pair(gen, a, b, which)) continue;
-        ++made;
-        const bool wa = oracle_answer(a), wb = oracle_answer(b);
-        ASSERT_NE(wa, wb);
-        const std::string where = "boundary seed 4501 pair " + std::to_string(made) + " (" + name(which) + ")";
+    for_each_boundary_pair(gen, seed, case_count(300), [&](const Case& a, bool wa, const Case& b, bool wb, const std::string& where) {
         f.check(a, wa, where);
         f.check(b, wb, where);
-    }
+    });
     f.print("filtered boundary pairs");
     EXPECT_EQ(f.t.disagreements, 0);
 }

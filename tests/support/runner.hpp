@@ -44,6 +44,23 @@ void check_case(Tally& t, const Case& c, bool want, Answer&& answer, double tau,
     ADD_FAILURE() << where << ": algorithm says " << got << ", exact answer " << want << tol << "\n  " << describe(c);
 }
 
+// Calls fn(a, want_a, b, want_b, where) for `pairs` boundary pairs (two inputs one ulp apart with
+// opposite exact answers) drawn from gen; `seed` only labels the messages. Checks that each pair
+// really is one.
+template <class Fn>
+void for_each_boundary_pair(CaseGenerator& gen, std::uint64_t seed, long pairs, Fn&& fn) {
+    for (long made = 0; made < pairs;) {
+        Case a, b;
+        Parameter which;
+        if (!boundary_pair(gen, a, b, which)) continue;
+        ++made;
+        const bool wa = oracle_answer(a), wb = oracle_answer(b);
+        EXPECT_NE(wa, wb) << "boundary generator produced a non-boundary pair\n  " << describe(a) << "\n  " << describe(b);
+        fn(a, wa, b, wb,
+           "boundary seed " + std::to_string(seed) + " pair " + std::to_string(made) + " (" + name(which) + ")");
+    }
+}
+
 inline void print_tally(const char* label, const Tally& t) {
     std::printf("%-44s cases %8ld  hits %5.1f%%  disagreements %6ld (%.2e)  within tolerance %6ld\n", label,
                 t.cases, t.cases ? 100.0 * double(t.hits) / double(t.cases) : 0.0, t.disagreements,
