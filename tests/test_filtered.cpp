@@ -27,6 +27,7 @@
 #include "boxcyl/number/qfield.hpp"
 #include "boxcyl/number/rational.hpp"
 #include "support/cases.hpp"
+#include "support/fp.hpp"
 #include "support/numeric.hpp"
 #include "support/runner.hpp"
 
@@ -53,57 +54,6 @@ constexpr const char* variant = "plain";
 long case_count(long n) {
     const long v = scaled(n);
     return std::string(variant) == "plain" ? v : (v + 3) / 4;
-}
-
-constexpr double inf = std::numeric_limits<double>::infinity();
-constexpr double dmax = std::numeric_limits<double>::max();
-constexpr double dmin = std::numeric_limits<double>::min();
-constexpr double denorm = std::numeric_limits<double>::denorm_min();
-
-// ======================================================================================
-// Interval arithmetic
-// ======================================================================================
-
-// Restores the rounding mode on scope exit.
-class RoundingMode {
-public:
-    explicit RoundingMode(int mode) : saved_(std::fegetround()) { std::fesetround(mode); }
-    ~RoundingMode() { std::fesetround(saved_); }
-    RoundingMode(const RoundingMode&) = delete;
-    RoundingMode& operator=(const RoundingMode&) = delete;
-
-private:
-    int saved_;
-};
-
-const char* mode_name(int mode) {
-    switch (mode) {
-        case FE_TONEAREST: return "to_nearest";
-        case FE_UPWARD: return "upward";
-        case FE_DOWNWARD: return "downward";
-        case FE_TOWARDZERO: return "toward_zero";
-    }
-    return "?";
-}
-
-// Operands across the whole double range: zeros, subnormals, tiny and huge normals, ordinary values,
-// powers of two and the extremes, both signs.
-double random_operand(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    const double s = (rng() & 1) ? -1.0 : 1.0;
-    switch (rng() % 10) {
-        case 0: return (rng() & 3) == 0 ? s * 0.0 : 0.0;
-        case 1: return s * denorm * double(1 + rng() % (1ull << (rng() % 52)));             // subnormal
-        case 2: return s * std::ldexp(0.5 + unit(rng), -1022 - int(rng() % 30) + 30);   // near min normal
-        case 3: return s * std::ldexp(0.5 + unit(rng), 900 + int(rng() % 124));         // huge
-        case 4: return s * std::ldexp(0.5 + unit(rng), -1000 + int(rng() % 100));       // tiny
-        case 5: return s * std::ldexp(1.0, int(rng() % 200) - 100);                     // power of two
-        case 6: {
-            const double special[] = {dmax, dmin, denorm, 1.0, 2.0, 0.5, 3.0};
-            return s * special[rng() % 7];
-        }
-        default: return s * std::ldexp(0.5 + unit(rng), int(rng() % 80) - 40);  // ordinary
-    }
 }
 
 Rational q(double x) { return to_rational(x); }
@@ -580,8 +530,10 @@ Case perturbed_frame(CaseGenerator& gen) {
     }
 }
 
+// Stage 1 as the query runs it (Bounded, then Interval), optionally without the η widening.
 std::optional<bool> stage1(const Case& c, bool apply_eta) {
-    return filtered::detail::filter(c.oriented, c.cylinder, apply_eta);
+    if (auto fast = filtered::detail::filter<Bounded>(c.oriented, c.cylinder, apply_eta)) return fast;
+    return filtered::detail::filter<Interval>(c.oriented, c.cylinder, apply_eta);
 }
 
 TEST(FilteredNonOrthonormal, RandomCasesAgreeWithOracle) {

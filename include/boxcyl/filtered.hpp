@@ -49,6 +49,7 @@
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/reduce.hpp"
 #include "boxcyl/geometry/validate.hpp"
+#include "boxcyl/number/bounded.hpp"
 #include "boxcyl/number/interval.hpp"
 #include "boxcyl/oracle/oracle.hpp"  // to_exact: the rationals the doubles denote
 
@@ -62,33 +63,44 @@ struct Result {
 
 namespace detail {
 
-using I = Interval;
+// Stage 1 is written once over the enclosure type N: Bounded (a value with a running error bound:
+// cheap) first, Interval (outward-rounded: tighter, exact sums stay points) when Bounded cannot decide.
+// N provides exact embedding N(x), N::range(lo, hi) (an enclosure of [lo, hi]), lo()/hi() (certain
+// bounds), the arithmetic, sqrt, and comparisons that record undecided outcomes in an UncertaintyScope.
 
 inline double next_down(double x) { return boxcyl::detail::next_down(x); }
 inline double next_up(double x) { return boxcyl::detail::next_up(x); }
 
-// An upper bound of |x| for every x in the interval (NaN stays NaN and is caught by the callers).
-inline double magnitude(const I& x) { return std::max(-x.lo(), x.hi()); }
+// An upper bound of |x| for every x in the enclosure (NaN stays NaN and is caught by the callers).
+template <class N>
+double magnitude(const N& x) {
+    return std::max(-x.lo(), x.hi());
+}
 
-// The exact value x·2^k as an interval: a point when ldexp is exact (it rounds only into the subnormal
-// range, or overflows), otherwise the result widened by one double each way, which encloses it in
-// every rounding mode. The check is exact: scaling back up by 2^-k cannot round.
-inline I scaled(double x, int k) {
-    if (k == 0) return I(x);
-    const double y = std::ldexp(x, k);
-    if (std::ldexp(y, -k) == x) return I(y);
-    return I(next_down(y), next_up(y));
+// The exact value x·2^k: a point when ldexp is exact (it rounds only into the subnormal range, or
+// overflows), otherwise the result widened by one double each way, which encloses it in every
+// rounding mode. The check is exact: scaling back up by 2^-k cannot round.
+template <class N>
+N scaled(double x, int k) {
+    if (k == 0) return N(x);
+    const double y = k == -1 ? x * 0.5 : std::ldexp(x, k);  // the common h/2 and (min + max)/2: no call
+    if (std::ldexp(y, -k) == x) return N(y);
+    return N::range(next_down(y), next_up(y));
 }
 // The same for a quantity known to be ≥ 0 (sizes): the lower bound is clamped at 0 (still ≤ x·2^k).
-inline I scaled_nonneg(double x, int k) {
-    const I s = scaled(x, k);
-    return I(std::max(0.0, s.lo()), s.hi());
+template <class N>
+N nonneg(const N& x) {
+    if (x.lo() >= 0) return x;
+    return N::range(0.0, x.hi());
 }
-inline I nonneg(const I& x) { return I(std::max(0.0, x.lo()), x.hi()); }
+template <class N>
+N scaled_nonneg(double x, int k) {
+    return nonneg(scaled<N>(x, k));
+}
 
 // Problem scaling: the question is invariant under scaling every length by 2^k (the axis direction
-// is unchanged). When the largest length M is far from 1 the interval computation would over- or
-// underflow (§4 forms products of up to four lengths), so the lengths are scaled to M ∈ [1, 2).
+// is unchanged). When the largest length M is far from 1 the computation would over- or underflow
+// (§4 forms products of up to four lengths), so the lengths are scaled to M ∈ [1, 2).
 inline int scale_exponent(double m) {
     if (!(m > 0) || !(m < std::numeric_limits<double>::infinity())) return 0;
     const int e = std::ilogb(m);
@@ -99,37 +111,43 @@ inline void update_max(double& m, const Vec3<double>& v) {
     for (int i = 0; i < 3; ++i) update_max(m, v[i]);
 }
 
-// The cylinder axis, scaled by a power of two so that its largest component is in [1, 2): then
-// a·a ∈ [1, 12) can neither overflow nor underflow (reduce.hpp's to_unit does the same in double).
-inline Vec3<I> prescaled_axis(const Vec3<double>& axis) {
+// The cylinder axis, scaled by a power of two when its largest component is beyond 2^±500, so that
+// a·a can neither overflow nor lose the whole axis to underflow (the scaling usually costs a libm
+// call and is not needed in between; reduce.hpp's to_unit always scales, in plain double).
+template <class N>
+Vec3<N> prescaled_axis(const Vec3<double>& axis) {
     double m = 0;
     update_max(m, axis);
-    const int e = std::ilogb(m);
-    return {scaled(axis[0], -e), scaled(axis[1], -e), scaled(axis[2], -e)};
+    int e = m > 0 ? std::ilogb(m) : 0;  // m = 0 only for a zero axis (invalid): no INT_MIN to negate
+    if (e >= -500 && e <= 500) e = 0;  // a·a cannot overflow; underflow of tiny terms is accounted for
+    return {scaled<N>(axis[0], -e), scaled<N>(axis[1], -e), scaled<N>(axis[2], -e)};
 }
 
 // An enclosure of v/|v| (|v| bounded away from 0 by the caller).
-inline Vec3<I> normalised(const Vec3<I>& v) {
-    const I len = sqrt(dot(v, v));
+template <class N>
+Vec3<N> normalised(const Vec3<N>& v) {
+    const N len = sqrt(dot(v, v));
     return {v[0] / len, v[1] / len, v[2] / len};
 }
 
 // An enclosure of the exact unit axis u = axis/|axis|. An axis with one non-zero component gives the
 // exact ±1 (the common axis-aligned cylinder keeps exact values; nothing rounds).
-inline Vec3<I> unit_direction(const Vec3<double>& axis) {
+template <class N>
+Vec3<N> unit_direction(const Vec3<double>& axis) {
     int nonzero = 0, which = 0;
     for (int i = 0; i < 3; ++i)
         if (axis[i] != 0) ++nonzero, which = i;
     if (nonzero == 1) {
-        Vec3<I> d{I(0), I(0), I(0)};
-        d[which] = I(axis[which] > 0 ? 1.0 : -1.0);
+        Vec3<N> d{N(0), N(0), N(0)};
+        d[which] = N(axis[which] > 0 ? 1.0 : -1.0);
         return d;
     }
-    return normalised(prescaled_axis(axis));
+    return normalised(prescaled_axis<N>(axis));
 }
 
-// Runs §4 on the interval problem: the answer if every comparison was decided, else nullopt.
-inline std::optional<bool> run_li(const CanonicalQuery<I>& q) {
+// Runs §4 on the enclosed problem: the answer if every comparison was decided, else nullopt.
+template <class N>
+std::optional<bool> run_li(const CanonicalQuery<N>& q) {
     UncertaintyScope scope;
     const bool answer = algo::linear_inequalities(q.box, q.cylinder);
     if (!scope.certain()) return std::nullopt;
@@ -138,10 +156,32 @@ inline std::optional<bool> run_li(const CanonicalQuery<I>& q) {
 
 // A size (extent, radius, half-height) that may be below δ replaced by max(size, δ): an enclosure of
 // a problem that contains the exact one.
-inline bool thicken(I& size, double delta) {
+template <class N>
+bool thicken(N& size, double delta) {
     if (size.lo() >= delta) return false;
-    size = I(std::max(size.lo(), delta), std::max(size.hi(), delta));
+    size = N::range(std::max(size.lo(), delta), std::max(size.hi(), delta));
     return true;
+}
+
+// A cheap certificate of a miss ahead of §4 (not in the specification): the separating axes U_i of the
+// box. The cylinder's extent along U_i is w_i = H|d_i| + r·√(d_j² + d_k²) (the axis segment plus the
+// widest chord of a cross-section, √(1 − d_i²) written without cancellation), so the solids are apart
+// if |c_i| − e_i − H|d_i| > r·√(d_j² + d_k²), i.e. if that left side s is > 0 and s² > r²(d_j² + d_k²).
+// Only a certain "apart" counts; an undecided comparison just leaves the question to §4.
+template <class N>
+bool apart_along_box_axes(const CanonicalQuery<N>& q) {
+    UncertaintyScope scope;
+    const Vec3<N>& c = q.cylinder.center;
+    const Vec3<N>& d = q.cylinder.direction;
+    const Vec3<N>& e = q.box.extents;
+    const N& H = q.cylinder.half_height;
+    const N r2 = q.cylinder.radius * q.cylinder.radius;
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        const N s = abs_value(c[i]) - e[i] - H * abs_value(d[i]);
+        if (N(0) < s && r2 * (d[j] * d[j] + d[k] * d[k]) < s * s) return scope.certain();
+    }
+    return false;
 }
 
 // Stage 1 proper, on an enclosure `outer` of a problem that contains the exact one (a miss of outer
@@ -154,7 +194,9 @@ inline bool thicken(I& size, double delta) {
 // δ = 2^-30·scale to δ gives a problem that still contains the exact one and is not degenerate: if it
 // certainly misses, so does the exact problem (its "true" proves nothing). `scale` is the problem's
 // largest length (after scaling).
-inline std::optional<bool> decide(const CanonicalQuery<I>& outer, const CanonicalQuery<I>* inner, double scale) {
+template <class N>
+std::optional<bool> decide(const CanonicalQuery<N>& outer, const CanonicalQuery<N>* inner, double scale) {
+    if (apart_along_box_axes(outer)) return false;
     const std::optional<bool> o = run_li(outer);
     if (o && (!*o || inner == &outer)) return o;
     if (o) {  // outer meets: ask the inner problem
@@ -169,7 +211,7 @@ inline std::optional<bool> decide(const CanonicalQuery<I>& outer, const Canonica
     }
     const double delta = std::ldexp(scale, -30);
     if (!(delta > 0)) return std::nullopt;
-    CanonicalQuery<I> thick = outer;
+    CanonicalQuery<N> thick = outer;
     bool degenerate = thicken(thick.cylinder.radius, delta);
     degenerate |= thicken(thick.cylinder.half_height, delta);
     for (int i = 0; i < 3; ++i) degenerate |= thicken(thick.box.extents[i], delta);
@@ -178,32 +220,111 @@ inline std::optional<bool> decide(const CanonicalQuery<I>& outer, const Canonica
     if (t && !*t) return false;
     return std::nullopt;
 }
-inline std::optional<bool> decide(const CanonicalQuery<I>& q, double scale) { return decide(q, &q, scale); }
+template <class N>
+std::optional<bool> decide(const CanonicalQuery<N>& q, double scale) {
+    return decide(q, &q, scale);
+}
+
+// The problem q with every cylinder size grown by `on_cyl` and every box extent by `on_box` (outer:
+// it contains a solid pair that contains the exact one), and shrunk by the same (inner: contained in
+// it; exists only if no size goes below 0). The sizes become points (a size enclosure would let §4 see
+// e − e ≠ 0 and lose the sign of every degenerate difference): outer sizes are rounded up after
+// adding, inner ones down after subtracting.
+template <class N>
+struct Widened {
+    CanonicalQuery<N> outer, inner;
+    bool has_inner = true;
+};
+template <class N>
+Widened<N> widen(const CanonicalQuery<N>& q, double on_cyl, double on_box) {
+    Widened<N> w{q, q, true};
+    auto up = [](const N& x, double by) { return N(by == 0 ? x.hi() : (N(x.hi()) + N(by)).hi()); };
+    auto down = [&w](const N& x, double by) {
+        if (by == 0) return N(x.lo());
+        if (!(x.lo() >= by)) w.has_inner = false;
+        return N(std::max(0.0, (N(x.lo()) - N(by)).lo()));
+    };
+    w.outer.cylinder.radius = up(q.cylinder.radius, on_cyl);
+    w.outer.cylinder.half_height = up(q.cylinder.half_height, on_cyl);
+    w.inner.cylinder.radius = down(q.cylinder.radius, on_cyl);
+    w.inner.cylinder.half_height = down(q.cylinder.half_height, on_cyl);
+    for (int i = 0; i < 3; ++i) {
+        w.outer.box.extents[i] = up(q.box.extents[i], on_box);
+        w.inner.box.extents[i] = down(q.box.extents[i], on_box);
+    }
+    return w;
+}
+
+// Tiny axis components (docs/robustness.md §6). A non-zero component below 2^-30 of the largest makes
+// a unit-axis component near or below the rounding of the others (often subnormal): its sign is exact
+// in the input but lost in the enclosures, and every comparison that depends on it (the §4 class, the
+// reflection) is undecided. The axis a' with those (at most two) components set to 0 is within angle
+// θ = |u − u'| ≤ 2|a − a'|/|a| ≤ 2·2·2^-30 = 2^-28 of a, and a cylinder turned by θ about its centre
+// moves each point of the axis segment by at most θH and each point of a cross-section by at most θr:
+//   cyl(u; r, H) ⊆ cyl(u'; r + θH, H + θr) ⊆ cyl(u'; r + η, H + η),  η = θ(H + r),
+// and by the same argument with u and u' swapped, cyl(u'; r − η, H − η) ⊆ cyl(u; r, H). So §4 on the
+// axis a' with the cylinder widened by η certifies misses, and narrowed by η certifies hits, exactly
+// as for the nearly orthonormal frames. The widened problems have exact zero components (the cheap
+// §4 classes) and only cases within η ≈ 2^-28·(H + r) of touching remain undecided: those run §4 on
+// the axis as given next.
+inline bool tiny_components_zeroed(const Vec3<double>& a, Vec3<double>& zeroed) {
+    double m = 0;
+    update_max(m, a);
+    const double limit = std::ldexp(m, -30);
+    bool any = false;
+    zeroed = a;
+    for (int i = 0; i < 3; ++i)
+        if (a[i] != 0 && std::fabs(a[i]) <= limit) zeroed[i] = 0, any = true;
+    return any;
+}
+// §4 for the cylinder axis a (the other sizes of q already set; `direction_of` turns a unit-axis
+// enclosure into the box frame's direction, e.g. a signed permutation).
+template <class N, class Frame>
+std::optional<bool> decide_axis(CanonicalQuery<N> q, const Vec3<double>& a, Frame&& direction_of, double scale) {
+    Vec3<double> a0;
+    if (tiny_components_zeroed(a, a0)) {
+        CanonicalQuery<N> z = q;
+        z.cylinder.direction = direction_of(unit_direction<N>(a0));
+        const double reach = (N(q.cylinder.half_height.hi()) + N(q.cylinder.radius.hi())).hi();
+        const double eta = (N(0x1p-28) * N(reach)).hi();
+        if (eta < std::numeric_limits<double>::infinity()) {
+            const Widened<N> w = widen(z, eta, 0.0);
+            if (const std::optional<bool> r = decide(w.outer, w.has_inner ? &w.inner : nullptr, scale)) return r;
+        }
+    }
+    q.cylinder.direction = direction_of(unit_direction<N>(a));
+    return decide(q, scale);
+}
+template <class N>
+std::optional<bool> decide_axis(const CanonicalQuery<N>& q, const Vec3<double>& a, double scale) {
+    return decide_axis(q, a, [](const Vec3<N>& d) { return d; }, scale);
+}
 
 // ---- Stage 1 for each box kind: nullopt when undecided. ----
 
 // §1.2: the box is exact; only the unit axis and, for extreme magnitudes, the scaling round.
-inline std::optional<bool> filter(const CanonicalBox<double>& b, const Cylinder<double>& c) {
+template <class N>
+std::optional<bool> filter(const CanonicalBox<double>& b, const Cylinder<double>& c) {
     double m = 0;
     update_max(m, b.extents);
     update_max(m, c.center);
     update_max(m, c.radius);
     update_max(m, c.height);
     const int k = scale_exponent(m);
-    CanonicalQuery<I> q;
+    CanonicalQuery<N> q;
     for (int i = 0; i < 3; ++i) {
-        q.box.extents[i] = scaled_nonneg(b.extents[i], k);
-        q.cylinder.center[i] = scaled(c.center[i], k);
+        q.box.extents[i] = scaled_nonneg<N>(b.extents[i], k);
+        q.cylinder.center[i] = scaled<N>(c.center[i], k);
     }
-    q.cylinder.direction = unit_direction(c.axis);
-    q.cylinder.radius = scaled_nonneg(c.radius, k);
-    q.cylinder.half_height = scaled_nonneg(c.height, k - 1);  // h/2 exactly, unless subnormal
-    return decide(q, std::ldexp(m, k));
+    q.cylinder.radius = scaled_nonneg<N>(c.radius, k);
+    q.cylinder.half_height = scaled_nonneg<N>(c.height, k - 1);  // h/2 exactly, unless subnormal
+    return decide_axis(q, c.axis, std::ldexp(m, k));
 }
 
 // §1.3: K = (min + max)/2, E = (max − min)/2, C − K, all enclosed. Halving first (min/2 + max/2)
 // keeps finite inputs from overflowing; a flat side (min == max) keeps E = 0 and K = min exact.
-inline std::optional<bool> filter(const AlignedBox<double>& b, const Cylinder<double>& c) {
+template <class N>
+std::optional<bool> filter(const AlignedBox<double>& b, const Cylinder<double>& c) {
     double m = 0;
     update_max(m, b.min);
     update_max(m, b.max);
@@ -211,24 +332,23 @@ inline std::optional<bool> filter(const AlignedBox<double>& b, const Cylinder<do
     update_max(m, c.radius);
     update_max(m, c.height);
     const int k = scale_exponent(m);
-    CanonicalQuery<I> q;
+    CanonicalQuery<N> q;
     for (int i = 0; i < 3; ++i) {
-        I center, extent;
+        N center, extent;
         if (b.min[i] == b.max[i]) {
-            center = scaled(b.min[i], k);
-            extent = I(0);
+            center = scaled<N>(b.min[i], k);
+            extent = N(0);
         } else {
-            const I lo = scaled(b.min[i], k - 1), hi = scaled(b.max[i], k - 1);
+            const N lo = scaled<N>(b.min[i], k - 1), hi = scaled<N>(b.max[i], k - 1);
             center = lo + hi;
             extent = nonneg(hi - lo);
         }
         q.box.extents[i] = extent;
-        q.cylinder.center[i] = scaled(c.center[i], k) - center;
+        q.cylinder.center[i] = scaled<N>(c.center[i], k) - center;
     }
-    q.cylinder.direction = unit_direction(c.axis);
-    q.cylinder.radius = scaled_nonneg(c.radius, k);
-    q.cylinder.half_height = scaled_nonneg(c.height, k - 1);
-    return decide(q, std::ldexp(m, k));
+    q.cylinder.radius = scaled_nonneg<N>(c.radius, k);
+    q.cylinder.half_height = scaled_nonneg<N>(c.height, k - 1);
+    return decide_axis(q, c.axis, std::ldexp(m, k));
 }
 
 // A signed permutation frame (axes[i] = s_i·e_{p_i}), the only exactly orthonormal frames of doubles
@@ -260,7 +380,8 @@ inline bool signed_permutation(const std::array<Vec3<double>, 3>& axes, int perm
 // The inflated problem misses ⇒ the exact one misses; the deflated problem meets ⇒ the exact one
 // meets — the latter only if b ≤ min e too, else "true" stays undecided.
 // `apply_eta = false` drops the widening: unsound, for the tests that show η is needed.
-inline std::optional<bool> filter(const OrientedBox<double>& b, const Cylinder<double>& c, bool apply_eta = true) {
+template <class N>
+std::optional<bool> filter(const OrientedBox<double>& b, const Cylinder<double>& c, bool apply_eta = true) {
     double m = 0;
     update_max(m, b.center);
     update_max(m, b.extents);
@@ -268,47 +389,48 @@ inline std::optional<bool> filter(const OrientedBox<double>& b, const Cylinder<d
     update_max(m, c.radius);
     update_max(m, c.height);
     const int k = scale_exponent(m);
-    Vec3<I> delta, extents;
+    Vec3<N> delta, extents;
     for (int i = 0; i < 3; ++i) {
-        delta[i] = scaled(c.center[i], k) - scaled(b.center[i], k);
-        extents[i] = scaled_nonneg(b.extents[i], k);
+        delta[i] = scaled<N>(c.center[i], k) - scaled<N>(b.center[i], k);
+        extents[i] = scaled_nonneg<N>(b.extents[i], k);
     }
-    const I radius = scaled_nonneg(c.radius, k);
-    const I half_height = scaled_nonneg(c.height, k - 1);
+    const N radius = scaled_nonneg<N>(c.radius, k);
+    const N half_height = scaled_nonneg<N>(c.height, k - 1);
 
-    CanonicalQuery<I> q;
+    CanonicalQuery<N> q;
     int perm[3];
     double sign[3];
     if (signed_permutation(b.axes, perm, sign)) {
-        const Vec3<I> u = unit_direction(c.axis);
-        for (int i = 0; i < 3; ++i) {
-            q.cylinder.center[i] = sign[i] > 0 ? delta[perm[i]] : -delta[perm[i]];
-            q.cylinder.direction[i] = sign[i] > 0 ? u[perm[i]] : -u[perm[i]];
-        }
+        for (int i = 0; i < 3; ++i) q.cylinder.center[i] = sign[i] > 0 ? delta[perm[i]] : -delta[perm[i]];
         q.box.extents = extents;
         q.cylinder.radius = radius;
         q.cylinder.half_height = half_height;
-        return decide(q, std::ldexp(m, k));
+        auto permuted = [&](const Vec3<N>& u) {
+            Vec3<N> d;
+            for (int i = 0; i < 3; ++i) d[i] = sign[i] > 0 ? u[perm[i]] : -u[perm[i]];
+            return d;
+        };
+        return decide_axis(q, c.axis, permuted, std::ldexp(m, k));
     }
 
     // g: an upper bound of the spectral norm of G = AᵀA − I.
-    Vec3<I> axes[3];
-    for (int i = 0; i < 3; ++i) axes[i] = {I(b.axes[i][0]), I(b.axes[i][1]), I(b.axes[i][2])};
+    Vec3<N> axes[3];
+    for (int i = 0; i < 3; ++i) axes[i] = {N(b.axes[i][0]), N(b.axes[i][1]), N(b.axes[i][2])};
     double g = 0;
     for (int i = 0; i < 3; ++i) {
-        I row(0);
+        N row(0);
         for (int j = 0; j < 3; ++j) {
-            I gij = dot(axes[i], axes[j]);
-            if (i == j) gij -= I(1);
-            row += I(magnitude(gij));
+            N gij = dot(axes[i], axes[j]);
+            if (i == j) gij -= N(1);
+            row += N(magnitude(gij));
         }
         g = std::max(g, row.hi());
     }
     // validate() allows |G_ij| ≤ 1e-4, i.e. g ≤ 3e-4; the derivation needs g < 1.
     if (!(g <= 0x1p-10)) return std::nullopt;
 
-    const Vec3<I> a = prescaled_axis(c.axis);
-    Vec3<I> v;
+    const Vec3<N> a = prescaled_axis<N>(c.axis);
+    Vec3<N> v;
     for (int i = 0; i < 3; ++i) {
         q.cylinder.center[i] = dot(axes[i], delta);
         v[i] = dot(axes[i], a);
@@ -316,34 +438,26 @@ inline std::optional<bool> filter(const OrientedBox<double>& b, const Cylinder<d
     q.cylinder.direction = normalised(v);  // encloses Aᵀu/|Aᵀu|
 
     // η (upper bound) and its split.
-    I lengths(0);
-    for (int i = 0; i < 3; ++i) lengths += I(magnitude(extents[i])) + I(magnitude(delta[i]));
-    lengths += I(2) * I(magnitude(half_height)) + I(2) * I(magnitude(radius));
-    const double eta = apply_eta ? (I(g) * lengths).hi() : 0.0;
+    N lengths(0);
+    for (int i = 0; i < 3; ++i) lengths += N(magnitude(extents[i])) + N(magnitude(delta[i]));
+    lengths += N(2) * N(magnitude(half_height)) + N(2) * N(magnitude(radius));
+    const double eta = apply_eta ? (N(g) * lengths).hi() : 0.0;
     if (!(eta < std::numeric_limits<double>::infinity())) return std::nullopt;
     const double cyl_room = std::min(radius.lo(), half_height.lo());  // ≤ min(r, h/2)
     const double on_cyl = std::min(cyl_room, eta);
-    const double on_box = on_cyl == eta ? 0.0 : (I(eta) - I(on_cyl)).hi();
-    // The two problems as point sizes (a size interval would let §4 see e − e ≠ 0 and lose the sign of
-    // every degenerate difference): outer = sizes rounded up after adding, inner = rounded down after
-    // subtracting; the inner one exists only if every deflated size stays ≥ 0.
-    bool deflatable = true;
-    auto up = [](const I& x, double by) { return I(by == 0 ? x.hi() : (I(x.hi()) + I(by)).hi()); };
-    auto down = [&deflatable](const I& x, double by) {
-        if (by == 0) return I(x.lo());
-        if (!(x.lo() >= by)) deflatable = false;
-        return I(std::max(0.0, (I(x.lo()) - I(by)).lo()));
-    };
-    CanonicalQuery<I> inner = q;
-    q.cylinder.radius = up(radius, on_cyl);
-    q.cylinder.half_height = up(half_height, on_cyl);
-    inner.cylinder.radius = down(radius, on_cyl);
-    inner.cylinder.half_height = down(half_height, on_cyl);
-    for (int i = 0; i < 3; ++i) {
-        q.box.extents[i] = up(extents[i], on_box);
-        inner.box.extents[i] = down(extents[i], on_box);
-    }
-    return decide(q, deflatable ? &inner : nullptr, std::ldexp(m, k));
+    const double on_box = on_cyl == eta ? 0.0 : (N(eta) - N(on_cyl)).hi();
+    q.cylinder.radius = radius;
+    q.cylinder.half_height = half_height;
+    q.box.extents = extents;
+    const Widened<N> w = widen(q, on_cyl, on_box);
+    return decide(w.outer, w.has_inner ? &w.inner : nullptr, std::ldexp(m, k));
+}
+
+// Stage 1: the cheap enclosure first, the tight one only when it could not decide.
+template <class Box>
+std::optional<bool> filter(const Box& box, const Cylinder<double>& cyl) {
+    if (const std::optional<bool> fast = filter<Bounded>(box, cyl)) return fast;
+    return filter<Interval>(box, cyl);
 }
 
 // ---- Stage 2: exact, without the oracle. ----

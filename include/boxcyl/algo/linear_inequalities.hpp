@@ -37,18 +37,17 @@ namespace boxcyl::algo {
 
 namespace detail::li {
 
-// Comparison-only helpers: never std::abs/std::max on T (T may be an exact number type).
+// Never std::abs/std::max on T (T may be an exact number type); for enclosure types (the certified
+// filter) these decide no sign (number/traits.hpp).
 template <class T>
 T abs_of(const T& x) {
-    return x < T(0) ? T(-x) : x;
+    return abs_value(x);
 }
 
 // x clamped to [−e, e] (e ≥ 0).
 template <class T>
 T clamp_sym(const T& x, const T& e) {
-    if (x < -e) return T(-e);
-    if (e < x) return e;
-    return x;
+    return clamp_symmetric(x, e);
 }
 
 // §4.2.1 eq. (21) / §4.3.1 eq. (32): does the axis segment C + tD, |t| ≤ H, stay inside the slabs

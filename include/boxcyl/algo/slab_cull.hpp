@@ -4,6 +4,7 @@
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/number/traits.hpp"
 
 namespace boxcyl::algo {
 
@@ -13,7 +14,7 @@ template <class T>
 bool box_outside_slab(const CanonicalBox<T>& box, const UnitCylinder<T>& cyl) {
     const Vec3<T>& d = cyl.direction;
     const Vec3<T>& e = box.extents;
-    auto abs = [](const T& x) { return x < T(0) ? T(-x) : x; };
+    auto abs = [](const T& x) { return abs_value(x); };  // no sign decision for enclosures
     const T rho = abs(d[0]) * e[0] + abs(d[1]) * e[1] + abs(d[2]) * e[2];
     const T gamma = -dot(d, cyl.center);
     return abs(gamma) > rho + cyl.half_height;

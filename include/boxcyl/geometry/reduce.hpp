@@ -5,6 +5,7 @@
 
 #include <algorithm>  // std::max
 #include <cmath>      // std::fabs, std::ilogb, std::scalbn
+#include <limits>     // the largest finite value
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
@@ -26,7 +27,9 @@ template <class T>
 UnitCylinder<T> to_unit(const Cylinder<T>& c) {
     T m = T(0);
     for (int i = 0; i < 3; ++i) m = std::max(m, std::fabs(c.axis[i]));
-    const int e = std::ilogb(m);
+    // A zero (or NaN) axis violates the precondition; ilogb would return INT_MIN (negating it is UB),
+    // so it is left unscaled and gives a NaN direction instead.
+    const int e = (m > T(0) && m <= std::numeric_limits<T>::max()) ? std::ilogb(m) : 0;
     const Vec3<T> a{std::scalbn(c.axis[0], -e), std::scalbn(c.axis[1], -e), std::scalbn(c.axis[2], -e)};
     const T len = inexact_sqrt(dot(a, a));
     return {c.center, {a[0] / len, a[1] / len, a[2] / len}, c.radius, c.height / T(2)};

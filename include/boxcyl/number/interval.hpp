@@ -90,6 +90,9 @@ public:
     constexpr Interval(int x) : lo_(x), hi_(x) {}     // NOLINT(google-explicit-constructor)
     constexpr Interval(double lo, double hi) : lo_(lo), hi_(hi) {}
 
+    // The interval [lo, hi] (the same factory as Bounded::range, for code generic over both).
+    static Interval range(double lo, double hi) { return {lo, hi}; }
+
     double lo() const { return lo_; }
     double hi() const { return hi_; }
 
@@ -163,6 +166,19 @@ public:
     friend Interval sqrt(const Interval& a) {
         if (!(a.lo_ >= 0)) return nan_interval();
         return {std::max(0.0, detail::next_down(std::sqrt(a.lo_))), detail::next_up(std::sqrt(a.hi_))};
+    }
+
+    // |x| and the clamp of x to [−e, e] (e ≥ 0) as enclosures, without deciding a sign (traits.hpp).
+    // Both are monotone in each bound, so the extremes are at the corners; nothing rounds.
+    friend Interval enclosure_abs(const Interval& x) {
+        if (x.lo_ >= 0) return x;
+        if (x.hi_ <= 0) return -x;
+        return {0.0, std::max(-x.lo_, x.hi_)};  // NaN bounds give NaN (undecided later)
+    }
+    friend Interval enclosure_clamp(const Interval& x, const Interval& e) {
+        const double lo = x.lo_ >= 0 ? std::min(x.lo_, e.lo_) : std::max(x.lo_, -e.hi_);
+        const double hi = x.hi_ <= 0 ? std::max(x.hi_, -e.lo_) : std::min(x.hi_, e.hi_);
+        return {lo, hi};
     }
 
 private:

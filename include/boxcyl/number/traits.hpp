@@ -34,6 +34,28 @@ T inexact_sqrt(const T& x) {
     return number_traits<T>::sqrt(x);
 }
 
+// |x| and x clamped to [−e, e] (e ≥ 0). Enclosure types (Interval, Bounded) provide enclosure_abs and
+// enclosure_clamp, found by argument-dependent lookup: they enclose the result without deciding a
+// sign, so a value near 0 does not make the filter undecided. Other types compare.
+template <class T>
+T abs_value(const T& x) {
+    if constexpr (requires { enclosure_abs(x); }) {
+        return enclosure_abs(x);
+    } else {
+        return x < T(0) ? T(-x) : x;
+    }
+}
+template <class T>
+T clamp_symmetric(const T& x, const T& e) {
+    if constexpr (requires { enclosure_clamp(x, e); }) {
+        return enclosure_clamp(x, e);
+    } else {
+        if (x < -e) return T(-e);
+        if (e < x) return e;
+        return x;
+    }
+}
+
 // Sign of a value as -1, 0, +1. Exact types specialise sign_of for speed.
 template <class T>
 int sign_of(const T& x) {
