@@ -2,6 +2,9 @@
 // on random inputs and on one-ulp boundary inputs, with a summary from the same run: each query's
 // time relative to plain double §4 on the same inputs, and the fraction of queries that needed the
 // exact fallback. scripts/bench.sh runs it and writes docs/performance.md.
+// Built with -DBOXCYL_BENCH_PEERS=ON, it also times the same queries through FCL, Bullet and ODE
+// (issue #5; peers.cpp), checks their answers against the oracle, and reports every time relative
+// to the default exact query as well.
 //
 // Method: the inputs are generated once, before any timing, with fixed seeds (tests/support/cases.hpp).
 // One timed pass answers every query of a pre-generated array in order (4096 random queries; 1024
@@ -25,6 +28,7 @@
 #include <cstdio>       // std::printf, std::snprintf, std::FILE
 #include <exception>    // std::exception
 #include <map>          // results by benchmark name
+#include <memory>       // std::unique_ptr
 #include <string>       // names, formatting
 #include <type_traits>  // std::is_same_v
 #include <vector>       // data sets
@@ -32,6 +36,9 @@
 #include "boxcyl/filtered.hpp"
 #include "boxcyl/query.hpp"
 #include "support/cases.hpp"
+#ifdef BOXCYL_BENCH_PEERS
+#include "peers.hpp"
+#endif
 
 namespace {
 
@@ -209,8 +216,9 @@ DataSet filter_decided(const DataSet& s) {
 }
 
 struct Check {
-    long wrong = -1;  // answers that differ from the oracle's (-1: not checked)
-    long errors = 0;  // queries that threw
+    long wrong = -1;                 // answers that differ from the oracle's (-1: not checked)
+    long errors = 0;                 // queries that threw (a peer: that failed)
+    const char* error_verb = "threw";
 };
 
 // One untimed pass: compares with the oracle where its answers are known, counts and reports throws.
@@ -234,6 +242,13 @@ Check check(const DataSet& s, std::size_t n, const char* key) {
 
 // ---- registry of what was registered, for the summary ----
 
+// A peer library's disagreements with the oracle, split (issue #5).
+struct PeerDetail {
+    bool present = false;
+    long false_pos = 0, false_neg = 0;
+    long small = 0, small_wrong = 0;  // queries below kSmallSize, and the wrong answers among them
+};
+
 struct Entry {
     std::string set, method_key, label;
     std::size_t queries = 0;
@@ -242,6 +257,7 @@ struct Entry {
     // Filled by the reporter:
     double ns_median = -1, cv = -1;
     std::vector<double> ns_reps;  // per-repetition times, when no median aggregate is reported
+    PeerDetail peer{};            // only for a peer library
 };
 std::vector<Entry> g_entries;
 bool g_checks = true;  // --no-checks: no oracle answers, no untimed check passes (for profiling)
@@ -283,6 +299,65 @@ void add_method(const DataSet& s, Method m) {
         }
     }
 }
+
+#ifdef BOXCYL_BENCH_PEERS
+// "Small" queries, where the peers' absolute tolerances (FCL's default gjk_tolerance 1e-6, …) are
+// no longer small: every length of the query (box sides, cylinder diameter and height) is below this.
+constexpr double kSmallSize = 0.01;
+
+double query_size(const Case& c) {
+    double m = std::max(2 * c.cylinder.radius, c.cylinder.height);
+    for (int i = 0; i < 3; ++i) {
+        switch (c.kind) {
+            case BoxKind::aligned: m = std::max(m, c.aligned.max[i] - c.aligned.min[i]); break;
+            case BoxKind::oriented: m = std::max(m, 2 * c.oriented.extents[i]); break;
+            case BoxKind::canonical: m = std::max(m, 2 * c.canonical.extents[i]); break;
+        }
+    }
+    return m;
+}
+
+// The peers' queries, converted once per data set; the registered benchmarks point into them.
+std::vector<std::unique_ptr<bench::PeerQueries>> g_peer_queries;
+
+// One peer library on the whole of `s`: converted and checked against the oracle untimed, then timed
+// as boxcyl's queries are (one pass answers every query in order).
+void add_peer(const DataSet& s, const bench::PeerInfo& info) {
+    g_peer_queries.push_back(std::make_unique<bench::PeerQueries>(info.peer, s.cases));
+    const bench::PeerQueries* q = g_peer_queries.back().get();
+    const std::size_t n = s.cases.size();
+    Check c;
+    c.error_verb = "failed, not timed";
+    std::size_t timed = n;
+    for (std::size_t i = 0; i < n; ++i)
+        if (q->failed(i)) ++c.errors, --timed;
+    PeerDetail d;
+    d.present = true;
+    if (!s.want.empty()) {
+        c.wrong = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const bool got = q->answer(i), want = s.want[i], small = query_size(s.cases[i]) < kSmallSize;
+            d.small += small;
+            if (got == want) continue;
+            ++c.wrong;
+            ++(got ? d.false_pos : d.false_neg);
+            d.small_wrong += small;
+        }
+    }
+    const std::string name = s.name + "/" + info.key;
+    g_by_name[name] = g_entries.size();
+    g_entries.push_back(Entry{s.name, info.key, info.label, n, c, -1, -1, -1, {}, d});
+    benchmark::RegisterBenchmark(name.c_str(), [q, n, timed](benchmark::State& st) {
+        long hits = 0;
+        for (auto _ : st) {
+            hits += q->pass(n);
+            benchmark::DoNotOptimize(hits);
+            benchmark::ClobberMemory();
+        }
+        st.SetItemsProcessed(st.iterations() * static_cast<benchmark::IterationCount>(timed));
+    });
+}
+#endif
 
 // ---- the summary: the console output as usual, then per data set the table from the same run ----
 
@@ -332,7 +407,8 @@ std::string ns_text(double ns) {
 std::string ratio_text(double r) {
     if (r < 0) return "—";
     if (r >= 100) return fmt("%.0f×", r);
-    return fmt("%.2f×", r);
+    if (r >= 0.01) return fmt("%.2f×", r);
+    return fmt("%.2g×", r);  // far faster than the reference: two significant digits
 }
 
 const Entry* find(const std::string& set, const char* key) {
@@ -359,17 +435,34 @@ void print_summary(std::FILE* out, const std::vector<DataSet>& sets, long sample
         for (const Entry& e : g_entries) measured |= e.set == s.name && e.ns_median >= 0;
         if (!measured) continue;
         const Entry* base = find(s.name, "double_s4");
+        const Entry* dflt = find(s.name, "default");
         std::fprintf(out, "\n**%s**\n\n", s.title.c_str());
-        std::fprintf(out, "| query | time per query | cv | ratio to double §4 | exact fallbacks | wrong vs oracle |\n");
-        std::fprintf(out, "| --- | ---: | ---: | ---: | ---: | ---: |\n");
+        std::fprintf(out, "| query | time per query | cv | ratio to default | ratio to double §4 | exact fallbacks | wrong vs oracle |\n");
+        std::fprintf(out, "| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n");
         for (const Entry& e : g_entries) {
             if (e.set != s.name || e.ns_median < 0) continue;
             std::string wrong = e.check.wrong < 0 ? "—" : std::to_string(e.check.wrong) + " / " + std::to_string(e.queries);
-            if (e.check.errors) wrong += " (" + std::to_string(e.check.errors) + " threw)";
-            std::fprintf(out, "| %s | %s | %s | %s | %s | %s |\n", e.label.c_str(), ns_text(e.ns_median).c_str(),
+            if (e.check.errors) wrong += " (" + std::to_string(e.check.errors) + " " + e.check.error_verb + ")";
+            std::fprintf(out, "| %s | %s | %s | %s | %s | %s | %s |\n", e.label.c_str(), ns_text(e.ns_median).c_str(),
                          e.cv < 0 ? "—" : fmt("%.1f%%", 100 * e.cv).c_str(),
+                         ratio_text(dflt ? e.ns_median / dflt->ns_median : -1).c_str(),
                          ratio_text(base ? e.ns_median / base->ns_median : -1).c_str(),
                          fraction_text(e.exact_fraction).c_str(), wrong.c_str());
+        }
+    }
+    bool peers = false;
+    for (const Entry& e : g_entries) peers |= e.peer.present && e.check.wrong >= 0;
+    if (peers) {
+        std::fprintf(out, "\n**Where the peer libraries disagree with the oracle** (a failed query counts as the answer false; "
+                          "*small*: every length of the query — box sides, cylinder diameter and height — below %g)\n\n",
+                     kSmallSize);
+        std::fprintf(out, "| data | library | wrong vs oracle | false positives | false negatives | failed | wrong among the small queries |\n");
+        std::fprintf(out, "| --- | --- | ---: | ---: | ---: | ---: | ---: |\n");
+        for (const Entry& e : g_entries) {
+            if (!e.peer.present || e.check.wrong < 0) continue;
+            std::fprintf(out, "| %s | %s | %ld / %zu | %ld | %ld | %ld | %ld / %ld |\n", e.set.c_str(), e.label.c_str(),
+                         e.check.wrong, e.queries, e.peer.false_pos, e.peer.false_neg, e.check.errors,
+                         e.peer.small_wrong, e.peer.small);
         }
     }
     if (!parts.empty()) {
@@ -405,6 +498,21 @@ void print_summary(std::FILE* out, const std::vector<DataSet>& sets, long sample
                               "ratio: ≤ 1.25× leaves room for f ≤ %s even with a free filter.\n",
                          fmt("%.0f", x->ns_median / b->ns_median).c_str(), fmt("%.0f", x->ns_median / b->ns_median).c_str(),
                          fmt("%.1e", 0.25 * b->ns_median / x->ns_median).c_str());
+    }
+    // Issue #5's goal, on the random queries: FCL's GJK box–cylinder test (its default solver) / the
+    // default query ≥ 50.
+    const Entry* fcl = find("random", "fcl_libccd");
+    if (d && fcl) {
+        const Entry* indep = find("random", "fcl_indep");
+        const Entry* bd = find("boundary", "default");
+        const Entry* bf = find("boundary", "fcl_libccd");
+        const double r = fcl->ns_median / d->ns_median;
+        std::fprintf(out, "\nIssue #5's goal, default query ≥ 50× faster than FCL's GJK box–cylinder test on random queries: "
+                          "**%s** (FCL / default = %s with FCL's default solver GST_LIBCCD%s; on the boundary set, where "
+                          "the default query falls back to exact arithmetic, %s).\n",
+                     r >= 50 ? "met" : "not met", ratio_text(r).c_str(),
+                     indep ? (", " + ratio_text(indep->ns_median / d->ns_median) + " with GST_INDEP").c_str() : "",
+                     bd && bf ? ratio_text(bf->ns_median / bd->ns_median).c_str() : "—");
     }
 }
 
@@ -456,6 +564,10 @@ int main(int argc, char** argv) {
 
     for (std::size_t k = 0; k < 2; ++k)
         for (const MethodInfo& info : kMethods) add_method(sets[k], info.method);
+#ifdef BOXCYL_BENCH_PEERS
+    for (std::size_t k = 0; k < 2; ++k)
+        for (const bench::PeerInfo& info : bench::kPeers) add_peer(sets[k], info);
+#endif
     // Where the default query's time goes (without fallbacks, by box kind): the default and its baseline.
     for (std::size_t k = 2; k < sets.size(); ++k) {
         add_method(sets[k], Method::default_query);

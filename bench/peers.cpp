@@ -1,0 +1,328 @@
+// Peer libraries answering boxcyl's queries (issue #5); see peers.hpp.
+//
+// Mapping of one query, the same for every library (computed in double from the same inputs):
+// - box: centre, rotation R whose columns are the box axes, half extents. Aligned box: centre
+//   (min + max)/2, half extents (max − min)/2, R = I (both rounded: the peers take no min/max form).
+//   Canonical box: centre 0, R = I. Oriented box: its axes as given (orthonormal within rounding); a
+//   left-handed frame gets its third axis negated, which leaves the box the same solid.
+// - cylinder: every library's cylinder lies along its local z axis, centred at its origin. R's columns
+//   are (u, v, d) with d = axis/|axis| and u, v completing a right-handed orthonormal frame; the radius
+//   as given; the length is the full height (Bullet: half extents (r, r, height/2)).
+// Both conversions round, so on the one-ulp boundary set a library's answer may differ from the
+// oracle's for the converted inputs' sake as well as its own.
+#include "peers.hpp"
+
+#include <array>      // 3×3 matrices
+#include <cmath>      // std::sqrt, std::copysign, std::ilogb, std::scalbn, std::fabs
+#include <cstdarg>    // va_list (ODE's message handlers)
+#include <mutex>      // std::call_once
+#include <stdexcept>  // std::logic_error, std::runtime_error
+#include <utility>    // std::pair
+
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/cylinder.h>
+#include <fcl/narrowphase/collision.h>
+
+#include <btBulletCollisionCommon.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
+#include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
+#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
+
+#include <ode/ode.h>
+
+#ifndef BT_USE_DOUBLE_PRECISION
+#error "Bullet must be the double-precision build (Debian: bullet-float64), as the inputs are doubles"
+#endif
+#ifndef dDOUBLE
+#error "ODE must be the double-precision build, as the inputs are doubles"
+#endif
+
+namespace boxcyl::bench {
+namespace {
+
+using boxcyl::testing::BoxKind;
+using boxcyl::testing::Case;
+using Mat3 = std::array<std::array<double, 3>, 3>;  // row-major: m[row][column]
+
+// A solid placed in space: centre, rotation (local frame's axes as columns) and local dimensions.
+struct Placed {
+    Vec3<double> center;
+    Mat3 rotation;
+};
+
+struct BoxPose : Placed {
+    Vec3<double> half;  // half extents
+};
+
+struct CylinderPose : Placed {
+    double radius = 0, height = 0;  // full height, along the local z axis
+};
+
+constexpr Mat3 kIdentity{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+
+BoxPose box_pose(const Case& c) {
+    BoxPose b;
+    switch (c.kind) {
+        case BoxKind::aligned:
+            for (int i = 0; i < 3; ++i) {
+                b.center[i] = 0.5 * c.aligned.min[i] + 0.5 * c.aligned.max[i];
+                b.half[i] = 0.5 * (c.aligned.max[i] - c.aligned.min[i]);
+            }
+            b.rotation = kIdentity;
+            break;
+        case BoxKind::canonical:
+            b.center = {0, 0, 0};
+            b.half = c.canonical.extents;
+            b.rotation = kIdentity;
+            break;
+        case BoxKind::oriented: {
+            b.center = c.oriented.center;
+            b.half = c.oriented.extents;
+            auto a = c.oriented.axes;
+            const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                               a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                               a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+            if (det < 0) a[2] = -a[2];  // a box is symmetric in each axis: same solid, a proper rotation
+            for (int row = 0; row < 3; ++row)
+                for (int col = 0; col < 3; ++col) b.rotation[row][col] = a[col][row];
+            break;
+        }
+    }
+    return b;
+}
+
+CylinderPose cylinder_pose(const Case& c) {
+    CylinderPose p;
+    p.center = c.cylinder.center;
+    p.radius = c.cylinder.radius;
+    p.height = c.cylinder.height;
+    // Unit direction: scale by a power of two first (exact), as axis components may be subnormal.
+    Vec3<double> d = c.cylinder.axis;
+    const double m = std::fmax(std::fabs(d[0]), std::fmax(std::fabs(d[1]), std::fabs(d[2])));
+    const int e = std::ilogb(m);
+    for (int i = 0; i < 3; ++i) d[i] = std::scalbn(d[i], -e);
+    const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    for (int i = 0; i < 3; ++i) d[i] /= len;
+    // u, v: Duff et al., "Building an orthonormal basis, revisited" (JCGT 2017); u × v = d.
+    const double s = std::copysign(1.0, d[2]);
+    const double a = -1.0 / (s + d[2]);
+    const double b = d[0] * d[1] * a;
+    const Vec3<double> u{1 + s * d[0] * d[0] * a, s * b, -s * d[0]};
+    const Vec3<double> v{b, s + d[1] * d[1] * a, -d[1]};
+    for (int row = 0; row < 3; ++row) {
+        p.rotation[row][0] = u[row];
+        p.rotation[row][1] = v[row];
+        p.rotation[row][2] = d[row];
+    }
+    return p;
+}
+
+}  // namespace
+
+struct PeerQueries::Impl {
+    virtual ~Impl() = default;
+    virtual bool answer(std::size_t i) const = 0;
+    virtual long pass(std::size_t n) const = 0;
+    virtual bool failed(std::size_t) const { return false; }
+};
+
+namespace {
+
+// ---- FCL 0.7: fcl::collide on two shapes, GJK solver libccd (the default) or FCL's own ----
+
+fcl::Transform3d fcl_transform(const Placed& p) {
+    fcl::Transform3d t = fcl::Transform3d::Identity();
+    for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col) t.linear()(row, col) = p.rotation[row][col];
+    t.translation() = fcl::Vector3d(p.center[0], p.center[1], p.center[2]);
+    return t;
+}
+
+class Fcl final : public PeerQueries::Impl {
+public:
+    Fcl(const std::vector<Case>& cases, fcl::GJKSolverType solver) {
+        request_.num_max_contacts = 1;
+        request_.enable_contact = false;  // a yes/no query
+        request_.gjk_solver_type = solver;
+        boxes_.reserve(cases.size());
+        cylinders_.reserve(cases.size());
+        for (const Case& c : cases) {
+            const BoxPose b = box_pose(c);
+            const CylinderPose y = cylinder_pose(c);
+            boxes_.emplace_back(2 * b.half[0], 2 * b.half[1], 2 * b.half[2]);  // side lengths
+            cylinders_.emplace_back(y.radius, y.height);
+            box_tf_.push_back(fcl_transform(b));
+            cylinder_tf_.push_back(fcl_transform(y));
+        }
+    }
+    bool answer(std::size_t i) const override { return query(i); }
+    long pass(std::size_t n) const override {
+        long hits = 0;
+        for (std::size_t i = 0; i < n; ++i) hits += query(i);
+        return hits;
+    }
+
+private:
+    bool query(std::size_t i) const {
+        fcl::CollisionResultd result;
+        fcl::collide(&boxes_[i], box_tf_[i], &cylinders_[i], cylinder_tf_[i], request_, result);
+        return result.isCollision();
+    }
+
+    fcl::CollisionRequestd request_;
+    std::vector<fcl::Boxd> boxes_;
+    std::vector<fcl::Cylinderd> cylinders_;
+    std::vector<fcl::Transform3d> box_tf_, cylinder_tf_;
+};
+
+// ---- Bullet 3.24 (double): btGjkPairDetector, Voronoi simplex solver, GJK–EPA penetration depth ----
+
+btTransform bullet_transform(const Placed& p) {
+    const Mat3& r = p.rotation;
+    return btTransform(btMatrix3x3(r[0][0], r[0][1], r[0][2], r[1][0], r[1][1], r[1][2], r[2][0], r[2][1], r[2][2]),
+                       btVector3(p.center[0], p.center[1], p.center[2]));
+}
+
+// Margins 0. setMargin recomputes the shape's inner dimensions as (half extents − old margin) + new
+// margin, which rounds; the half extents are set again exactly afterwards.
+template <class Shape>
+std::unique_ptr<Shape> bullet_shape(const btVector3& half) {
+    auto s = std::make_unique<Shape>(half);
+    s->setMargin(0);
+    s->setImplicitShapeDimensions(half);
+    return s;
+}
+
+class Bullet final : public PeerQueries::Impl {
+public:
+    explicit Bullet(const std::vector<Case>& cases) {
+        for (const Case& c : cases) {
+            const BoxPose b = box_pose(c);
+            const CylinderPose y = cylinder_pose(c);
+            boxes_.push_back(bullet_shape<btBoxShape>(btVector3(b.half[0], b.half[1], b.half[2])));
+            cylinders_.push_back(bullet_shape<btCylinderShapeZ>(btVector3(y.radius, y.radius, 0.5 * y.height)));
+            btGjkPairDetector::ClosestPointInput in;  // maximum distance: unlimited (the default)
+            in.m_transformA = bullet_transform(b);
+            in.m_transformB = bullet_transform(y);
+            inputs_.push_back(in);
+        }
+    }
+    bool answer(std::size_t i) const override { return query(i); }
+    long pass(std::size_t n) const override {
+        long hits = 0;
+        for (std::size_t i = 0; i < n; ++i) hits += query(i);
+        return hits;
+    }
+
+private:
+    // Intersecting: a reported distance ≤ 0 (negative: penetration depth from EPA). No result at all
+    // (GJK or EPA gave up) counts as no contact, as Bullet's own convex–convex algorithm treats it.
+    bool query(std::size_t i) const {
+        btVoronoiSimplexSolver simplex;
+        btGjkEpaPenetrationDepthSolver depth;
+        btGjkPairDetector gjk(boxes_[i].get(), cylinders_[i].get(), &simplex, &depth);
+        btPointCollector out;
+        gjk.getClosestPoints(inputs_[i], out, nullptr);
+        return out.m_hasResult && out.m_distance <= 0;
+    }
+
+    std::vector<std::unique_ptr<btBoxShape>> boxes_;
+    std::vector<std::unique_ptr<btCylinderShapeZ>> cylinders_;
+    std::vector<btGjkPairDetector::ClosestPointInput> inputs_;
+};
+
+// ---- ODE 0.16 (double): dCollide on a box geom and a cylinder geom, in no space ----
+
+void ode_place(dGeomID g, const Placed& p) {
+    const Mat3& r = p.rotation;
+    const dMatrix3 m{r[0][0], r[0][1], r[0][2], 0, r[1][0], r[1][1], r[1][2], 0, r[2][0], r[2][1], r[2][2], 0};
+    dGeomSetRotation(g, m);
+    dGeomSetPosition(g, p.center[0], p.center[1], p.center[2]);
+}
+
+// Debian's ODE is built with its internal assertions on, and dCollideCylinderBox asserts (by default:
+// abort()) where it normalises a zero vector, e.g. in its edge tests on a flat box (a side of length
+// 0). While the queries are first tried (untimed), a handler turns the assertion into an
+// exception instead, unwinding through ODE's frames (C++, with unwind tables); the query is marked as
+// failed, answers false like a boxcyl query that throws, and is left out of the timed passes.
+struct OdeAssertion : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+[[noreturn]] void throw_ode_assertion(int, const char* format, va_list) { throw OdeAssertion(format); }
+
+class Ode final : public PeerQueries::Impl {
+public:
+    explicit Ode(const std::vector<Case>& cases) {
+        static std::once_flag init;
+        std::call_once(init, [] { dInitODE2(0); });  // never closed: the process ends first
+        for (const Case& c : cases) {
+            const BoxPose b = box_pose(c);
+            const CylinderPose y = cylinder_pose(c);
+            const dGeomID box = dCreateBox(nullptr, 2 * b.half[0], 2 * b.half[1], 2 * b.half[2]);
+            const dGeomID cylinder = dCreateCylinder(nullptr, y.radius, y.height);
+            ode_place(box, b);
+            ode_place(cylinder, y);
+            geoms_.push_back({box, cylinder});
+        }
+        dSetDebugHandler(throw_ode_assertion);
+        dSetErrorHandler(throw_ode_assertion);
+        for (std::size_t i = 0; i < geoms_.size(); ++i) {
+            try {
+                query(i);
+                failed_.push_back(0);
+            } catch (const OdeAssertion&) {
+                failed_.push_back(1);
+            }
+        }
+        dSetDebugHandler(nullptr);  // ODE's defaults again: a failure in a timed pass aborts
+        dSetErrorHandler(nullptr);
+    }
+    ~Ode() override {
+        for (const auto& [box, cylinder] : geoms_) {
+            dGeomDestroy(box);
+            dGeomDestroy(cylinder);
+        }
+    }
+    Ode(const Ode&) = delete;
+    Ode& operator=(const Ode&) = delete;
+
+    bool answer(std::size_t i) const override { return failed_[i] ? false : query(i); }
+    long pass(std::size_t n) const override {
+        long hits = 0;
+        for (std::size_t i = 0; i < n; ++i)
+            if (!failed_[i]) hits += query(i);
+        return hits;
+    }
+    bool failed(std::size_t i) const override { return failed_[i]; }
+
+private:
+    // Intersecting: at least one contact (a buffer of one: the count is capped by it).
+    bool query(std::size_t i) const {
+        dContactGeom contact;
+        return dCollide(geoms_[i].first, geoms_[i].second, 1, &contact, sizeof contact) > 0;
+    }
+
+    std::vector<std::pair<dGeomID, dGeomID>> geoms_;
+    std::vector<char> failed_;
+};
+
+}  // namespace
+
+PeerQueries::PeerQueries(Peer peer, const std::vector<Case>& cases) {
+    switch (peer) {
+        case Peer::fcl_libccd: impl_ = std::make_unique<Fcl>(cases, fcl::GST_LIBCCD); break;
+        case Peer::fcl_indep: impl_ = std::make_unique<Fcl>(cases, fcl::GST_INDEP); break;
+        case Peer::bullet: impl_ = std::make_unique<Bullet>(cases); break;
+        case Peer::ode: impl_ = std::make_unique<Ode>(cases); break;
+    }
+    if (!impl_) throw std::logic_error("unknown peer library");
+}
+
+PeerQueries::~PeerQueries() = default;
+
+bool PeerQueries::answer(std::size_t i) const { return impl_->answer(i); }
+long PeerQueries::pass(std::size_t n) const { return impl_->pass(n); }
+bool PeerQueries::failed(std::size_t i) const { return impl_->failed(i); }
+
+}  // namespace boxcyl::bench
