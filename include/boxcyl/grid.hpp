@@ -1,0 +1,360 @@
+// Grid query (issue #5): every cell of a regular axis-aligned grid that a cylinder intersects, exactly.
+//
+// The grid's cells are closed boxes whose bounds are doubles, defined once here and used everywhere:
+//
+//   bound(axis, i) = origin[axis] + i·cell_size[axis], rounded ONCE to the nearest double
+//                    (std::fma(i, cell_size, origin): the product is not rounded separately),
+//   cell (i, j, k) = the closed AlignedBox [bound(0,i), bound(0,i+1)] × [bound(1,j), bound(1,j+1)]
+//                                         × [bound(2,k), bound(2,k+1)],   0 ≤ i < counts[0], ...
+//
+// Rounding is monotone, so the bounds never decrease with i, adjacent cells share their face exactly
+// and the cells tile the grid's box [bound(·,0), bound(·,counts)] without gaps. (A cell may be flat
+// where cell_size is below the spacing of the doubles near origin; it is then a flat box.) "Exact"
+// means: a cell is reported if and only if boxcyl::intersects(cell_box(grid, cell), cylinder) — the
+// exact default query, closed solids, touching counts — is true for that box.
+//
+// Cost: the query walks a subdivision of the cell index ranges, starting from the cells that can
+// meet the cylinder's bounding box, and discards a whole block of cells with one exact query when the
+// block's box (the union of its cells, itself an aligned box with the same bounds) misses the
+// cylinder. That is exact: a cylinder that misses the union misses every cell of it. A block that
+// meets the cylinder is halved along its longest side, down to single cells; when its lower half
+// misses, its upper half meets the cylinder without asking (the halves tile the block). A block whose
+// eight corners all lie in the closed cylinder (an exact test: intervals, else rationals) lies inside
+// it, cylinder and box being convex, and all its cells are reported without descending. The number of exact queries
+// therefore grows with the number of cells near the cylinder's surface (times a logarithmic factor for
+// the descent), not with the grid's size nor with the cylinder's volume.
+//
+// The bounding box is computed in double with a generous margin, and the index range it gives is
+// then confirmed by exact queries on the excluded slabs of cells (at most six), so a rounding slip in
+// the bounding box could cost time (GridStats::range_widened), never a missed cell.
+//
+// The query needs the exact backend (link boxcyl::exact, which defines BOXCYL_HAS_EXACT), like the
+// default query; the grid itself (Grid, grid_bound, cell_box, validate) does not.
+#pragma once
+
+#include <algorithm>  // std::max, std::sort
+#include <array>      // cell indices
+#include <cassert>    // debug-build precondition checks
+#include <cmath>      // std::fma, std::hypot, std::ldexp, std::nextafter, std::ilogb
+#include <cstddef>    // std::size_t
+#include <cstdint>    // std::int64_t
+#include <limits>     // infinities, denorm_min
+#include <string>     // validation messages
+#include <type_traits>  // std::remove_reference_t
+#include <utility>    // std::forward
+#include <vector>     // cells()
+
+#include "boxcyl/geometry/box.hpp"
+#include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/validate.hpp"
+#include "boxcyl/query.hpp"
+#include "boxcyl/number/interval.hpp"
+#if defined(BOXCYL_HAS_EXACT)
+#include "boxcyl/number/rational.hpp"
+#endif
+
+namespace boxcyl {
+
+// A regular axis-aligned grid of counts[0] × counts[1] × counts[2] cells (see the header comment
+// for the exact cell bounds). Valid when validate(grid).ok().
+struct Grid {
+    Vec3<double> origin;
+    Vec3<double> cell_size;                    // > 0 per axis
+    std::array<std::int64_t, 3> counts{};      // ≥ 0 per axis (0: no cells)
+};
+
+// (i, j, k): 0 ≤ index[axis] < counts[axis].
+using CellIndex = std::array<std::int64_t, 3>;
+
+// Counts up to 2^53, so that every index i (and counts itself) converts to double exactly.
+inline constexpr std::int64_t max_grid_count = std::int64_t{1} << 53;
+
+// bound(axis, i) as defined above, for 0 ≤ i ≤ counts[axis].
+inline double grid_bound(const Grid& g, std::size_t axis, std::int64_t i) {
+    return std::fma(static_cast<double>(i), g.cell_size[axis], g.origin[axis]);
+}
+
+// The union of the cells lo ≤ index < hi (componentwise; hi exclusive, lo < hi): one aligned box.
+inline AlignedBox<double> block_box(const Grid& g, const CellIndex& lo, const CellIndex& hi) {
+    return {{grid_bound(g, 0, lo[0]), grid_bound(g, 1, lo[1]), grid_bound(g, 2, lo[2])},
+            {grid_bound(g, 0, hi[0]), grid_bound(g, 1, hi[1]), grid_bound(g, 2, hi[2])}};
+}
+
+// Cell (i, j, k) as a closed box.
+inline AlignedBox<double> cell_box(const Grid& g, const CellIndex& c) {
+    return block_box(g, c, {c[0] + 1, c[1] + 1, c[2] + 1});
+}
+
+// Names the first bad field: origin finite, cell_size finite and > 0, 0 ≤ counts ≤ 2^53, and the far
+// bound origin + counts·cell_size (rounded) finite, so that every cell is a valid finite box.
+inline Validity validate(const Grid& g, const std::string& prefix = "grid") {
+    Validity v;
+    if (!detail::check_finite(v, prefix + ".origin", g.origin)) return v;
+    for (std::size_t a = 0; a < 3; ++a) {
+        const std::string field = prefix + ".cell_size[" + std::to_string(a) + "]";
+        if (!detail::check_finite(v, field, g.cell_size[a])) return v;
+        if (!(g.cell_size[a] > 0)) return {field, "is not positive"};
+    }
+    for (std::size_t a = 0; a < 3; ++a) {
+        const std::string field = prefix + ".counts[" + std::to_string(a) + "]";
+        if (g.counts[a] < 0) return {field, "is negative"};
+        if (g.counts[a] > max_grid_count) return {field, "exceeds 2^53"};
+        if (!std::isfinite(grid_bound(g, a, g.counts[a])))
+            return {field, "makes the far bound origin + counts*cell_size overflow the double range"};
+    }
+    return v;
+}
+
+// What a grid query did (for benchmarks and tests).
+struct GridStats {
+    std::int64_t queries = 0;         // exact box-cylinder queries made, all kinds together
+    std::int64_t cell_queries = 0;    // of which on single cells
+    std::int64_t cells = 0;           // cells reported
+    std::int64_t range_widened = 0;   // bounding-box index ranges that the exact check had to widen
+                                      // (0 unless the bounding box's margin was too small)
+    std::int64_t corner_inside = 0;   // queries settled by a box corner inside the cylinder
+    std::int64_t blocks_inside = 0;   // blocks of several cells found inside the cylinder, reported whole
+};
+
+namespace detail {
+
+// Smallest i in [lo, hi) with pred(i), or hi if none; pred must be monotone (false…false true…true).
+template <class Pred>
+std::int64_t first_true(std::int64_t lo, std::int64_t hi, Pred pred) {
+    while (lo < hi) {
+        const std::int64_t mid = lo + (hi - lo) / 2;
+        if (pred(mid))
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo;
+}
+
+// Per axis, an interval [lo, hi] of doubles containing the cylinder (its bounding box, enlarged).
+// The exact half-extent along axis i is h/2·|u_i| + r·sqrt(1 − u_i²) with u = axis/|axis|; it is
+// evaluated without cancellation (sqrt(1 − u_i²) = |(a_j, a_k)|/|a|), on the axis scaled by a power of
+// two (exact, except for components below 2^-1074 of the largest, whose share is below the absolute
+// margin), so every term has a relative error of a few ulps: the factor 1 + 2^-40, the absolute
+// margin and the outward nextafter cover that many times over. An overflow gives ±Inf: no clipping.
+inline std::array<std::array<double, 2>, 3> cylinder_bounds(const Cylinder<double>& c) {
+    const double m = std::max({std::fabs(c.axis[0]), std::fabs(c.axis[1]), std::fabs(c.axis[2])});
+    const int e = std::ilogb(m);
+    const Vec3<double> a{std::ldexp(c.axis[0], -e), std::ldexp(c.axis[1], -e), std::ldexp(c.axis[2], -e)};
+    const double n = std::hypot(a[0], a[1], a[2]);
+    const double margin = std::ldexp(c.radius, -1000) + std::ldexp(c.height, -1000) +
+                          std::numeric_limits<double>::denorm_min();
+    std::array<std::array<double, 2>, 3> b{};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double along = std::fabs(a[i]) / n;
+        const double across = std::hypot(a[(i + 1) % 3], a[(i + 2) % 3]) / n;
+        double ext = 0.5 * c.height * along + c.radius * across;
+        ext = ext * (1 + 0x1p-40) + margin;
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        b[i] = {std::nextafter(c.center[i] - ext, -inf), std::nextafter(c.center[i] + ext, inf)};
+        if (std::isnan(b[i][0]) || std::isnan(b[i][1])) b[i] = {-inf, inf};
+    }
+    return b;
+}
+
+// Whether the point p lies in the closed cylinder, in double, by a relative margin of 2^-20 on each
+// comparison: a cheap screen (it may say false for points inside; never relied on for a true).
+inline bool likely_inside(const Vec3<double>& p, const Cylinder<double>& c) {
+    const Vec3<double> d = p - c.center;
+    const double n2 = dot(c.axis, c.axis);
+    const double ad = dot(c.axis, d);
+    const double slack = 1 - 0x1p-20;
+    // |u·d| ≤ h/2 and |d|² − (u·d)² ≤ r², multiplied by |a|² (no division, no sqrt).
+    return 4 * ad * ad <= slack * (c.height * c.height * n2) &&
+           n2 * dot(d, d) - ad * ad <= slack * (c.radius * c.radius * n2);
+}
+
+}  // namespace detail
+
+#if defined(BOXCYL_HAS_EXACT)  // the query itself needs the exact backend
+
+namespace detail {
+
+// The same test in number type N (Interval: certified bounds; Rational: exact) on the values the
+// doubles denote.
+template <class N>
+bool inside_in(const Vec3<double>& p, const Cylinder<double>& c) {
+    const Vec3<N> a{N(c.axis[0]), N(c.axis[1]), N(c.axis[2])};
+    const Vec3<N> d{N(p[0]) - N(c.center[0]), N(p[1]) - N(c.center[1]), N(p[2]) - N(c.center[2])};
+    const N n2 = dot(a, a);
+    const N ad = dot(a, d);
+    const N h(c.height);
+    const N r(c.radius);
+    return N(4) * ad * ad <= h * h * n2 && n2 * dot(d, d) - ad * ad <= r * r * n2;
+}
+
+// Whether p lies in the closed cylinder, exactly: intervals decide when they can, rationals otherwise.
+inline bool inside(const Vec3<double>& p, const Cylinder<double>& c) {
+    {
+        UncertaintyScope scope;
+        const bool r = inside_in<Interval>(p, c);
+        if (scope.certain()) return r;
+    }
+    return inside_in<Rational>(p, c);
+}
+
+template <class F>
+class GridWalk {
+public:
+    GridWalk(const Grid& g, const Cylinder<double>& c, F& f, GridStats& s) : g_(g), c_(c), f_(f), s_(s) {}
+
+    void run() {
+        for (std::size_t a = 0; a < 3; ++a)
+            if (g_.counts[a] == 0) return;
+        const CellIndex all = g_.counts;
+        // Candidate cells per axis: those whose extent along the axis meets the bounding box's.
+        const auto bb = cylinder_bounds(c_);
+        CellIndex lo{}, hi{};
+        for (std::size_t a = 0; a < 3; ++a) {
+            const std::int64_t n = all[a];
+            // Cell i is a candidate iff bound(i+1) ≥ bb.lo and bound(i) ≤ bb.hi.
+            lo[a] = first_true(0, n, [&](std::int64_t i) { return grid_bound(g_, a, i + 1) >= bb[a][0]; });
+            hi[a] = first_true(0, n, [&](std::int64_t i) { return grid_bound(g_, a, i) > bb[a][1]; });
+        }
+        // Confirm exactly that the cells left out meet nothing; otherwise keep them (see the top).
+        for (std::size_t a = 0; a < 3; ++a) {
+            if (lo[a] > 0) {
+                CellIndex h = all;
+                h[a] = lo[a];
+                if (hits({0, 0, 0}, h)) {
+                    lo[a] = 0;
+                    ++s_.range_widened;
+                }
+            }
+            if (hi[a] < all[a]) {
+                CellIndex l{0, 0, 0};
+                l[a] = hi[a];
+                if (hits(l, all)) {
+                    hi[a] = all[a];
+                    ++s_.range_widened;
+                }
+            }
+        }
+        for (std::size_t a = 0; a < 3; ++a)
+            if (lo[a] >= hi[a]) return;
+        if (hits(lo, hi)) walk(lo, hi);
+    }
+
+private:
+    // One exact query on the block lo ≤ index < hi. A corner of the box inside the cylinder settles it
+    // (exactly, see inside()) for a fraction of the general query's cost; most cells and blocks that
+    // meet a cylinder a few cells thick have one, and the general query is slowest on exactly those
+    // degenerate cells whose corners lie on the cylinder's axis.
+    bool hits(const CellIndex& lo, const CellIndex& hi) {
+        ++s_.queries;
+        if (hi[0] - lo[0] == 1 && hi[1] - lo[1] == 1 && hi[2] - lo[2] == 1) ++s_.cell_queries;
+        const AlignedBox<double> b = block_box(g_, lo, hi);
+        for (std::size_t m = 0; m < 8; ++m) {
+            const Vec3<double> p = corner(b, m);
+            if (likely_inside(p, c_) && inside(p, c_)) {
+                ++s_.corner_inside;
+                return true;
+            }
+        }
+        return intersects(b, c_);
+    }
+
+    static Vec3<double> corner(const AlignedBox<double>& b, std::size_t m) {
+        return {(m & 1) ? b.max[0] : b.min[0], (m & 2) ? b.max[1] : b.min[1], (m & 4) ? b.max[2] : b.min[2]};
+    }
+
+    // Whether the block lo ≤ index < hi lies inside the cylinder: its 8 corners do (both are convex).
+    bool block_inside(const CellIndex& lo, const CellIndex& hi) const {
+        const AlignedBox<double> b = block_box(g_, lo, hi);
+        std::array<Vec3<double>, 8> corners;
+        for (std::size_t m = 0; m < 8; ++m) {
+            corners[m] = corner(b, m);
+            if (!likely_inside(corners[m], c_)) return false;
+        }
+        for (const Vec3<double>& p : corners)
+            if (!inside(p, c_)) return false;
+        return true;
+    }
+
+    // Precondition: the block is non-empty and its box meets the cylinder.
+    void walk(const CellIndex& lo, const CellIndex& hi) {
+        // Halve the side that is longest in space (ties: the lower axis), so blocks stay compact.
+        std::size_t axis = 3;
+        double longest = 0;
+        for (std::size_t a = 0; a < 3; ++a) {
+            const std::int64_t n = hi[a] - lo[a];
+            if (n < 2) continue;
+            const double len = static_cast<double>(n) * g_.cell_size[a];
+            if (axis == 3 || len > longest) {
+                axis = a;
+                longest = len;
+            }
+        }
+        if (axis == 3) {  // a single cell, and it meets the cylinder
+            ++s_.cells;
+            f_(lo[0], lo[1], lo[2]);
+            return;
+        }
+        if (block_inside(lo, hi)) {
+            ++s_.blocks_inside;
+            for (std::int64_t i = lo[0]; i < hi[0]; ++i)
+                for (std::int64_t j = lo[1]; j < hi[1]; ++j)
+                    for (std::int64_t k = lo[2]; k < hi[2]; ++k) {
+                        ++s_.cells;
+                        f_(i, j, k);
+                    }
+            return;
+        }
+        const std::int64_t mid = lo[axis] + (hi[axis] - lo[axis]) / 2;
+        CellIndex lower_hi = hi;
+        lower_hi[axis] = mid;
+        CellIndex upper_lo = lo;
+        upper_lo[axis] = mid;
+        const bool lower = hits(lo, lower_hi);
+        if (lower) walk(lo, lower_hi);
+        // The halves tile the block, whose box meets the cylinder: if the lower misses, the upper meets it.
+        if (!lower || hits(upper_lo, hi)) walk(upper_lo, hi);
+    }
+
+    const Grid& g_;
+    const Cylinder<double>& c_;
+    F& f_;
+    GridStats& s_;
+};
+
+}  // namespace detail
+
+// Calls f(i, j, k) (std::int64_t each) once for every cell of `g` that the closed cylinder `c`
+// intersects, exactly (see the top of this file). Order: deterministic, depth-first over the
+// subdivision (a block's lower half before its upper half; a block inside the cylinder in
+// lexicographic order), not lexicographic overall — cells() sorts.
+// Preconditions: validate(g).ok() and validate(c).ok() (asserted in debug builds).
+template <class F>
+void for_each_cell(const Grid& g, const Cylinder<double>& c, F&& f, GridStats* stats = nullptr) {
+    assert(validate(g).ok() && "boxcyl::for_each_cell: invalid grid (see boxcyl::validate)");
+    assert(validate(c).ok() && "boxcyl::for_each_cell: invalid cylinder (see boxcyl::validate)");
+    GridStats local;
+    detail::GridWalk<std::remove_reference_t<F>> walk(g, c, f, stats ? *stats : local);
+    walk.run();
+}
+
+// The cells of for_each_cell, in lexicographic order of (i, j, k).
+inline std::vector<CellIndex> cells(const Grid& g, const Cylinder<double>& c, GridStats* stats = nullptr) {
+    std::vector<CellIndex> out;
+    for_each_cell(g, c, [&](std::int64_t i, std::int64_t j, std::int64_t k) { out.push_back({i, j, k}); }, stats);
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+#else
+
+// Without the exact backend the grid query is unavailable (it is exact, like the default query).
+template <class F>
+void for_each_cell(const Grid&, const Cylinder<double>&, F&&, GridStats* = nullptr) {
+    static_assert(detail::dependent_false<F>,
+                  "boxcyl::for_each_cell is exact and needs the exact backend: link boxcyl::exact (GMP)");
+}
+
+#endif  // BOXCYL_HAS_EXACT
+
+}  // namespace boxcyl
