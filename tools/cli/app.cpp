@@ -12,6 +12,8 @@
 #include <CLI/CLI.hpp>
 
 #include "boxcyl/version.hpp"
+#include "explain.hpp"
+#include "grid.hpp"
 #include "jsonl_query.hpp"
 #include "options.hpp"
 
@@ -124,6 +126,10 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
                           describe("Arithmetic (default " + std::string(default_arithmetic) + "):", arithmetic_choices))
         ->check(CLI::IsMember(names_of(arithmetic_choices)));
     intersect->add_option("file", file, "JSON Lines input; '-' or none: standard input");
+    ExplainCommand explain;
+    add_explain_command(app, explain);
+    GridCommand grid;
+    add_grid_command(app, grid);
 
     try {
         app.parse(argc, argv);
@@ -131,6 +137,9 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
         const int code = app.exit(e, out, err);
         return code == 0 ? exit_ok : exit_usage;
     }
+
+    if (explain.app->parsed()) return run_explain(explain, in, out, err);
+    if (grid.app->parsed()) return run_grid(grid, in, out, err);
 
     const RunOptions options = make_run_options(algorithm, arithmetic);
 #if !defined(BOXCYL_HAS_EXACT)

@@ -99,6 +99,12 @@ private:
     }
 
     bool open(json&& empty) {
+        // A query needs depth 4; the limit keeps a hostile line ("[[[[...") from costing ~100 bytes of
+        // DOM and stack per input byte.
+        if (stack_.size() >= max_depth) {
+            error_ = "invalid JSON: nested deeper than " + std::to_string(max_depth) + " levels";
+            return false;
+        }
         json* p = put(std::move(empty));
         stack_.push_back({p, {}});
         return true;
@@ -147,6 +153,8 @@ private:
         if (m.compare(0, line1.size(), line1) == 0) m.erase(0, line1.size());
         return m;
     }
+
+    static constexpr std::size_t max_depth = 256;
 
     json& root_;
     std::vector<Frame> stack_;
@@ -245,8 +253,9 @@ OrientedBox<U> round_shape(const OrientedBox<double>& b) {
 
 }  // namespace
 
-ParsedLine parse_line(std::string_view text, std::size_t line_number) {
-    ParsedLine r;
+ObjectLine parse_object_line(std::string_view text, std::size_t line_number,
+                             const std::function<std::string(const json&)>& read_fields) {
+    ObjectLine r;
     const std::string where = "line " + std::to_string(line_number) + ": ";
     if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
         r.error = where + "empty line";
@@ -281,26 +290,30 @@ ParsedLine parse_line(std::string_view text, std::size_t line_number) {
         r.error = where + "id: expected a string or a number";
         return r;
     }
+    if (std::string e = read_fields(root); !e.empty()) r.error = where + e;
+    return r;
+}
 
+std::string read_cylinder_field(const json& root, Cylinder<double>& out) { return read_cylinder(root, out); }
+
+std::string read_vec3_field(const json& obj, const char* key, const std::string& field, Vec3<double>& out) {
+    return read_vec3(obj, key, field, out);
+}
+
+ParsedLine parse_line(std::string_view text, std::size_t line_number) {
     Query q;
-    if (auto e = read_box(root, q.box); !e.empty()) {
-        r.error = where + e;
-        return r;
-    }
-    if (auto e = read_cylinder(root, q.cylinder); !e.empty()) {
-        r.error = where + e;
-        return r;
-    }
-    const Validity vb = std::visit([](const auto& b) { return validate(b); }, q.box);
-    if (!vb.ok()) {
-        r.error = where + vb.message();
-        return r;
-    }
-    if (const Validity vc = validate(q.cylinder); !vc.ok()) {
-        r.error = where + vc.message();
-        return r;
-    }
-    r.query = q;
+    const ObjectLine o = parse_object_line(text, line_number, [&q](const json& root) -> std::string {
+        if (auto e = read_box(root, q.box); !e.empty()) return e;
+        if (auto e = read_cylinder(root, q.cylinder); !e.empty()) return e;
+        const Validity vb = std::visit([](const auto& b) { return validate(b); }, q.box);
+        if (!vb.ok()) return vb.message();
+        if (const Validity vc = validate(q.cylinder); !vc.ok()) return vc.message();
+        return {};
+    });
+    ParsedLine r;
+    r.id = o.id;
+    r.error = o.error;
+    if (o.error.empty()) r.query = q;
     return r;
 }
 

@@ -5,11 +5,14 @@
 #pragma once
 
 #include <cstddef>      // std::size_t
+#include <functional>   // parse_object_line's field reader
 #include <iosfwd>       // std::istream, std::ostream
 #include <optional>     // a line may not yield a query
 #include <string>       // JSON text, messages
 #include <string_view>  // input lines
 #include <variant>      // aligned or oriented box
+
+#include <nlohmann/json_fwd.hpp>  // nlohmann::json, for the readers shared with other subcommands
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
@@ -35,6 +38,22 @@ struct ParsedLine {
 // Reads one line (without its newline; a trailing '\r' is JSON whitespace and harmless) as a query:
 // JSON syntax, structure, number range and boxcyl::validate(). `line_number` counts from 1.
 ParsedLine parse_line(std::string_view text, std::size_t line_number);
+
+// The JSON half of parse_line, for other subcommands (`boxcyl grid`): reads `text` as one JSON object
+// under the same rules and messages (empty line, syntax, numbers beyond the double range, duplicate
+// keys, the "id" echoed as written), then hands the object to `read_fields`, which returns "" or
+// "<field>: <reason>". `error` is "line N: <what>" when anything failed, else empty.
+struct ObjectLine {
+    std::string id;  // as ParsedLine::id
+    std::string error;
+};
+ObjectLine parse_object_line(std::string_view text, std::size_t line_number,
+                             const std::function<std::string(const nlohmann::json&)>& read_fields);
+
+// Readers for read_fields, as parse_line reads these fields: "" or "<field>: <reason>". They check
+// the structure only; validate() the result.
+std::string read_cylinder_field(const nlohmann::json& root, Cylinder<double>& out);  // root["cylinder"]
+std::string read_vec3_field(const nlohmann::json& obj, const char* key, const std::string& field, Vec3<double>& out);
 
 // A query that is valid in double may not survive rounding to float (overflow to ±Inf, an axis that
 // underflows to zero, ...). When `opt.rounds_to_float`, says which field breaks; otherwise ok().

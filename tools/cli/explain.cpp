@@ -1,0 +1,752 @@
+// See explain.hpp. Plain string building: the document is small and fully determined by the numbers,
+// so an XML library would add a dependency and nothing else. Every text goes through xml_escape; every
+// number through num() or px() (finite, no locale).
+#include "explain.hpp"
+
+#include <algorithm>  // std::min, std::max
+#include <array>      // view axes
+#include <cerrno>     // errno after a failed open
+#include <cmath>      // std::isfinite, std::cos, std::sin
+#include <cstdio>     // std::snprintf
+#include <cstring>    // std::strerror
+#include <filesystem> // refuse directories
+#include <fstream>    // input and output files
+#include <iostream>   // streams
+#include <iterator>   // std::istreambuf_iterator
+#include <numbers>    // std::numbers::pi
+#include <sstream>    // reading a whole stream
+#include <string>
+#include <variant>    // std::visit over the box kinds
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "app.hpp"
+#include "jsonl_query.hpp"
+
+namespace boxcyl::cli {
+
+namespace {
+
+using explain::Case;
+using explain::Explanation;
+using explain::Point2;
+
+// --- text and numbers -------------------------------------------------------------------------
+
+std::string xml_escape(const std::string& s) {
+    std::string r;
+    r.reserve(s.size());
+    for (char c : s) {
+        switch (c) {
+            case '&': r += "&amp;"; break;
+            case '<': r += "&lt;"; break;
+            case '>': r += "&gt;"; break;
+            case '"': r += "&quot;"; break;
+            case '\'': r += "&apos;"; break;
+            default: r += c;
+        }
+    }
+    return r;
+}
+
+// A value for people: `digits` significant digits (6 by default), "0" for ±0, a true minus sign.
+std::string num(double x, int digits = 6) {
+    if (x == 0) return "0";
+    if (!std::isfinite(x)) return x != x ? "NaN" : (x > 0 ? "∞" : "−∞");
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.*g", digits, std::fabs(x));
+    return (x < 0 ? "−" : "") + std::string(buf);
+}
+
+// The fewest digits (6 to 17) at which values that differ also print differently: a box one ulp
+// beyond an end plane must not read "1 … 1".
+int distinguishing_digits(std::initializer_list<double> values) {
+    for (int d = 6; d < 17; ++d) {
+        bool ok = true;
+        for (double a : values)
+            for (double b : values)
+                if (a != b && num(a, d) == num(b, d)) ok = false;
+        if (ok) return d;
+    }
+    return 17;
+}
+
+std::string vec(const Vec3<double>& v) { return "(" + num(v[0]) + ", " + num(v[1]) + ", " + num(v[2]) + ")"; }
+
+// A pixel coordinate: finite, bounded (far-away geometry is clipped anyway), 2 decimals.
+std::string px(double x) {
+    if (!std::isfinite(x)) x = 0;
+    x = std::clamp(x, -1e5, 1e5);
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2f", x);
+    return buf;
+}
+
+// --- 2-D mapping --------------------------------------------------------------------------------
+
+struct Rect {
+    double x, y, w, h;
+};
+
+// World (a, b) → pixels: uniform scale, b up, the world centre at the rectangle's centre.
+struct Mapping {
+    double ca = 0, cb = 0, scale = 1, px = 0, py = 0;
+    double x(double a) const { return px + scale * (a - ca); }
+    double y(double b) const { return py - scale * (b - cb); }
+};
+
+struct Extent {
+    double amin = 0, amax = 0, bmin = 0, bmax = 0;
+    bool any = false;
+    void add(double a, double b) {
+        if (!std::isfinite(a) || !std::isfinite(b)) return;
+        if (!any) {
+            amin = amax = a, bmin = bmax = b, any = true;
+            return;
+        }
+        amin = std::min(amin, a), amax = std::max(amax, a), bmin = std::min(bmin, b), bmax = std::max(bmax, b);
+    }
+    double width() const { return amax - amin; }
+    double height() const { return bmax - bmin; }
+};
+
+// Largest scale that fits `e` into `r` with a margin; a zero-size extent gets one unit.
+double fit_scale(const Extent& e, const Rect& r, double margin) {
+    const double w = e.width(), h = e.height();
+    double s = 0;
+    if (w > 0) s = (r.w - 2 * margin) / w;
+    if (h > 0) s = s > 0 ? std::min(s, (r.h - 2 * margin) / h) : (r.h - 2 * margin) / h;
+    if (!(s > 0) || !std::isfinite(s)) s = (std::min(r.w, r.h) - 2 * margin) / 2;
+    return s;
+}
+
+Mapping centred(const Extent& e, const Rect& r, double scale) {
+    return {(e.amin + e.amax) / 2, (e.bmin + e.bmax) / 2, scale, r.x + r.w / 2, r.y + r.h / 2};
+}
+
+// --- SVG building -------------------------------------------------------------------------------
+
+class Svg {
+public:
+    std::string s;
+
+    Svg& raw(const std::string& t) {
+        s += t;
+        return *this;
+    }
+    void text(double x, double y, const std::string& t, const std::string& attrs = "") {
+        s += "<text x=\"" + px(x) + "\" y=\"" + px(y) + "\"" + (attrs.empty() ? "" : " " + attrs) + ">" +
+             xml_escape(t) + "</text>\n";
+    }
+    void line(double x1, double y1, double x2, double y2, const std::string& attrs) {
+        s += "<line x1=\"" + px(x1) + "\" y1=\"" + px(y1) + "\" x2=\"" + px(x2) + "\" y2=\"" + px(y2) + "\" " + attrs +
+             "/>\n";
+    }
+    void rect(const Rect& r, const std::string& attrs) {
+        s += "<rect x=\"" + px(r.x) + "\" y=\"" + px(r.y) + "\" width=\"" + px(r.w) + "\" height=\"" + px(r.h) + "\" " +
+             attrs + "/>\n";
+    }
+    void circle(double cx, double cy, double r, const std::string& attrs) {
+        s += "<circle cx=\"" + px(cx) + "\" cy=\"" + px(cy) + "\" r=\"" + px(r) + "\" " + attrs + "/>\n";
+    }
+    // A closed polygon (3+ points), else a polyline (2 points) or a dot (1 point), so that degenerate
+    // shapes stay visible.
+    void shape(const std::vector<std::pair<double, double>>& pts, const std::string& attrs) {
+        if (pts.empty()) return;
+        if (pts.size() == 1) {
+            circle(pts[0].first, pts[0].second, 3, attrs);
+            return;
+        }
+        std::string p;
+        for (const auto& [x, y] : pts) p += px(x) + "," + px(y) + " ";
+        p.pop_back();
+        s += std::string(pts.size() == 2 ? "<polyline" : "<polygon") + " points=\"" + p + "\" " + attrs + "/>\n";
+    }
+};
+
+// Colours: blue for the box (∩ slab), orange for the cylinder, red for the gap, grey for context.
+constexpr const char* blue_fill = "#7fb2e5";
+constexpr const char* blue_line = "#1f5fa8";
+constexpr const char* orange_fill = "#f8c987";
+constexpr const char* orange_line = "#c77800";
+constexpr const char* red = "#d0021b";
+constexpr const char* grey = "#8a8a8a";
+constexpr const char* text_dark = "#222";
+
+const char* verdict_colour(const Explanation& e) {
+    if (e.what == Case::touching_within_rounding) return "#9a5b00";
+    return e.exact_intersects ? "#1a7f37" : "#c62828";
+}
+
+std::string verdict_title(const Explanation& e) {
+    std::string t = e.exact_intersects ? "Intersects" : "Does not intersect";
+    if (e.what == Case::touching) t += " (touching)";
+    if (e.what == Case::touching_end_plane) t += " (touching an end)";
+    if (e.what == Case::touching_within_rounding) t += " (touching within rounding)";
+    return t;
+}
+
+// The sentences under the title: what the picture shows, in the picture's words.
+std::vector<std::string> verdict_lines(const Explanation& e) {
+    const std::string d = num(e.distance), r = num(e.radius);
+    switch (e.what) {
+        case Case::axis_through:
+            return {"The cylinder's axis passes through the blue polygon (distance 0 ≤ radius " + r + "),",
+                    "so the axis itself meets the box between the end planes."};
+        case Case::overlap:
+            return {"The blue polygon comes within " + d + " of the axis, inside the orange disk of radius " + r +
+                        ":",
+                    "overlap " + num(-e.gap()) + " (radius − distance)."};
+        case Case::touching:
+            return {"The blue polygon touches the orange disk: distance = radius = " + r + ".",
+                    "Both solids are closed, so touching counts as intersecting."};
+        case Case::touching_end_plane:
+            return {"The box only touches one of the cylinder's end planes (see 'along the axis'), and there",
+                    "the blue polygon reaches the disk (distance " + d + " ≤ radius " + r +
+                        "). Touching counts as intersecting."};
+        case Case::touching_within_rounding:
+            // Which boundary is within rounding: an end plane (along the axis) or the side (in the plane).
+            if (e.slab_empty || std::fabs(e.axial_gap()) < std::fabs(e.gap()))
+                return {std::string(e.exact_intersects ? "Exact answer: they meet." : "Exact answer: they do not meet.") +
+                            " The box is within rounding of an end plane of the cylinder: this picture,",
+                        "drawn in double precision, puts it " +
+                            std::string(e.slab_empty ? "just beyond" : "just inside") +
+                            " (see 'along the axis'), which double precision cannot tell apart."};
+            if (e.exact_intersects)
+                return {"Exact answer: they touch or overlap. This picture is drawn in double precision and shows a gap of " +
+                            num(e.gap()) + ",",
+                        "which is rounding error: the solids are closer than double precision can draw."};
+            return {"Exact answer: they do not meet. This picture is drawn in double precision and shows " +
+                        std::string(e.gap() < 0 ? "an overlap of " + num(-e.gap()) : "them touching") + ",",
+                    "but the true gap is smaller than double precision can draw."};
+        case Case::gap:
+            return {"The blue polygon stays " + d + " from the axis, outside the orange disk of radius " + r + ":",
+                    "gap " + num(e.gap()) + " (distance − radius)."};
+        case Case::outside_slab: {
+            const bool above = e.box_axial_min > e.half_height;
+            return {"No part of the box lies between the cylinder's end planes: the whole box is " +
+                        std::string(above ? "beyond the +axis end" : "beyond the −axis end") + " (see 'along the axis').",
+                    "So there is no blue polygon; the end-plane test (§1.6 slab cull) alone decides."};
+        }
+        case Case::not_drawable:
+            return {"The coordinates are too large to draw in double precision (they overflow);",
+                    "the verdict above is still the exact answer."};
+    }
+    return {};
+}
+
+// Frame and caption of a panel.
+void panel(Svg& svg, const Rect& r, const std::string& caption) {
+    svg.rect(r, "fill=\"#fbfbfd\" stroke=\"#c8c8d0\"");
+    svg.text(r.x + 8, r.y + 18, caption, "font-size=\"13\" font-weight=\"bold\" fill=\"#444\"");
+}
+
+// A clip path for a panel, so far-away geometry stays inside it.
+std::string clip_def(const std::string& id, const Rect& r) {
+    return "<clipPath id=\"" + id + "\"><rect x=\"" + px(r.x) + "\" y=\"" + px(r.y) + "\" width=\"" + px(r.w) +
+           "\" height=\"" + px(r.h) + "\"/></clipPath>\n";
+}
+
+// --- the main panel: the plane ⊥ axis -------------------------------------------------------------
+
+constexpr double main_caption = 46;  // the caption and note band; the drawing is clipped below it
+
+// Approximate rendered width of a text (sans-serif averages ~0.6 em per character; bold a bit more).
+double text_width(const std::string& t, double size, bool bold) {
+    double chars = 0;
+    for (unsigned char c : t)
+        if ((c & 0xC0) != 0x80) chars += 1;  // count UTF-8 code points, not bytes
+    return chars * size * (bold ? 0.64 : 0.58);
+}
+
+// A label at (x, y) anchored "start", "middle" or "end", moved to stay inside [lo, hi] horizontally.
+void label(Svg& svg, double x, double y, const std::string& t, const std::string& anchor, double size, bool bold,
+           const std::string& fill, double lo, double hi) {
+    const double w = text_width(t, size, bold);
+    double left = anchor == "start" ? x : anchor == "end" ? x - w : x - w / 2;
+    left = std::max(lo, std::min(left, hi - w));
+    // A white halo keeps labels legible over the filled shapes.
+    svg.text(left, y, t, "font-size=\"" + px(size) + "\"" + (bold ? " font-weight=\"bold\"" : "") + " fill=\"" + fill +
+                             "\" stroke=\"#fff\" stroke-width=\"3\" stroke-linejoin=\"round\" paint-order=\"stroke\"");
+}
+
+void main_panel(Svg& svg, const Explanation& e, const Rect& r) {
+    panel(svg, r, "Looking along the cylinder's axis (the plane ⊥ axis through its centre)");
+    svg.raw("<g clip-path=\"url(#clip-main)\">\n");
+
+    // Fit what matters: the polygon, the disk, the axis point (the whole box may be far larger).
+    Extent ext;
+    ext.add(-e.radius, -e.radius), ext.add(e.radius, e.radius), ext.add(0, 0);
+    for (const Point2& p : e.polygon) ext.add(p.x, p.y);
+    if (ext.width() == 0 && ext.height() == 0)
+        for (const Point2& p : e.box_shadow) ext.add(p.x, p.y);
+    // Square extent so that the picture sits centred.
+    const double half = std::max(ext.width(), ext.height()) / 2;
+    const double ca = (ext.amin + ext.amax) / 2, cb = (ext.bmin + ext.bmax) / 2;
+    ext = {ca - half, ca + half, cb - half, cb + half, true};
+    const Rect inner{r.x, r.y + main_caption, r.w, r.h - main_caption - 40};
+    const Mapping m = centred(ext, inner, fit_scale(ext, inner, 70));
+
+    auto pts = [&](const std::vector<Point2>& poly) {
+        std::vector<std::pair<double, double>> out;
+        out.reserve(poly.size());
+        for (const Point2& p : poly) out.emplace_back(m.x(p.x), m.y(p.y));
+        return out;
+    };
+    const std::string dashed = "stroke=\"" + std::string(grey) + "\" stroke-width=\"1\" stroke-dasharray=\"5,4\"";
+
+    // Layers: the whole box's shadow (context), the polygon, the disk over it (translucent, so the
+    // overlap shows), then both outlines again so that neither hides the other.
+    svg.raw("<g id=\"box-shadow\">\n");
+    svg.shape(pts(e.box_shadow), "fill=\"#ececec\" " + dashed);
+    svg.raw("</g>\n");
+    const std::string poly_fill = "fill=\"" + std::string(blue_fill) + "\" stroke=\"none\"";
+    const std::string poly_line = "fill=\"none\" stroke=\"" + std::string(blue_line) + "\" stroke-width=\"2\" stroke-linejoin=\"round\"";
+    const double rpx = e.radius * m.scale;
+    const std::string disk_line = "fill=\"none\" stroke=\"" + std::string(orange_line) + "\" stroke-width=\"2\"";
+    if (!e.polygon.empty()) {
+        svg.raw("<g id=\"polygon\">\n");
+        svg.shape(pts(e.polygon), poly_fill);
+        svg.shape(pts(e.polygon), poly_line);
+        for (const Point2& p : e.polygon) svg.circle(m.x(p.x), m.y(p.y), 3, "fill=\"" + std::string(blue_line) + "\"");
+        svg.raw("</g>\n");
+    }
+    svg.raw("<g id=\"disk\">\n");
+    svg.circle(m.x(0), m.y(0), rpx, "fill=\"" + std::string(orange_fill) + "\" fill-opacity=\"0.85\" stroke=\"none\"");
+    svg.circle(m.x(0), m.y(0), rpx, disk_line);
+    svg.raw("</g>\n");
+    if (!e.polygon.empty()) svg.shape(pts(e.polygon), poly_line);
+    svg.shape(pts(e.box_shadow), "fill=\"none\" " + dashed);
+
+    // Screen direction from the axis towards the closest point (to the right when there is none),
+    // and its perpendicular; labels go beside lines, never on them.
+    double dx = 1, dy = 0;
+    if (e.distance > 0) dx = e.closest.x / e.distance, dy = e.closest.y / e.distance;
+    const double sx = dx, sy = -dy;  // screen y points down
+    const double nx = -sy, ny = sx;  // perpendicular
+    auto anchor = [](double x) { return std::string(x > 0.35 ? "start" : x < -0.35 ? "end" : "middle"); };
+    const double lo = r.x + 6, hi = r.x + r.w - 6;
+
+    // Radius: drawn away from the gap; its label just beyond the rim.
+    if (e.radius > 0) {
+        const double ex = m.x(0) - sx * rpx, ey = m.y(0) - sy * rpx;
+        svg.line(m.x(0), m.y(0), ex, ey, "stroke=\"" + std::string(orange_line) + "\" stroke-width=\"1.5\"");
+        label(svg, ex - sx * 8, ey - sy * 8 + 5, "radius " + num(e.radius), anchor(-sx), 13, true, orange_line, lo, hi);
+    }
+
+    svg.raw("<g id=\"axis-point\">\n");
+    svg.line(m.x(0) - 7, m.y(0), m.x(0) + 7, m.y(0), "stroke=\"#000\" stroke-width=\"1.5\"");
+    svg.line(m.x(0), m.y(0) - 7, m.x(0), m.y(0) + 7, "stroke=\"#000\" stroke-width=\"1.5\"");
+    if (e.distance > 0 || e.polygon.empty())
+        label(svg, m.x(0) - 16 * nx, m.y(0) - 16 * ny + 5, "axis", anchor(-nx), 13, false, "#000", lo, hi);
+    else
+        label(svg, m.x(0) + 10, m.y(0) + 22, "axis (distance 0)", "start", 13, true, red, lo, hi);
+    svg.raw("</g>\n");
+
+    if (!e.polygon.empty()) {
+        const double cx = m.x(e.closest.x), cy = m.y(e.closest.y);
+        // Gap (or overlap) on the ray from the axis through the closest point, between the disk's rim
+        // and the polygon.
+        svg.raw("<g id=\"gap\">\n");
+        if (e.distance > 0) {
+            const double bx = m.x(0) + sx * rpx, by = m.y(0) + sy * rpx;
+            svg.line(bx, by, cx, cy, "stroke=\"" + std::string(red) + "\" stroke-width=\"3\"");
+            const std::string what = e.gap() > 0   ? "gap " + num(e.gap())
+                                     : e.gap() < 0 ? "overlap " + num(-e.gap())
+                                                   : "gap 0";
+            label(svg, (bx + cx) / 2 - 16 * nx, (by + cy) / 2 - 16 * ny + 5, what, anchor(-nx), 15, true, red, lo, hi);
+        }
+        svg.raw("</g>\n");
+
+        svg.raw("<g id=\"closest\">\n");
+        svg.circle(cx, cy, 5.5, "fill=\"" + std::string(red) + "\" stroke=\"#fff\" stroke-width=\"1.5\"");
+        if (e.distance > 0)  // at distance 0 the point is the axis point, and the title says so
+            label(svg, cx + 12 * sx + 16 * nx, cy + 12 * sy + 16 * ny + 5, "closest point, distance " + num(e.distance),
+                  anchor(sx), 13, false, red, lo, hi);
+        svg.raw("</g>\n");
+    }
+    svg.raw("</g>\n");
+
+    // Notes under the caption for the degenerate pictures.
+    std::string note;
+    if (!e.drawable) note = "Not drawable: the coordinates overflow double precision.";
+    else if (e.polygon.empty()) note = "box ∩ slab is empty: no polygon (the box is beyond an end plane).";
+    else if (e.polygon.size() == 1) note = "Seen along the axis, box ∩ slab is a single point.";
+    else if (e.polygon.size() == 2) note = "Seen along the axis, box ∩ slab is a segment.";
+    if (!note.empty()) svg.text(r.x + 8, r.y + 38, note, "font-size=\"13\" font-weight=\"bold\" fill=\"#c62828\"");
+
+    // The plane's frame in world coordinates, to relate this view to the 3-D ones; the axis points at
+    // the viewer (⊙).
+    const double ox = r.x + 22, oy = r.y + r.h - 22;
+    svg.line(ox, oy, ox + 36, oy, "stroke=\"#555\" stroke-width=\"1.5\" marker-end=\"url(#arrow)\"");
+    svg.line(ox, oy, ox, oy - 36, "stroke=\"#555\" stroke-width=\"1.5\" marker-end=\"url(#arrow)\"");
+    svg.circle(ox, oy, 5, "fill=\"#fff\" stroke=\"#555\" stroke-width=\"1.2\"");
+    svg.circle(ox, oy, 1.5, "fill=\"#555\"");
+    svg.text(ox + 44, oy + 4, "e1 = " + vec(e.e1), "font-size=\"11\" fill=\"#555\"");
+    svg.text(ox + 6, oy - 42, "e2 = " + vec(e.e2), "font-size=\"11\" fill=\"#555\"");
+    svg.text(ox + 12, oy - 10, "axis u = " + vec(e.direction) + ", towards you", "font-size=\"11\" fill=\"#555\"");
+}
+
+// --- the axial strip: the slab and the box along the axis -----------------------------------------
+
+void axial_strip(Svg& svg, const Explanation& e, const Rect& r) {
+    svg.raw("<g id=\"axial\">\n");
+    panel(svg, r, "Along the axis (position t = u·(X − C), C the cylinder's centre)");
+    if (!e.drawable) {
+        svg.text(r.x + 10, r.y + 50, "not drawable: the positions overflow double precision", "font-size=\"12\" fill=\"#c62828\"");
+        svg.raw("</g>\n");
+        return;
+    }
+    const double lo = std::min(-e.half_height, e.box_axial_min), hi = std::max(e.half_height, e.box_axial_max);
+    const double span = hi > lo ? hi - lo : 1;
+    const double x0 = r.x + 170, x1 = r.x + r.w - 120;
+    auto X = [&](double t) { return x0 + (x1 - x0) * (t - lo) / span - (hi > lo ? 0 : (x1 - x0) / 2); };
+    const double y1 = r.y + 36, y2 = r.y + 62;
+    const int digits = distinguishing_digits({-e.half_height, e.half_height, e.box_axial_min, e.box_axial_max});
+    auto band = [&](double a, double b, double y, const char* fill, const char* stroke, const std::string& name) {
+        double xa = X(a), xb = X(b);
+        if (xb - xa < 3) xa -= 1.5, xb += 1.5;  // a point stays visible
+        svg.rect({xa, y - 8, xb - xa, 16}, "fill=\"" + std::string(fill) + "\" stroke=\"" + stroke + "\"");
+        svg.text(r.x + 10, y + 5, name, "font-size=\"12\" fill=\"" + std::string(text_dark) + "\"");
+        if (a != b) svg.text(xa - 4, y + 5, num(a, digits), "font-size=\"11\" fill=\"#555\" text-anchor=\"end\"");
+        svg.text(xb + 4, y + 5, num(b, digits), "font-size=\"11\" fill=\"#555\"");
+    };
+    band(-e.half_height, e.half_height, y1, orange_fill, orange_line, "cylinder (slab)");
+    band(e.box_axial_min, e.box_axial_max, y2, blue_fill, blue_line, "box");
+    svg.raw("</g>\n");
+}
+
+// --- the orthographic views ---------------------------------------------------------------------
+
+struct View {
+    const char* id;
+    const char* caption;
+    int a, b;  // the world coordinates drawn right and up
+};
+
+constexpr std::array<View, 3> views{{
+    {"view-top", "Top view (x →, y ↑)", 0, 1},
+    {"view-front", "Front view (x →, z ↑)", 0, 2},
+    {"view-side", "Side view (y →, z ↑)", 1, 2},
+}};
+
+// Points of the cylinder's two end circles (the outline of its projection is their convex hull).
+// Points of the circle of the cylinder at axial position t.
+std::vector<Vec3<double>> rim_points(const Explanation& e, double t, int n) {
+    std::vector<Vec3<double>> p;
+    const Vec3<double> c = e.center + t * e.direction;
+    for (int i = 0; i < n; ++i) {
+        const double a = 2 * std::numbers::pi * i / n;
+        p.push_back(c + (e.radius * std::cos(a)) * e.e1 + (e.radius * std::sin(a)) * e.e2);
+    }
+    return p;
+}
+
+void ortho_views(Svg& svg, const Explanation& e, const std::array<Rect, 3>& rects) {
+    const int n = 72;
+    const double hh = e.half_height;
+    const std::vector<Vec3<double>> top = rim_points(e, hh, n), bottom = rim_points(e, -hh, n);
+
+    // Framing: the box and the part of the cylinder near it along the axis, so that a long cylinder
+    // does not shrink the box to a dot (the rest of it runs out of the clipped view). The part is the
+    // box's axial range widened by about its size, within the cylinder; or the cylinder's end nearest
+    // the box when the two ranges are apart.
+    double size = 2 * e.radius;
+    for (const auto& v : e.box_vertices)
+        for (int i = 0; i < 3; ++i) size = std::max(size, std::fabs(v[i] - e.box_vertices[0][i]));
+    double ta = std::max(-hh, e.box_axial_min - size), tb = std::min(hh, e.box_axial_max + size);
+    if (ta > tb) {
+        const double reach = std::min(2 * hh, size);
+        if (e.box_axial_min > hh) ta = hh - reach, tb = hh;
+        else ta = -hh, tb = -hh + reach;
+    }
+    const std::vector<Vec3<double>> near_a = rim_points(e, ta, n), near_b = rim_points(e, tb, n);
+
+    // One scale for the three views, so sizes compare across them.
+    double scale = 0;
+    std::array<Extent, 3> ext;
+    for (std::size_t k = 0; k < views.size(); ++k) {
+        const View& v = views[k];
+        for (const auto& p : e.box_vertices) ext[k].add(p[v.a], p[v.b]);
+        for (const auto* rim : {&near_a, &near_b})
+            for (const auto& p : *rim) ext[k].add(p[v.a], p[v.b]);
+        const Rect inner{rects[k].x, rects[k].y + 22, rects[k].w, rects[k].h - 22};
+        const double s = fit_scale(ext[k], inner, 14);
+        scale = k == 0 ? s : std::min(scale, s);
+    }
+
+    for (std::size_t k = 0; k < views.size(); ++k) {
+        const View& v = views[k];
+        const Rect& r = rects[k];
+        svg.raw("<g id=\"" + std::string(v.id) + "\">\n");
+        panel(svg, r, v.caption);
+        svg.raw("<clipPath id=\"clip-" + std::string(v.id) + "\"><rect x=\"" + px(r.x) + "\" y=\"" + px(r.y + 22) +
+                "\" width=\"" + px(r.w) + "\" height=\"" + px(r.h - 22) + "\"/></clipPath>\n<g clip-path=\"url(#clip-" +
+                v.id + ")\">\n");
+        const Rect inner{r.x, r.y + 22, r.w, r.h - 22};
+        const Mapping m = centred(ext[k], inner, scale);
+        auto to2 = [&](const Vec3<double>& p) { return std::pair<double, double>{m.x(p[v.a]), m.y(p[v.b])}; };
+        auto hull_of = [&](const std::vector<Vec3<double>>& pts) {
+            std::vector<Point2> q;
+            q.reserve(pts.size());
+            for (const auto& p : pts) q.push_back({p[v.a], p[v.b]});
+            std::vector<std::pair<double, double>> out;
+            for (const Point2& h : algo::hull2d::monotone_chain(std::move(q))) out.emplace_back(m.x(h.x), m.y(h.y));
+            return out;
+        };
+
+        // Box ∩ slab first, the cylinder translucent over it (so neither hides the other), then the
+        // cylinder's rims and axis and the box's edges and vertices (a point box stays visible).
+        if (!e.section.empty())
+            svg.shape(hull_of(e.section), "fill=\"" + std::string(blue_fill) + "\" stroke=\"none\"");
+        std::vector<Vec3<double>> both = top;
+        both.insert(both.end(), bottom.begin(), bottom.end());
+        svg.shape(hull_of(both), "fill=\"" + std::string(orange_fill) + "\" fill-opacity=\"0.85\" stroke=\"" +
+                                     orange_line + "\" stroke-width=\"1.2\"");
+        for (const auto* rim : {&top, &bottom}) {
+            std::string p;
+            for (const auto& q : *rim) p += px(to2(q).first) + "," + px(to2(q).second) + " ";
+            p.pop_back();
+            svg.raw("<polygon points=\"" + p + "\" fill=\"none\" stroke=\"" + orange_line +
+                    "\" stroke-width=\"0.8\" stroke-opacity=\"0.7\"/>\n");
+        }
+        for (const auto& [a, b] : explain::box_edges) {
+            const auto pa = to2(e.box_vertices[a]), pb = to2(e.box_vertices[b]);
+            svg.line(pa.first, pa.second, pb.first, pb.second,
+                     "stroke=\"" + std::string(blue_line) + "\" stroke-width=\"1.2\"");
+        }
+        for (const auto& v : e.box_vertices) {
+            const auto p = to2(v);
+            svg.circle(p.first, p.second, 1.8, "fill=\"" + std::string(blue_line) + "\"");
+        }
+        const auto c0 = to2(e.center + (-e.half_height) * e.direction), c1 = to2(e.center + e.half_height * e.direction);
+        svg.line(c0.first, c0.second, c1.first, c1.second, "stroke=\"#000\" stroke-width=\"1\" stroke-dasharray=\"4,3\"");
+        const auto cc = to2(e.center);
+        svg.circle(cc.first, cc.second, 2, "fill=\"#000\"");
+        svg.raw("</g>\n</g>\n");
+    }
+}
+
+// --- legend -------------------------------------------------------------------------------------
+
+void legend(Svg& svg, const Rect& r) {
+    svg.raw("<g id=\"legend\">\n");
+    panel(svg, r, "Legend");
+    double y = r.y + 40;
+    const double x = r.x + 12, tx = r.x + 44;
+    auto entry = [&](const std::string& swatch, std::initializer_list<const char*> lines) {
+        svg.raw(swatch);
+        double ly = y;
+        for (const char* l : lines) {
+            svg.text(tx, ly, l, "font-size=\"12\" fill=\"" + std::string(text_dark) + "\"");
+            ly += 15;
+        }
+        y = ly + 7;
+    };
+    auto sq = [&](const char* fill, const char* stroke, const char* extra = "") {
+        return "<rect x=\"" + px(x) + "\" y=\"" + px(y - 11) + "\" width=\"24\" height=\"14\" fill=\"" + fill +
+               "\" stroke=\"" + stroke + "\" " + extra + "/>\n";
+    };
+    entry(sq(blue_fill, blue_line), {"box ∩ slab: the part of the box between the", "cylinder's two end planes (main view: its shadow)"});
+    entry(sq(orange_fill, orange_line), {"cylinder (main view: seen end-on, the disk of", "its radius; views: outline, end circles, axis)"});
+    entry(sq("#eeeeee", grey, "stroke-dasharray=\"4,3\""), {"the whole box's shadow, for context"});
+    entry("<circle cx=\"" + px(x + 12) + "\" cy=\"" + px(y - 4) + "\" r=\"5\" fill=\"" + red + "\"/>\n",
+          {"closest point of the polygon to the axis"});
+    entry("<line x1=\"" + px(x) + "\" y1=\"" + px(y - 4) + "\" x2=\"" + px(x + 24) + "\" y2=\"" + px(y - 4) +
+              "\" stroke=\"" + red + "\" stroke-width=\"3\"/>\n",
+          {"gap = distance − radius (overlap when < 0)"});
+    svg.raw("</g>\n");
+}
+
+// The query's numbers (6 digits; the JSON has them all), one line per part so that lines fit.
+std::vector<std::string> input_lines(const Query& q) {
+    std::vector<std::string> lines;
+    if (const auto* a = std::get_if<AlignedBox<double>>(&q.box)) {
+        lines.push_back("box (aligned): min " + vec(a->min) + ", max " + vec(a->max));
+    } else {
+        const auto& o = std::get<OrientedBox<double>>(q.box);
+        lines.push_back("box (oriented): centre " + vec(o.center) + ", extents " + vec(o.extents));
+        lines.push_back("    axes " + vec(o.axes[0]) + ", " + vec(o.axes[1]) + ", " + vec(o.axes[2]));
+    }
+    const Cylinder<double>& c = q.cylinder;
+    lines.push_back("cylinder: centre " + vec(c.center) + ", axis " + vec(c.axis) + ", radius " + num(c.radius) +
+                    ", height " + num(c.height));
+    return lines;
+}
+
+std::string render(const Explanation& e, const std::string& label, const std::vector<std::string>& inputs) {
+    const double W = 1040, H = 950;
+    Svg svg;
+    svg.raw("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    svg.raw("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + px(W) + "\" height=\"" + px(H) + "\" viewBox=\"0 0 " +
+            px(W) + " " + px(H) + "\" font-family=\"DejaVu Sans, Verdana, sans-serif\">\n");
+    const std::string title = "boxcyl explain" + (label.empty() ? "" : ": query " + label) + ": " + verdict_title(e);
+    svg.raw("<title>" + xml_escape(title) + "</title>\n");
+
+    const Rect main_r{24, 146, 600, 600}, axial_r{24, 756, 600, 80}, legend_r{650, 756, 366, 180};
+    const std::array<Rect, 3> view_r{{{650, 146, 366, 192}, {650, 350, 366, 192}, {650, 554, 366, 192}}};
+    svg.raw("<defs>\n<marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" "
+            "markerHeight=\"7\" orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#555\"/></marker>\n" +
+            clip_def("clip-main", {main_r.x, main_r.y + main_caption, main_r.w, main_r.h - main_caption}) + "</defs>\n");
+    svg.rect({0, 0, W, H}, "fill=\"#fff\"");
+
+    // Title block: the verdict (exact), what the picture shows, the inputs.
+    svg.raw("<g id=\"verdict\">\n");
+    svg.text(24, 44, verdict_title(e), "font-size=\"30\" font-weight=\"bold\" fill=\"" + std::string(verdict_colour(e)) + "\"");
+    svg.text(W - 24, 44, label.empty() ? "" : "query " + label, "font-size=\"15\" fill=\"#555\" text-anchor=\"end\"");
+    double y = 70;
+    for (const std::string& l : verdict_lines(e)) {
+        svg.text(24, y, l, "font-size=\"14\" fill=\"" + std::string(text_dark) + "\"");
+        y += 18;
+    }
+    y = 106;
+    for (const std::string& l : inputs) {
+        svg.text(24, y, l, "font-size=\"11\" fill=\"#666\"");
+        y += 13;
+    }
+    svg.raw("</g>\n");
+
+    main_panel(svg, e, main_r);
+    axial_strip(svg, e, axial_r);
+    ortho_views(svg, e, view_r);
+    legend(svg, legend_r);
+
+    // For a newcomer: how to read the main panel, and where the verdict comes from.
+    double ty = 858;
+    for (const char* l : {
+             "How to read this: seen along its axis, the cylinder is a disk. Only the part of the",
+             "box between the cylinder's two end planes (the slab) can touch it; seen the same way,",
+             "that part is the blue polygon. They intersect exactly when the polygon reaches the disk.",
+             "The verdict is the exact answer of boxcyl::intersects; the drawing is in double precision.",
+         }) {
+        svg.text(24, ty, l, "font-size=\"12\" fill=\"#444\"");
+        ty += 16;
+    }
+    svg.raw("</svg>\n");
+    return svg.s;
+}
+
+std::string read_all(std::istream& in) {
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// More than one line with something on it (a JSON Lines file given without --line, most likely).
+bool several_lines(const std::string& text) {
+    std::istringstream lines(text);
+    std::string l;
+    int n = 0;
+    while (std::getline(lines, l))
+        if (l.find_first_not_of(" \t\r") != std::string::npos) ++n;
+    return n > 1;
+}
+
+}  // namespace
+
+std::string render_svg(const Explanation& e, const std::string& label, const std::vector<std::string>& inputs) {
+    return render(e, label, inputs);
+}
+
+void add_explain_command(CLI::App& app, ExplainCommand& cmd) {
+    cmd.app = app.add_subcommand(
+        "explain", "Draw one query as an SVG picture: the view along the cylinder's axis, the verdict, 3-D views");
+    cmd.app->add_option("file", cmd.file,
+                        "One query (a JSON object as `intersect` reads, may span lines); '-' or none: standard input");
+    cmd.app->add_option("-o,--output", cmd.output, "Write the SVG to this file (default: standard output)");
+    cmd.app->add_option("--line", cmd.line, "Take the query on line N (from 1) of a JSON Lines input")
+        ->check(CLI::PositiveNumber);
+    cmd.app->footer(
+        "EXAMPLE\n"
+        "  boxcyl explain --line 4 examples/queries.jsonl -o gap.svg\n"
+        "  echo '{\"box\":{\"min\":[0,0,0],\"max\":[1,1,1]},\"cylinder\":{\"center\":[2,0.5,0.5],\"axis\":[0,0,1],"
+        "\"radius\":1,\"height\":1}}' | boxcyl explain > picture.svg\n\n"
+        "The verdict is the exact answer (as `boxcyl intersect` gives by default); the drawing is in double\n"
+        "precision and says so when the two differ (inputs within rounding of touching).\n\n"
+        "EXIT STATUS\n"
+        "  0  the picture was written\n"
+        "  1  the query is bad (the message `intersect` would give, on standard error)\n"
+        "  2  usage error: unknown option, unreadable input, unwritable output\n");
+}
+
+int run_explain(const ExplainCommand& cmd, std::istream& in, std::ostream& out, std::ostream& err) {
+#if !defined(BOXCYL_HAS_EXACT)
+    (void)cmd, (void)in, (void)out;
+    err << "boxcyl: explain needs the exact backend (GMP) for its verdict; this build has none\n";
+    return exit_usage;
+#else
+    std::string text;
+    if (cmd.file == "-") {
+        text = read_all(in);
+        if (in.bad()) {
+            err << "boxcyl: cannot read standard input\n";
+            return exit_usage;
+        }
+    } else {
+        std::error_code ec;
+        if (std::filesystem::is_directory(cmd.file, ec)) {
+            err << "boxcyl: cannot read '" << cmd.file << "': is a directory\n";
+            return exit_usage;
+        }
+        std::ifstream f(cmd.file, std::ios::binary);
+        if (!f) {
+            err << "boxcyl: cannot open '" << cmd.file << "': " << std::strerror(errno) << "\n";
+            return exit_usage;
+        }
+        text = read_all(f);
+    }
+
+    // The query text and the line number its messages name.
+    std::string query_text = text;
+    std::size_t line_number = 1;
+    if (cmd.line > 0) {
+        std::istringstream lines(text);
+        std::string l;
+        std::size_t n = 0;
+        bool found = false;
+        while (std::getline(lines, l))
+            if (++n == cmd.line) {
+                found = true;
+                break;
+            }
+        if (!found) {
+            err << "boxcyl: line " << cmd.line << ": no such line (the input has " << n << ")\n";
+            return exit_bad_lines;
+        }
+        query_text = l;
+        line_number = cmd.line;
+    }
+
+    const ParsedLine p = parse_line(query_text, line_number);
+    if (!p.query) {
+        err << "boxcyl: " << p.error << "\n";
+        if (cmd.line == 0 && several_lines(query_text))
+            err << "boxcyl: (the input spans several lines; for a JSON Lines file choose one query with --line N)\n";
+        return exit_bad_lines;
+    }
+    const Query& q = *p.query;
+    const Explanation e = std::visit([&](const auto& box) { return explain::compute(box, q.cylinder); }, q.box);
+    const std::string svg = render(e, p.id, input_lines(q));
+
+    if (cmd.output.empty()) {
+        out << svg;
+        out.flush();
+        return out ? exit_ok : exit_usage;
+    }
+    std::ofstream f(cmd.output, std::ios::binary | std::ios::trunc);
+    if (!f) {
+        err << "boxcyl: cannot write '" << cmd.output << "': " << std::strerror(errno) << "\n";
+        return exit_usage;
+    }
+    f << svg;
+    f.close();
+    if (!f) {
+        err << "boxcyl: cannot write '" << cmd.output << "'\n";
+        return exit_usage;
+    }
+    return exit_ok;
+#endif
+}
+
+}  // namespace boxcyl::cli

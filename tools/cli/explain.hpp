@@ -1,0 +1,44 @@
+// `boxcyl explain`: one query in, one SVG picture out (the §3 view along the cylinder axis, the verdict,
+// small orthographic views). The geometry is boxcyl/explain/explanation.hpp; this file only draws it.
+#pragma once
+
+#include <cstddef>  // std::size_t
+#include <iosfwd>   // std::istream, std::ostream
+#include <string>   // SVG text, option values
+#include <vector>   // text lines
+
+#include "boxcyl/explain/explanation.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace boxcyl::cli {
+
+// A standalone SVG document (UTF-8) showing `e`. `label` (e.g. the query's id as JSON text; may be
+// empty) goes into the title, `inputs` (lines describing the query) under it; all text is XML-escaped.
+std::string render_svg(const explain::Explanation& e, const std::string& label, const std::vector<std::string>& inputs = {});
+
+// The SVG element ids a picture carries (the tests look for them), by what they show.
+inline constexpr const char* svg_ids[] = {
+    "verdict", "polygon", "disk", "axis-point", "closest", "gap", "box-shadow", "axial", "legend",
+    "view-top", "view-front", "view-side",
+};
+
+// The `explain` subcommand's command-line state.
+struct ExplainCommand {
+    CLI::App* app = nullptr;  // set by add_explain_command; app->parsed() says it was chosen
+    std::string file = "-";   // input; "-": standard input
+    std::string output;       // -o: output file; empty: standard output
+    std::size_t line = 0;     // --line N: take line N of a JSON Lines input; 0: the input is one query
+};
+
+// Registers `explain` on the top-level app; `cmd` must outlive the parse.
+void add_explain_command(CLI::App& app, ExplainCommand& cmd);
+
+// Runs `explain` after parsing: reads the query (from `in` for "-"), writes the SVG. Exit codes as in
+// app.hpp: 0 done; 1 a bad query (the same message as `intersect` gives, on stderr); 2 usage error
+// (unreadable input, unwritable output, no exact backend).
+int run_explain(const ExplainCommand& cmd, std::istream& in, std::ostream& out, std::ostream& err);
+
+}  // namespace boxcyl::cli

@@ -1,0 +1,187 @@
+// See grid.hpp. The grid and the counts are read here; everything else (JSON rules, the id, the
+// cylinder, error lines) is jsonl_query's, and the geometry is the library's (boxcyl/grid.hpp).
+#include "grid.hpp"
+
+#include <array>       // the counts
+#include <cerrno>      // errno after a failed open
+#include <cstdint>     // std::int64_t, std::uint64_t
+#include <cstring>     // std::strerror
+#include <exception>   // failures of the library call
+#include <filesystem>  // refuse directories (they "open" but read nothing)
+#include <fstream>     // input files
+#include <istream>     // std::getline
+#include <limits>      // the int64 range
+#include <ostream>     // output lines
+#include <string>      // help text, output lines
+#include <vector>      // the cells
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "app.hpp"  // exit codes
+#include "boxcyl/geometry/validate.hpp"
+#if defined(BOXCYL_HAS_EXACT)
+#include "boxcyl/grid.hpp"
+#endif
+
+namespace boxcyl::cli {
+
+namespace {
+
+constexpr const char* grid_help = R"(INPUT
+  JSON Lines (UTF-8): one query per line, a JSON object
+    {"id": ID, "grid": GRID, "cylinder": CYLINDER}
+  ID        optional; a string or a number, echoed back unchanged as the first key
+  GRID      {"origin": [x,y,z], "cell_size": [x,y,z], "counts": [nx,ny,nz]}
+            cell_size > 0 per axis; counts: integers, 0 <= counts <= 2^53 (0: no cells)
+  CYLINDER  {"center": [x,y,z], "axis": [x,y,z], "radius": r, "height": h}  (r, h >= 0),
+            as for `boxcyl intersect`
+  Numbers, ids, other keys and duplicate keys are treated as by `boxcyl intersect`.
+
+SEMANTICS
+  Cell (i,j,k), 0 <= i < nx etc., is the closed box whose bounds along each axis are
+    bound(n) = origin + n*cell_size, rounded once to the nearest double (as fma(n, cell_size, origin))
+  for n = i and i+1 (j, j+1 along y; k, k+1 along z). Adjacent cells share their faces exactly and
+  the cells tile the grid's box. A cell is listed if and only if the cylinder intersects that box,
+  exactly (as `boxcyl intersect` answers by default: closed solids, touching counts). The far bound
+  origin + counts*cell_size must stay within the double range.
+
+OUTPUT
+  Exactly one JSON line per input line, in input order:
+    {"id": ID, "cells": [[i,j,k], ...], "count": N}   the cells, in lexicographic order of (i,j,k)
+    {"id": ID, "error": "line N: FIELD: REASON"}       for a bad line, as `boxcyl intersect`
+  ("id" only when the line has a valid one). The tool reports a bad line and goes on.
+
+EXIT STATUS
+  0  every line was a good query (also for empty input)
+  1  at least one line was bad
+  2  usage error: unknown option, unreadable file
+
+EXAMPLE
+  echo '{"grid":{"origin":[0,0,0],"cell_size":[1,1,1],"counts":[4,4,4]},"cylinder":{"center":[1,2,2],"axis":[1,0,0],"radius":0,"height":1}}' | boxcyl grid
+  {"cells": [[0, 1, 1], [0, 1, 2], [0, 2, 1], [0, 2, 2], [1, 1, 1], [1, 1, 2], [1, 2, 1], [1, 2, 2]], "count": 8}
+)";
+
+using json = nlohmann::json;
+
+#if defined(BOXCYL_HAS_EXACT)
+std::string read_counts(const json& g, std::array<std::int64_t, 3>& out) {
+    const auto it = g.find("counts");
+    if (it == g.end()) return "grid.counts: missing";
+    const json& c = *it;
+    if (!c.is_array() || c.size() != 3 || !c[0].is_number_integer() || !c[1].is_number_integer() ||
+        !c[2].is_number_integer())
+        return "grid.counts: expected an array of 3 integers";
+    for (std::size_t a = 0; a < 3; ++a) {
+        // Beyond int64 (up to 2^64 − 1) the value is unsigned; validate() names anything above 2^53.
+        if (c[a].is_number_unsigned() && c[a].get<std::uint64_t>() > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+            return "grid.counts[" + std::to_string(a) + "]: exceeds 2^53";
+        out[a] = c[a].get<std::int64_t>();
+    }
+    return {};
+}
+
+std::string read_grid(const json& root, Grid& g) {
+    const auto it = root.find("grid");
+    if (it == root.end()) return "grid: missing";
+    if (!it->is_object()) return "grid: expected an object";
+    if (auto e = read_vec3_field(*it, "origin", "grid.origin", g.origin); !e.empty()) return e;
+    if (auto e = read_vec3_field(*it, "cell_size", "grid.cell_size", g.cell_size); !e.empty()) return e;
+    return read_counts(*it, g.counts);
+}
+
+std::string format_cells(const std::string& id, const std::vector<CellIndex>& cells) {
+    std::string s = "{";
+    if (!id.empty()) s += "\"id\": " + id + ", ";
+    s += "\"cells\": [";
+    for (std::size_t n = 0; n < cells.size(); ++n) {
+        if (n > 0) s += ", ";
+        s += '[';
+        s += std::to_string(cells[n][0]);
+        s += ", ";
+        s += std::to_string(cells[n][1]);
+        s += ", ";
+        s += std::to_string(cells[n][2]);
+        s += ']';
+    }
+    s += "], \"count\": " + std::to_string(cells.size()) + "}";
+    return s;
+}
+#endif
+
+}  // namespace
+
+LineAnswer answer_grid_line(std::string_view text, std::size_t line_number) {
+#if defined(BOXCYL_HAS_EXACT)
+    Grid grid;
+    Cylinder<double> cylinder;
+    const ObjectLine o = parse_object_line(text, line_number, [&](const json& root) -> std::string {
+        if (auto e = read_grid(root, grid); !e.empty()) return e;
+        if (auto e = read_cylinder_field(root, cylinder); !e.empty()) return e;
+        if (const Validity v = validate(grid); !v.ok()) return v.message();
+        if (const Validity v = validate(cylinder); !v.ok()) return v.message();
+        return {};
+    });
+    if (!o.error.empty()) return {format_error(o.id, o.error), false};
+    try {
+        return {format_cells(o.id, cells(grid, cylinder)), true};
+    } catch (const std::exception& e) {
+        // Not expected for validated input (short of memory for a huge answer); reported per line.
+        return {format_error(o.id, "line " + std::to_string(line_number) + ": query failed: " + e.what()), false};
+    }
+#else
+    (void)text;
+    return {format_error({}, "line " + std::to_string(line_number) + ": grid needs the exact backend (GMP)"), false};
+#endif
+}
+
+std::size_t process_grid_stream(std::istream& in, std::ostream& out) {
+    std::size_t line_number = 0;
+    std::size_t bad = 0;
+    std::string line;
+    for (;;) {
+        // Flush before a read could block, so a caller feeding lines one by one sees each answer.
+        if (in.rdbuf() == nullptr || in.rdbuf()->in_avail() <= 0) out.flush();
+        if (!std::getline(in, line)) break;
+        const LineAnswer a = answer_grid_line(line, ++line_number);
+        out << a.text << '\n';
+        if (!a.good) ++bad;
+    }
+    out.flush();
+    return bad;
+}
+
+void add_grid_command(CLI::App& app, GridCommand& cmd) {
+    cmd.app = app.add_subcommand(
+        "grid", "For each input line (a grid and a cylinder), list the grid cells the cylinder intersects");
+    cmd.app->footer(grid_help);
+    cmd.app->add_option("file", cmd.file, "JSON Lines input; '-' or none: standard input");
+}
+
+int run_grid(const GridCommand& cmd, std::istream& in, std::ostream& out, std::ostream& err) {
+#if !defined(BOXCYL_HAS_EXACT)
+    (void)cmd, (void)in, (void)out;
+    err << "boxcyl: grid needs the exact backend (GMP); this build has none\n";
+    return exit_usage;
+#else
+    auto run_on = [&](std::istream& input) {
+        const std::size_t bad = process_grid_stream(input, out);
+        if (input.bad()) return exit_usage;  // a read error: the output is incomplete
+        return bad == 0 ? exit_ok : exit_bad_lines;
+    };
+    if (cmd.file == "-") return run_on(in);
+    std::error_code ec;
+    if (std::filesystem::is_directory(cmd.file, ec)) {
+        err << "boxcyl: cannot read '" << cmd.file << "': is a directory\n";
+        return exit_usage;
+    }
+    std::ifstream f(cmd.file, std::ios::binary);
+    if (!f) {
+        err << "boxcyl: cannot open '" << cmd.file << "': " << std::strerror(errno) << "\n";
+        return exit_usage;
+    }
+    return run_on(f);
+#endif
+}
+
+}  // namespace boxcyl::cli

@@ -1,0 +1,40 @@
+// `boxcyl grid`: JSON Lines in (a grid and a cylinder per line), JSON Lines out (the indices of the
+// cells the cylinder intersects, exactly: boxcyl/grid.hpp). Parsing shares jsonl_query's JSON layer,
+// so numbers, ids, duplicate keys and error lines behave exactly as in `intersect`.
+#pragma once
+
+#include <cstddef>      // std::size_t
+#include <iosfwd>       // std::istream, std::ostream
+#include <string>       // option values, output lines
+#include <string_view>  // input lines
+
+#include "jsonl_query.hpp"  // LineAnswer
+
+namespace CLI {
+class App;
+}
+
+namespace boxcyl::cli {
+
+// Answers one input line: {"id": ID, "cells": [[i,j,k], ...], "count": N} with the cells in
+// lexicographic order, or an error line as `intersect` writes it. `line_number` counts from 1.
+LineAnswer answer_grid_line(std::string_view text, std::size_t line_number);
+
+// Reads `in` line by line, writes one output line per input line in order; returns the number of bad
+// lines. Flushes whenever no more input is buffered (as process_stream does).
+std::size_t process_grid_stream(std::istream& in, std::ostream& out);
+
+// The `grid` subcommand's command-line state.
+struct GridCommand {
+    CLI::App* app = nullptr;  // set by add_grid_command; app->parsed() says it was chosen
+    std::string file = "-";   // input; "-": standard input
+};
+
+// Registers `grid` on the top-level app; `cmd` must outlive the parse.
+void add_grid_command(CLI::App& app, GridCommand& cmd);
+
+// Runs `grid` after parsing. Exit codes as in app.hpp: 0 every line good, 1 some line bad, 2 usage
+// error (unreadable input, no exact backend).
+int run_grid(const GridCommand& cmd, std::istream& in, std::ostream& out, std::ostream& err);
+
+}  // namespace boxcyl::cli

@@ -1,0 +1,151 @@
+#!/usr/bin/env bash
+# End-to-end tests of `boxcyl explain`, one case per CTest test.
+# Usage: explain_test.sh CASE BOXCYL_EXE EXAMPLES_DIR WORK_DIR
+# The SVG must parse as XML: with xmllint when installed, else python3's xml.etree (Debian's
+# /usr/bin/python3 first; a python3 on PATH otherwise). Neither present is a failure, not a skip.
+set -u
+
+case_name=$1
+exe=$2
+examples=$3
+work=$4/explain_$case_name
+rm -rf "$work" && mkdir -p "$work" || exit 2
+
+failures=0
+fail() {
+    echo "FAIL [explain_$case_name]: $*" >&2
+    failures=$((failures + 1))
+}
+
+if command -v xmllint >/dev/null; then
+    well_formed() { xmllint --noout "$1"; }
+else
+    py=/usr/bin/python3
+    [[ -x $py ]] || py=$(command -v python3 || true)
+    if [[ -z $py ]]; then
+        echo "explain_test.sh: needs xmllint (Debian: libxml2-utils) or python3 to parse the SVG" >&2
+        exit 1
+    fi
+    well_formed() { "$py" -c 'import sys, xml.etree.ElementTree as E; E.parse(sys.argv[1])' "$1"; }
+fi
+
+# run EXPECTED_RC ARGS... : runs the tool with stdin from $work/stdin (if any), captures out/err/rc.
+run() {
+    local want=$1
+    shift
+    local in=/dev/null
+    [[ -f $work/stdin ]] && in=$work/stdin
+    "$exe" "$@" <"$in" >"$work/out" 2>"$work/err"
+    rc=$?
+    [[ $rc == "$want" ]] || fail "'boxcyl $*' exited $rc, expected $want; stderr: $(head -c 500 "$work/err")"
+}
+
+contains() {  # contains FILE TEXT
+    grep -qF -- "$2" "$1" || fail "$1 lacks '$2'"
+}
+
+lacks() {  # lacks FILE TEXT
+    grep -qF -- "$2" "$1" && fail "$1 has '$2'"
+}
+
+query='{"id": "q", "box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [1.5, 0.5, 0.5], "axis": [0, 0, 1], "radius": 0.4375, "height": 1}}'
+
+case $case_name in
+examples)
+    # Every example: a well-formed SVG with the main elements, whose verdict is `intersect`'s answer.
+    run 0 intersect "$examples/queries.jsonl"
+    cp "$work/out" "$work/answers"
+    n=$(wc -l <"$examples/queries.jsonl")
+    for ((i = 1; i <= n; ++i)); do
+        run 0 explain --line "$i" "$examples/queries.jsonl" -o "$work/$i.svg"
+        [[ -s $work/out ]] && fail "line $i: -o given, yet standard output not empty"
+        well_formed "$work/$i.svg" || fail "line $i: not well-formed XML"
+        for id in verdict disk axis-point box-shadow axial legend view-top view-front view-side; do
+            contains "$work/$i.svg" "id=\"$id\""
+        done
+        answer=$(sed -n "${i}p" "$work/answers")
+        if [[ $answer == *'"intersect": true'* ]]; then
+            contains "$work/$i.svg" ': Intersects'
+        else
+            contains "$work/$i.svg" ': Does not intersect'
+        fi
+        # A polygon, its closest point and the gap segment exactly when box ∩ slab is not empty.
+        if grep -qF 'box ∩ slab is empty' "$work/$i.svg"; then
+            lacks "$work/$i.svg" 'id="polygon"'
+        else
+            for id in polygon closest gap; do contains "$work/$i.svg" "id=\"$id\""; done
+        fi
+    done
+    ;;
+io)
+    # Standard input and standard output; the same picture from a file with -o.
+    printf '%s\n' "$query" >"$work/stdin"
+    run 0 explain
+    well_formed "$work/out" || fail "stdin → stdout: not well-formed XML"
+    contains "$work/out" ">Does not intersect<"
+    contains "$work/out" ">gap 0.0625<"
+    cp "$work/out" "$work/from_stdin.svg"
+    rm "$work/stdin"
+    printf '%s' "$query" >"$work/q.json"  # no trailing newline
+    run 0 explain "$work/q.json" --output "$work/from_file.svg"
+    cmp -s "$work/from_stdin.svg" "$work/from_file.svg" || fail "file and stdin give different pictures"
+    cp "$work/q.json" "$work/stdin"
+    run 0 explain -
+    cmp -s "$work/out" "$work/from_file.svg" || fail "'-' and the file give different pictures"
+    rm "$work/stdin"
+    # A pretty-printed (multi-line) query is one JSON object too.
+    printf '{\n  "box": {"min": [0, 0, 0], "max": [1, 1, 1]},\n  "cylinder": {"center": [0.5, 0.5, 0.5],\n    "axis": [0, 0, 1], "radius": 0.25, "height": 0.5}\n}\n' >"$work/pretty.json"
+    run 0 explain "$work/pretty.json"
+    contains "$work/out" ">Intersects<"
+    # --line picks one query of a JSON Lines file.
+    run 0 explain --line 4 "$examples/queries.jsonl"
+    contains "$work/out" 'gap-side-face'
+
+    # A bad query: intersect's message (on stderr), exit 1, no picture.
+    printf '%s\n' '{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": -1, "height": 1}}' >"$work/bad.json"
+    run 1 intersect "$work/bad.json"
+    message=$(sed -e 's/^{"error": "//' -e 's/"}$//' "$work/out")
+    [[ $message == "line 1: cylinder.radius: is negative" ]] || fail "intersect's message changed: $message"
+    run 1 explain "$work/bad.json" -o "$work/bad.svg"
+    contains "$work/err" "$message"
+    [[ -e $work/bad.svg ]] && fail "a bad query still wrote its output file"
+    [[ -s $work/out ]] && fail "a bad query wrote to standard output"
+    run 1 explain --line 2 "$examples/bad_lines.jsonl"
+    contains "$work/err" "line 2: empty line"
+    : >"$work/empty.json"
+    run 1 explain "$work/empty.json"
+    contains "$work/err" "empty line"
+    # A JSON Lines file without --line: the parse error, and a hint.
+    run 1 explain "$examples/queries.jsonl"
+    contains "$work/err" "invalid JSON"
+    contains "$work/err" "--line N"
+    run 1 explain --line 1000 "$examples/queries.jsonl"
+    contains "$work/err" "line 1000: no such line"
+
+    # Usage errors: exit 2.
+    run 2 explain "$work/does-not-exist.json"
+    contains "$work/err" "cannot open"
+    run 2 explain "$work"
+    contains "$work/err" "directory"
+    run 2 explain --frobnicate "$work/q.json"
+    run 2 explain --line 0 "$work/q.json"
+    run 2 explain "$work/q.json" "$work/q.json"
+    run 2 explain "$work/q.json" -o "$work/no-such-dir/out.svg"
+    contains "$work/err" "cannot write"
+
+    run 0 explain --help
+    for phrase in "--line" "--output" "EXIT STATUS" "exact"; do contains "$work/out" "$phrase"; done
+    run 0 --help
+    contains "$work/out" "explain"
+    ;;
+*)
+    echo "unknown case $case_name" >&2
+    exit 2
+    ;;
+esac
+
+if ((failures > 0)); then
+    echo "explain_$case_name: $failures failure(s)" >&2
+    exit 1
+fi
+echo "explain_$case_name: ok"

@@ -1,0 +1,292 @@
+// Tests of `boxcyl explain`: the picture's geometry (boxcyl/explain/explanation.hpp) on hand cases with
+// exact expected values, its agreement with the exact verdict away from touching on fixed-seed random
+// cases, and the SVG writer's elements and escaping (tools/cli/explain.hpp). Well-formedness of the
+// whole document is checked end to end by explain_test.sh with an XML parser.
+#include <gtest/gtest.h>
+
+#include <algorithm>  // std::max, std::count
+#include <cmath>      // std::fabs, std::ldexp
+#include <string>
+#include <vector>
+
+#include "boxcyl/explain/explanation.hpp"
+#include "support/cases.hpp"  // random and near-touching cases, copy-pasteable printing
+#include "explain.hpp"
+
+namespace boxcyl {
+namespace {
+
+using explain::Case;
+using explain::Explanation;
+using explain::Point2;
+
+AlignedBox<double> unit_box() { return {{0, 0, 0}, {1, 1, 1}}; }
+
+bool has_vertex(const std::vector<Point2>& poly, double x, double y) {
+    return std::any_of(poly.begin(), poly.end(), [&](const Point2& p) { return p.x == x && p.y == y; });
+}
+
+// --- hand cases: exact expected values -----------------------------------------------------------
+
+TEST(ExplainGeometry, VerticalCylinderBesideTheBoxHasTheKnownGap) {
+    // examples/queries.jsonl "gap-side-face": the face x = 1 is 0.5 from the axis x = 1.5; r = 0.4375.
+    const Explanation e = explain::compute(unit_box(), Cylinder<double>{{1.5, 0.5, 0.5}, {0, 0, 1}, 0.4375, 1});
+    EXPECT_FALSE(e.exact_intersects);
+    EXPECT_FALSE(e.picture_intersects);
+    EXPECT_EQ(e.what, Case::gap);
+    // The plane ⊥ z is seen as the top view: e1 = x, e2 = y, origin on the axis.
+    EXPECT_EQ(e.e1, (Vec3<double>{1, 0, 0}));
+    EXPECT_EQ(e.e2, (Vec3<double>{0, 1, 0}));
+    EXPECT_EQ(e.section.size(), 8u);  // the box lies within the slab |z − 0.5| ≤ 0.5: all 8 vertices
+    ASSERT_EQ(e.polygon.size(), 4u);
+    EXPECT_TRUE(has_vertex(e.polygon, -1.5, -0.5));
+    EXPECT_TRUE(has_vertex(e.polygon, -0.5, -0.5));
+    EXPECT_TRUE(has_vertex(e.polygon, -0.5, 0.5));
+    EXPECT_TRUE(has_vertex(e.polygon, -1.5, 0.5));
+    EXPECT_EQ(e.closest.x, -0.5);
+    EXPECT_EQ(e.closest.y, 0.0);
+    EXPECT_EQ(e.distance, 0.5);
+    EXPECT_EQ(e.gap(), 0.0625);
+    EXPECT_EQ(e.box_axial_min, -0.5);
+    EXPECT_EQ(e.box_axial_max, 0.5);
+}
+
+TEST(ExplainGeometry, TouchingSideIsTouching) {
+    const Explanation e = explain::compute(unit_box(), Cylinder<double>{{1.5, 0.5, 0.5}, {0, 0, 1}, 0.5, 1});
+    EXPECT_TRUE(e.exact_intersects);
+    EXPECT_EQ(e.what, Case::touching);
+    EXPECT_EQ(e.gap(), 0.0);
+}
+
+TEST(ExplainGeometry, SlabCutsTheBoxAndTheAxisPassesThrough) {
+    // Slab z ∈ [0.75, 3.25]: box ∩ slab is the top quarter of the cube, 4 vertices + 4 edge crossings
+    // at z = 0.75; seen along z it is the unit square around the axis (0.5, 0.5).
+    const Explanation e = explain::compute(unit_box(), Cylinder<double>{{0.5, 0.5, 2}, {0, 0, 1}, 0.125, 2.5});
+    EXPECT_TRUE(e.exact_intersects);
+    EXPECT_EQ(e.what, Case::axis_through);
+    ASSERT_EQ(e.section.size(), 8u);
+    EXPECT_EQ(std::count_if(e.section.begin(), e.section.end(), [](const Vec3<double>& v) { return v[2] == 0.75; }), 4);
+    EXPECT_EQ(e.polygon.size(), 4u);
+    EXPECT_TRUE(has_vertex(e.polygon, -0.5, -0.5));
+    EXPECT_TRUE(has_vertex(e.polygon, 0.5, 0.5));
+    EXPECT_EQ(e.distance, 0.0);
+    EXPECT_EQ(e.closest.x, 0.0);
+    EXPECT_EQ(e.closest.y, 0.0);
+}
+
+TEST(ExplainGeometry, DiagonalAxisSeesAHexagon) {
+    // "skew-through-diagonal": along the cube's diagonal the cube's shadow is a regular hexagon.
+    const Explanation e = explain::compute(unit_box(), Cylinder<double>{{2, 2, 2}, {-1, -1, -1}, 0.1, 10});
+    EXPECT_TRUE(e.exact_intersects);
+    EXPECT_EQ(e.what, Case::axis_through);
+    EXPECT_EQ(e.polygon.size(), 6u);
+    EXPECT_EQ(e.distance, 0.0);
+}
+
+TEST(ExplainGeometry, BoxBeyondTheEndPlaneHasNoPolygon) {
+    // "point-box-one-ulp-above-cap": a point box at z = 1 + 2^-52, the top end plane at z = 1.
+    const double z = 1 + std::ldexp(1.0, -52);
+    const Explanation e = explain::compute(AlignedBox<double>{{0, 0, z}, {0, 0, z}}, Cylinder<double>{{0, 0, 0}, {0, 0, 1}, 1, 2});
+    EXPECT_FALSE(e.exact_intersects);
+    EXPECT_TRUE(e.slab_empty);
+    EXPECT_TRUE(e.polygon.empty());
+    EXPECT_TRUE(e.section.empty());
+    EXPECT_EQ(e.what, Case::outside_slab);
+    EXPECT_EQ(e.box_axial_min, z);
+    EXPECT_EQ(e.box_axial_max, z);
+    EXPECT_EQ(e.half_height, 1.0);
+}
+
+TEST(ExplainGeometry, BoxOnTheEndPlaneTouchesAnEnd) {
+    // "touch-cap-face": the bottom disk lies on the face z = 1 (axis [0, 0, 2]: only its direction counts).
+    const Explanation e = explain::compute(unit_box(), Cylinder<double>{{0.5, 0.5, 1.25}, {0, 0, 2}, 0.125, 0.5});
+    EXPECT_TRUE(e.exact_intersects);
+    EXPECT_EQ(e.what, Case::touching_end_plane);
+    EXPECT_EQ(e.direction, (Vec3<double>{0, 0, 1}));
+    EXPECT_EQ(e.box_axial_max, -0.25);
+    EXPECT_EQ(e.polygon.size(), 4u);  // the face z = 1
+    EXPECT_EQ(e.distance, 0.0);
+}
+
+TEST(ExplainGeometry, FlatBoxSeenEdgeOnIsASegment) {
+    // The square y = 0, x, z ∈ [0, 1], seen along z: the segment y = −2, x ∈ [−0.5, 0.5].
+    const Explanation e = explain::compute(AlignedBox<double>{{0, 0, 0}, {1, 0, 1}}, Cylinder<double>{{0.5, 2, 0.5}, {0, 0, 1}, 1, 1});
+    EXPECT_FALSE(e.exact_intersects);
+    ASSERT_EQ(e.polygon.size(), 2u);
+    EXPECT_TRUE(has_vertex(e.polygon, -0.5, -2));
+    EXPECT_TRUE(has_vertex(e.polygon, 0.5, -2));
+    EXPECT_EQ(e.closest.x, 0.0);
+    EXPECT_EQ(e.closest.y, -2.0);
+    EXPECT_EQ(e.gap(), 1.0);
+    EXPECT_EQ(e.what, Case::gap);
+}
+
+TEST(ExplainGeometry, PointBoxIsAPoint) {
+    // "point-box-on-lateral-surface": the point (1, 0, 0) on the side of a radius-1 cylinder.
+    const Explanation e = explain::compute(AlignedBox<double>{{1, 0, 0}, {1, 0, 0}}, Cylinder<double>{{0, 0, 0}, {0, 0, 1}, 1, 2});
+    EXPECT_TRUE(e.exact_intersects);
+    ASSERT_EQ(e.polygon.size(), 1u);
+    EXPECT_EQ(e.distance, 1.0);
+    EXPECT_EQ(e.what, Case::touching);
+}
+
+TEST(ExplainGeometry, OrientedBoxUsesItsAxes) {
+    // "oriented-gap-rot90": a 90° rotation about z; the box spans x ∈ [−1, 1], y ∈ [−2, 2].
+    const OrientedBox<double> box{{0, 0, 0}, {Vec3<double>{0, 1, 0}, Vec3<double>{-1, 0, 0}, Vec3<double>{0, 0, 1}}, {2, 1, 1}};
+    const Explanation e = explain::compute(box, Cylinder<double>{{1.5, 0, 0}, {0, 0, 1}, 0.4375, 1});
+    EXPECT_FALSE(e.exact_intersects);
+    ASSERT_EQ(e.polygon.size(), 4u);
+    EXPECT_TRUE(has_vertex(e.polygon, -2.5, -2));
+    EXPECT_TRUE(has_vertex(e.polygon, -0.5, 2));
+    EXPECT_EQ(e.distance, 0.5);
+    EXPECT_EQ(e.gap(), 0.0625);
+}
+
+TEST(ExplainGeometry, HorizontalAxisKeepsUpUp) {
+    // For a horizontal axis e2 is +z, so the picture's "up" is the world's.
+    const Explanation e = explain::compute(unit_box(), Cylinder<double>{{0.5, 3, 0.5}, {0, 1, 0}, 0.25, 1});
+    EXPECT_EQ(e.e2, (Vec3<double>{0, 0, 1}));
+    EXPECT_EQ(e.e1, (Vec3<double>{-1, 0, 0}));
+    EXPECT_EQ(e.what, Case::outside_slab);  // the slab y ∈ [2.5, 3.5] misses the box
+}
+
+TEST(ExplainGeometry, ThePictureDefersToTheExactVerdict) {
+    // The verdict is whatever the caller says is exact; a picture that disagrees is flagged, not drawn
+    // as a different answer.
+    const Cylinder<double> cyl{{1.5, 0.5, 0.5}, {0, 0, 1}, 0.4375, 1};
+    const Explanation e = explain::compute(unit_box(), cyl, /*exact_intersects=*/true);
+    EXPECT_TRUE(e.exact_intersects);
+    EXPECT_FALSE(e.picture_intersects);
+    EXPECT_EQ(e.what, Case::touching_within_rounding);
+}
+
+// --- random cases: the double picture agrees with the exact verdict unless within rounding ----------
+
+// How far from touching a case is in the picture: the lateral |d − r| and, along the axis, how far the
+// box's range is from just touching the slab; relative to the case's magnitude.
+double relative_margin(const Explanation& e) {
+    double scale = std::max({e.radius, e.half_height, std::fabs(e.box_axial_min), std::fabs(e.box_axial_max)});
+    for (const auto& v : e.box_vertices)
+        for (int i = 0; i < 3; ++i) scale = std::max(scale, std::fabs(v[i] - e.center[i]));
+    const double axial = std::min(std::fabs(e.box_axial_max + e.half_height), std::fabs(e.box_axial_min - e.half_height));
+    const double lateral = e.slab_empty ? axial : std::fabs(e.gap());
+    return std::min(lateral, axial) / scale;
+}
+
+Explanation explain_case(const testing::Case& c) {
+    return c.kind == testing::BoxKind::aligned ? explain::compute(c.aligned, c.cylinder)
+                                               : explain::compute(c.oriented, c.cylinder);
+}
+
+TEST(ExplainRandom, PictureAgreesWithTheExactVerdictAwayFromTouching) {
+    // The verdict is boxcyl::intersects (tested against the oracle elsewhere); here the double picture
+    // must say the same unless the case is within rounding of touching, and then it must be flagged.
+    const std::uint64_t seed = 20261121;
+    testing::CaseGenerator gen(seed);
+    int considered = 0, drawn = 0, flagged = 0;
+    for (int i = 0; i < 6000; ++i) {
+        const testing::Case c = gen.next();
+        if (c.kind == testing::BoxKind::canonical) continue;  // explain takes aligned and oriented boxes
+        ++considered;
+        const Explanation e = explain_case(c);
+        if (!e.drawable) continue;
+        ++drawn;
+        const bool disagree = e.exact_intersects != e.picture_intersects;
+        EXPECT_EQ(e.what == Case::touching_within_rounding, disagree);
+        if (disagree) {
+            ++flagged;
+            EXPECT_LE(relative_margin(e), 1e-9) << "the picture disagrees far from touching";
+        }
+        EXPECT_EQ(e.slab_empty, e.polygon.empty());
+        EXPECT_GE(e.distance, 0.0);
+        if (::testing::Test::HasFailure()) {
+            ADD_FAILURE() << "seed " << seed << " case " << i << ": " << testing::describe(c);
+            return;
+        }
+    }
+    EXPECT_EQ(drawn, considered);  // the mixed profile stays far from overflow
+    EXPECT_GT(considered, 3000);
+    EXPECT_LT(flagged, 10);  // generic inputs are rarely within rounding of touching
+}
+
+TEST(ExplainRandom, NearTouchingPairsAreFlaggedWhenThePictureCannotTell) {
+    // Pairs one ulp apart with opposite exact answers: the picture cannot separate them, so it must
+    // flag the side it gets wrong, never draw a confident wrong answer.
+    testing::CaseGenerator gen(7);
+    int pairs = 0, flagged = 0;
+    while (pairs < 40) {
+        testing::Case a, b;
+        testing::Parameter which;
+        if (!testing::boundary_pair(gen, a, b, which)) continue;
+        if (a.kind == testing::BoxKind::canonical) continue;
+        ++pairs;
+        for (const testing::Case* c : {&a, &b}) {
+            const Explanation e = explain_case(*c);
+            EXPECT_EQ(e.what == Case::touching_within_rounding, e.exact_intersects != e.picture_intersects)
+                << testing::describe(*c);
+            if (e.what == Case::touching_within_rounding) ++flagged;
+        }
+    }
+    EXPECT_GT(flagged, 0);  // the case exists in practice, not only in principle
+}
+
+// --- the SVG writer ----------------------------------------------------------------------------
+
+TEST(ExplainSvg, CarriesEveryElementAndTheVerdict) {
+    const Explanation e = explain::compute(unit_box(), Cylinder<double>{{1.5, 0.5, 0.5}, {0, 0, 1}, 0.4375, 1});
+    const std::string svg = cli::render_svg(e, "\"gap-side-face\"");
+    EXPECT_EQ(svg.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
+    EXPECT_EQ(svg.substr(svg.size() - 7), "</svg>\n");
+    for (const char* id : cli::svg_ids) EXPECT_NE(svg.find("id=\"" + std::string(id) + "\""), std::string::npos) << id;
+    EXPECT_NE(svg.find(">Does not intersect<"), std::string::npos);
+    EXPECT_NE(svg.find(">gap 0.0625<"), std::string::npos);
+    EXPECT_NE(svg.find(">radius 0.4375<"), std::string::npos);
+    EXPECT_NE(svg.find("closest point, distance 0.5"), std::string::npos);
+    EXPECT_EQ(svg.find("nan"), std::string::npos);
+    EXPECT_EQ(svg.find("inf"), std::string::npos);
+}
+
+TEST(ExplainSvg, VerdictTitles) {
+    auto title = [](const AlignedBox<double>& b, const Cylinder<double>& c) {
+        const std::string svg = cli::render_svg(explain::compute(b, c), "");
+        const auto at = svg.find("<title>");
+        return svg.substr(at, svg.find("</title>") - at);
+    };
+    EXPECT_EQ(title(unit_box(), {{1.5, 0.5, 0.5}, {0, 0, 1}, 0.5, 1}), "<title>boxcyl explain: Intersects (touching)");
+    EXPECT_EQ(title(unit_box(), {{0.5, 0.5, 0.5}, {0, 0, 1}, 0.25, 0.5}), "<title>boxcyl explain: Intersects");
+    EXPECT_EQ(title(unit_box(), {{0.5, 0.5, 1.25}, {0, 0, 2}, 0.125, 0.5}), "<title>boxcyl explain: Intersects (touching an end)");
+    EXPECT_EQ(title(unit_box(), {{5, 5, 5}, {0, 0, 1}, 1, 1}), "<title>boxcyl explain: Does not intersect");
+    const std::string within = cli::render_svg(explain::compute(unit_box(), Cylinder<double>{{1.5, 0.5, 0.5}, {0, 0, 1}, 0.4375, 1}, true), "");
+    EXPECT_NE(within.find(">Intersects (touching within rounding)<"), std::string::npos);
+}
+
+TEST(ExplainSvg, EmptySlabSaysSoAndDrawsNoPolygon) {
+    const Explanation e = explain::compute(unit_box(), Cylinder<double>{{0.5, 0.5, 5}, {0, 0, 1}, 1, 1});
+    ASSERT_EQ(e.what, Case::outside_slab);
+    const std::string svg = cli::render_svg(e, "");
+    EXPECT_EQ(svg.find("id=\"polygon\""), std::string::npos);
+    EXPECT_NE(svg.find("box ∩ slab is empty"), std::string::npos);
+    EXPECT_NE(svg.find("id=\"disk\""), std::string::npos);
+    EXPECT_NE(svg.find("id=\"axial\""), std::string::npos);
+}
+
+TEST(ExplainSvg, LabelsAreEscaped) {
+    const Explanation e = explain::compute(unit_box(), Cylinder<double>{{1.5, 0.5, 0.5}, {0, 0, 1}, 0.4375, 1});
+    const std::string svg = cli::render_svg(e, "\"<a & b>'\"");
+    EXPECT_NE(svg.find("&quot;&lt;a &amp; b&gt;&apos;&quot;"), std::string::npos);
+    EXPECT_EQ(svg.find("<a "), std::string::npos);
+}
+
+TEST(ExplainSvg, OverflowingCoordinatesGetTheVerdictOnly) {
+    // Valid inputs whose differences overflow double: no picture, but a well-defined document.
+    const Explanation e = explain::compute(AlignedBox<double>{{-1.7e308, 0, 0}, {1.7e308, 1, 1}},
+                                           Cylinder<double>{{1.7e308, 0.5, 0.5}, {1, 1, 0}, 1, 1});
+    EXPECT_FALSE(e.drawable);
+    EXPECT_EQ(e.what, Case::not_drawable);
+    const std::string svg = cli::render_svg(e, "");
+    EXPECT_NE(svg.find("Not drawable"), std::string::npos);
+    EXPECT_EQ(svg.find("nan"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace boxcyl
