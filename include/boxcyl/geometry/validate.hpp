@@ -1,12 +1,21 @@
 // Input validation at the boundary (STYLE §13): kernels assume valid input; the CLI, the bindings and
 // careful callers ask validate() first. It names the first bad field and why.
 //
-// Policy: NaN and ±Inf are rejected everywhere; a zero cylinder axis is rejected; negative radius,
-// height or extents and min > max are rejected; zeros are accepted as the exact degenerate solids they
-// denote (segment, disk, flat or point box). Oriented-box axes must be non-zero and orthonormal to
-// within 1e-4 (|Ai·Aj − δij| ≤ 1e-4): the solid is then exactly the parallelepiped they span (so a
-// frame orthonormal only up to rounding is fine), and anything further off is almost surely a caller
-// bug (a scaled or non-rotation matrix), so it is refused with a message rather than guessed at.
+// The input policy (also README "What the answer means"; tests/test_validate.cpp checks it field by field):
+// - NaN and ±Inf are rejected in every field ("cylinder.center[1]: is NaN").
+// - cylinder.axis: any non-zero vector, only its direction counts (subnormal or near-overflow
+//   components are fine); the zero vector (±0 components) is rejected.
+// - radius, height, extents: negative is rejected; zero (also −0) is accepted as the exact degenerate
+//   solid it denotes (segment, disk, point; flat or point box).
+// - Aligned box: min > max in any component is rejected; min == max is a flat box.
+// - Oriented box: axes must be non-zero and orthonormal within 1e-4 (|Ai·Aj − δij| ≤ 1e-4); the solid
+//   is then exactly the parallelepiped they span (a frame orthonormal only up to rounding is fine).
+//   Anything further off is almost surely a caller bug (a scaled or non-rotation matrix), so it is
+//   refused with a message rather than guessed at.
+// - Magnitudes: every finite double is accepted, subnormals to ±DBL_MAX; the default query answers
+//   exactly there too (no intermediate overflow turns into a wrong answer).
+// For valid input, boxcyl::intersects() with default options never throws; it asserts validity in
+// debug builds; in release builds invalid input gets an unspecified answer or an exception.
 #pragma once
 
 #include <cmath>    // std::isnan, std::isinf, std::fabs

@@ -140,6 +140,55 @@ line_count)
         if (substr($0, 1, length(want)) != want) { print "line " i ": got " $0 " want " want; bad = 1; exit }
     } END { if (NR != n) { print "count " NR; bad = 1 } exit bad }' "$work/out" >&2 || fail "output lines out of order or wrong"
     ;;
+large_line_count)
+    # 200,000 generated lines (every 997th bad: empty, truncated, invalid value, invalid UTF-8):
+    # exactly one output line per input line, in order (the ids), and exit 1 for the bad ones.
+    n=200000
+    bash "$(dirname "$0")/gen_queries.sh" $n 7 997 >"$work/in"
+    [[ $(wc -l <"$work/in") == "$n" ]] || fail "generator wrote $(wc -l <"$work/in") lines"
+    run 1 intersect "$work/in"
+    [[ $(wc -l <"$work/out") == "$n" ]] || fail "got $(wc -l <"$work/out") output lines for $n input lines"
+    LC_ALL=C awk -v n=$n '{
+        i = NR
+        if (i % 997 == 0) { want = (i / 997) % 4 == 0 ? "{\"error\": \"line " i ": " : "{\"id\": " i ", \"error\": \"line " i ": " }
+        else want = "{\"id\": " i ", \"intersect\": "
+        if (substr($0, 1, length(want)) != want) { print "line " i ": got " $0 " want " want "..."; bad = 1; exit }
+    } END { if (NR != n) { print "count " NR; bad = 1 } exit bad }' "$work/out" >&2 || fail "output lines out of order or wrong"
+    # The answers are the oracle's (the default query is exact), line for line.
+    head -n 5000 "$work/in" >"$work/head"
+    run 1 intersect --algorithm oracle "$work/head"
+    cp "$work/out" "$work/oracle"
+    run 1 intersect "$work/head"
+    same_bytes "$work/out" "$work/oracle"
+    ;;
+hostile_bytes)
+    # Raw bytes through the executable: invalid UTF-8, NUL, CR-only line, a 10 MB line, a truncated
+    # last line. One output line each, all valid UTF-8, the good lines answered, exit 1.
+    good='{"id": 1, "box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [2, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}}'
+    {
+        printf '%s\n' "$good"
+        printf '{"id": "\377\376", "box": 1}\n'
+        printf '\303\050\n'
+        printf '{"id": 2\000, "box": 1}\n'
+        printf '\r\r\n'
+        head -c 10485760 /dev/zero | tr '\0' '['; printf '\n'
+        printf '{"id": 3, "pad": "'; head -c 10485760 /dev/zero | tr '\0' 'x'; printf '"%s\n' "${good#\{\"id\": 1}"
+        printf '%s' "${good:0:60}"
+    } >"$work/in"
+    run 1 intersect "$work/in"
+    [[ $(wc -l <"$work/out") == 8 ]] || fail "got $(wc -l <"$work/out") output lines for 8 input lines"
+    if command -v iconv >/dev/null; then
+        iconv -f UTF-8 -t UTF-8 "$work/out" >/dev/null 2>&1 || fail "output is not valid UTF-8"
+    fi
+    sed -n 1p "$work/out" | grep -qx '{"id": 1, "intersect": true}' || fail "line 1"
+    sed -n 2p "$work/out" | grep -q '^{"error": "line 2: invalid JSON: .*ill-formed UTF-8' || fail "line 2"
+    sed -n 3p "$work/out" | grep -q '^{"error": "line 3: invalid JSON: ' || fail "line 3"
+    sed -n 4p "$work/out" | grep -q '^{"id": 2, "error": "line 4: invalid JSON: ' || fail "line 4"
+    sed -n 5p "$work/out" | grep -qx '{"error": "line 5: empty line"}' || fail "line 5"
+    sed -n 6p "$work/out" | grep -qx '{"error": "line 6: invalid JSON: nested deeper than 256 levels"}' || fail "line 6"
+    sed -n 7p "$work/out" | grep -qx '{"id": 3, "intersect": true}' || fail "line 7"
+    sed -n 8p "$work/out" | grep -q '^{"id": 1, "error": "line 8: invalid JSON: ' || fail "line 8"
+    ;;
 exit_codes)
     cp "$examples/queries.jsonl" "$work/stdin"
     run 0 intersect "$examples/queries.jsonl"
@@ -251,6 +300,109 @@ streaming)
     [[ $got == "$(head -n 1 "$expected/queries.out")" ]] || fail "no answer before end of input (got '$got')"
     exec 3>&-
     wait "$pid" || fail "exit status $? after end of input"
+    ;;
+grid_basic)
+    # `boxcyl grid`: cell indices in lexicographic order, the count, ids echoed; stdin and a file.
+    g4='"grid": {"origin": [0, 0, 0], "cell_size": [1, 1, 1], "counts": [4, 4, 4]}'
+    g3='"grid": {"origin": [0, 0, 0], "cell_size": [1, 1, 1], "counts": [3, 3, 3]}'
+    {
+        echo "{\"id\": \"segment on a grid line\", $g4, \"cylinder\": {\"center\": [1, 2, 2], \"axis\": [1, 0, 0], \"radius\": 0, \"height\": 1}}"
+        echo "{\"id\": 2, \"grid\": {\"origin\": [0, 0, 0], \"cell_size\": [1, 1, 1], \"counts\": [3, 0, 3]}, \"cylinder\": {\"center\": [1, 1, 1], \"axis\": [0, 0, 1], \"radius\": 1, \"height\": 1}}"
+        echo "{$g3, \"cylinder\": {\"center\": [4, 1.5, 1.5], \"axis\": [0, 0, 1], \"radius\": 1, \"height\": 1}}"
+        echo "{$g3, \"cylinder\": {\"center\": [4, 1.5, 1.5], \"axis\": [0, 0, 1], \"radius\": 0.99999999999999989, \"height\": 1}}"
+    } >"$work/in"
+    {
+        echo '{"id": "segment on a grid line", "cells": [[0, 1, 1], [0, 1, 2], [0, 2, 1], [0, 2, 2], [1, 1, 1], [1, 1, 2], [1, 2, 1], [1, 2, 2]], "count": 8}'
+        echo '{"id": 2, "cells": [], "count": 0}'
+        echo '{"cells": [[2, 1, 0], [2, 1, 1], [2, 1, 2]], "count": 3}'
+        echo '{"cells": [], "count": 0}'
+    } >"$work/want"
+    run 0 grid "$work/in"
+    same_bytes "$work/out" "$work/want"
+    [[ -s $work/err ]] && fail "stderr not empty"
+    cp "$work/in" "$work/stdin"
+    run 0 grid
+    same_bytes "$work/out" "$work/want"
+    run 0 grid -
+    same_bytes "$work/out" "$work/want"
+    rm "$work/stdin"
+    run 0 grid --help
+    for phrase in '"grid"' '"origin"' '"cell_size"' '"counts"' '"cells"' '"count"' "rounded once to the nearest double" \
+        "lexicographic" "touching counts" "EXIT STATUS"; do
+        contains "$work/out" "$phrase"
+    done
+    run 0 --help
+    contains "$work/out" "grid"
+    run 2 grid "$work/does-not-exist.jsonl"
+    contains "$work/err" "cannot open"
+    run 2 grid "$work"
+    contains "$work/err" "directory"
+    run 2 grid --frobnicate
+    ;;
+grid_bad_lines)
+    # Each bad line gets its error line naming the field, the run goes on, exit 1.
+    g='"origin": [0, 0, 0], "cell_size": [1, 1, 1]'
+    c='"cylinder": {"center": [1, 1, 1], "axis": [0, 0, 1], "radius": 1, "height": 1}'
+    {
+        echo "{\"id\": 1, $c}"
+        echo "{\"id\": 2, \"grid\": {$g, \"counts\": [2.5, 1, 1]}, $c}"
+        echo "{\"id\": 3, \"grid\": {\"origin\": [0, 0, 0], \"cell_size\": [1, 0, 1], \"counts\": [1, 1, 1]}, $c}"
+        echo "{\"id\": 4, \"grid\": {$g, \"counts\": [-1, 1, 1]}, $c}"
+        echo "{\"id\": 5, \"grid\": {$g, \"counts\": [1, 1, 18446744073709551615]}, $c}"
+        echo "{\"id\": 6, \"grid\": {$g, \"counts\": [1, 9007199254740993, 1]}, $c}"
+        echo "{\"id\": 7, \"grid\": {\"origin\": [0, 0, 0], \"cell_size\": [1e300, 1, 1], \"counts\": [1000000000, 1, 1]}, $c}"
+        echo "{\"id\": 8, \"grid\": {$g, \"counts\": [1, 1]}, $c}"
+        echo "{\"id\": 9, \"grid\": {$g, \"counts\": [1, 1, 1]}, \"cylinder\": {\"center\": [1, 1, 1], \"axis\": [0, 0, 1], \"radius\": -1, \"height\": 1}}"
+        echo ""
+        echo "{\"id\": 11, \"grid\": {$g, \"counts\": [1, 1, 1], \"counts\": [2, 2, 2]}, $c}"
+        echo "{\"id\": 12, \"grid\": {$g, \"counts\": [2, 2, 2]}, $c}"
+        echo "{\"id\": 13, \"grid\": [1, 2, 3], $c}"
+        echo "{\"id\": 14, \"grid\": {\"origin\": [0, 0, 1e999], \"cell_size\": [1, 1, 1], \"counts\": [1, 1, 1]}, $c}"
+    } >"$work/in"
+    {
+        echo '{"id": 1, "error": "line 1: grid: missing"}'
+        echo '{"id": 2, "error": "line 2: grid.counts: expected an array of 3 integers"}'
+        echo '{"id": 3, "error": "line 3: grid.cell_size[1]: is not positive"}'
+        echo '{"id": 4, "error": "line 4: grid.counts[0]: is negative"}'
+        echo '{"id": 5, "error": "line 5: grid.counts[2]: exceeds 2^53"}'
+        echo '{"id": 6, "error": "line 6: grid.counts[1]: exceeds 2^53"}'
+        echo '{"id": 7, "error": "line 7: grid.counts[0]: makes the far bound origin + counts*cell_size overflow the double range"}'
+        echo '{"id": 8, "error": "line 8: grid.counts: expected an array of 3 integers"}'
+        echo '{"id": 9, "error": "line 9: cylinder.radius: is negative"}'
+        echo '{"error": "line 10: empty line"}'
+        echo '{"id": 11, "error": "line 11: grid.counts: duplicate key"}'
+        echo '{"id": 12, "cells": [[0, 0, 0], [0, 0, 1], [0, 1, 0], [0, 1, 1], [1, 0, 0], [1, 0, 1], [1, 1, 0], [1, 1, 1]], "count": 8}'
+        echo '{"id": 13, "error": "line 13: grid: expected an object"}'
+        echo '{"id": 14, "error": "line 14: grid.origin[2]: out of double range"}'
+    } >"$work/want"
+    run 1 grid "$work/in"
+    same_bytes "$work/out" "$work/want"
+    ;;
+grid_vs_intersect)
+    # The grid's answer equals `intersect` asked about every cell box (dyadic bounds, printed exactly),
+    # for cylinders tangent to cell faces, a disk in a grid plane, a segment on a grid line, an oblique one.
+    grid='"grid": {"origin": [-1, -1, -0.5], "cell_size": [0.5, 0.5, 0.75], "counts": [6, 5, 4]}'
+    cyls=(
+        '{"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 0.5, "height": 1.5}'
+        '{"center": [0.25, 0.5, 0.25], "axis": [1, 2, 2], "radius": 0.25, "height": 3}'
+        '{"center": [0, 0, 1], "axis": [0, 0, -1], "radius": 1, "height": 0}'
+        '{"center": [0, 0, 0.25], "axis": [1, 0, 0], "radius": 0, "height": 1}'
+        '{"center": [3, 0, 0], "axis": [1, 1, 1], "radius": 1, "height": 1}'
+    )
+    for n in "${!cyls[@]}"; do
+        echo "{$grid, \"cylinder\": ${cyls[$n]}}" >"$work/in"
+        run 0 grid "$work/in"
+        sed -e 's/.*"cells": \[\(.*\)\], "count".*/\1/' -e 's/\], \[/\n/g' -e 's/[][ ]//g' "$work/out" | grep . >"$work/grid_cells" || true
+        awk -v cyl="${cyls[$n]}" 'BEGIN {
+            for (i = 0; i < 6; ++i) for (j = 0; j < 5; ++j) for (k = 0; k < 4; ++k)
+                printf "{\"id\": \"%d,%d,%d\", \"box\": {\"min\": [%.17g, %.17g, %.17g], \"max\": [%.17g, %.17g, %.17g]}, \"cylinder\": %s}\n",
+                    i, j, k, -1 + 0.5 * i, -1 + 0.5 * j, -0.5 + 0.75 * k, -1 + 0.5 * (i + 1), -1 + 0.5 * (j + 1), -0.5 + 0.75 * (k + 1), cyl
+        }' >"$work/cells_in"
+        run 0 intersect "$work/cells_in"
+        grep '"intersect": true' "$work/out" | sed 's/{"id": "\([^"]*\)".*/\1/' >"$work/intersect_cells" || true
+        same_bytes "$work/grid_cells" "$work/intersect_cells"
+        [[ -s $work/grid_cells ]] || fail "cylinder $n: no cells (the case is meant to hit)"
+    done
     ;;
 *)
     echo "unknown case $case_name" >&2

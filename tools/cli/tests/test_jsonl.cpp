@@ -1,5 +1,6 @@
 // Unit tests of the JSON Lines layer of the boxcyl tool (tools/cli/jsonl_query.hpp): number
-// conversion, structure checks and messages, id echo, output format, line accounting.
+// conversion, structure checks and messages, id echo, output format, line accounting, hostile input
+// (truncated lines, invalid UTF-8, huge lines, duplicate keys, numbers out of range).
 #include <gtest/gtest.h>
 
 #include <bit>           // std::bit_cast for bit-exact comparison
@@ -11,6 +12,8 @@
 #include <string>
 #include <system_error>  // std::errc
 #include <vector>
+
+#include <nlohmann/json.hpp>  // outputs must be valid JSON (and so valid UTF-8)
 
 #include "jsonl_query.hpp"
 #include "options.hpp"
@@ -375,6 +378,165 @@ TEST(JsonlStream, OnlyNewlinesAreEmptyLines) {
     EXPECT_EQ(out.str(),
               "{\"error\": \"line 1: empty line\"}\n{\"error\": \"line 2: empty line\"}\n"
               "{\"error\": \"line 3: empty line\"}\n");
+}
+
+
+// --- hostile input (issue 7): every bad line gets its error line, the run goes on ---
+
+const std::string kGood = R"({"id": 1, )" + kBox + ", " + kCyl + "}";
+
+// The output line must be one JSON object (nlohmann's parser also rejects invalid UTF-8) holding an
+// "error" that starts with `prefix`; returns the error.
+std::string error_text(const LineAnswer& a, const std::string& prefix) {
+    EXPECT_FALSE(a.good) << a.text;
+    const nlohmann::json j = nlohmann::json::parse(a.text, nullptr, false);
+    EXPECT_TRUE(j.is_object()) << "not valid JSON: " << a.text;
+    if (!j.is_object() || !j.contains("error") || !j["error"].is_string()) {
+        ADD_FAILURE() << "no error in " << a.text;
+        return {};
+    }
+    const std::string e = j["error"].get<std::string>();
+    EXPECT_EQ(e.rfind(prefix, 0), 0u) << "error '" << e << "' does not start with '" << prefix << "'";
+    return e;
+}
+
+struct StreamResult {
+    std::vector<std::string> lines;
+    std::size_t bad;
+};
+StreamResult run_stream(const std::string& input, const RunOptions& opt = make_run_options("inequalities", "filtered")) {
+    std::istringstream in(input);
+    std::ostringstream out;
+    const std::size_t bad = process_stream(in, out, opt);
+    return {lines_of(out.str()), bad};
+}
+
+TEST(JsonlHostile, TruncatedLastLineAtEveryByteGetsItsErrorLine) {
+    // A good line, then the same line cut after k bytes with no newline (a writer killed mid-line):
+    // every cut is invalid JSON and must get exactly one error line naming line 2.
+    for (std::size_t k = 1; k < kGood.size(); ++k) {
+        const StreamResult r = run_stream(kGood + "\n" + kGood.substr(0, k));
+        ASSERT_EQ(r.lines.size(), 2u) << "cut after " << k << " bytes";
+        EXPECT_EQ(r.lines[0], R"({"id": 1, "intersect": true})");
+        EXPECT_EQ(r.bad, 1u) << "cut after " << k << " bytes";
+        error_text({r.lines[1], false}, "line 2: invalid JSON: ");
+    }
+    // The id is echoed once it is complete; a cut inside a number is named as such.
+    EXPECT_EQ(answer_line(kGood.substr(0, kGood.find("\"radius\": 1") + 11) + ".", 2, make_run_options("inequalities", "filtered")).text,
+              R"({"id": 1, "error": "line 2: invalid JSON: column 125: syntax error while parsing value - invalid number; expected digit after '.'; last read: '1.'"})");
+}
+
+TEST(JsonlHostile, InvalidUtf8IsABadLineAndTheOutputStaysValidUtf8) {
+    const RunOptions opt = make_run_options("inequalities", "filtered");
+    const std::string tail = ", " + kBox + ", " + kCyl + "}";
+    const std::string cases[] = {
+        R"({"id": ")" "\xff" R"(")" + tail,                 // a byte that is never UTF-8
+        R"({"note": "caf)" "\xc3" R"(")" + tail,             // a truncated 2-byte sequence
+        R"({"note": ")" "\xc0\xaf" R"(")" + tail,            // an overlong encoding of '/'
+        R"({"note": ")" "\xed\xa0\x80" R"(")" + tail,        // a UTF-16 surrogate encoded in UTF-8
+        R"({"note": ")" "\xf4\x90\x80\x80" R"(")" + tail,    // beyond U+10FFFF
+        R"({"n)" "\xfe" R"(ote": 1)" + tail,                 // in a key
+    };
+    for (const std::string& line : cases) {
+        const std::string e = error_text(answer_line(line, 3, opt), "line 3: invalid JSON: ");
+        EXPECT_NE(e.find("ill-formed UTF-8 byte"), std::string::npos) << e;
+    }
+    // Outside strings an invalid byte is a syntax error like any other.
+    error_text(answer_line("\xff" + tail, 4, opt), "line 4: invalid JSON: column 1: syntax error");
+    // Valid non-ASCII text anywhere in a string is fine, and an id with it is echoed unchanged.
+    EXPECT_EQ(answer_line(R"({"id": "Zürich ✓ 𝄞", "note": "日本")" + tail, 5, opt).text,
+              R"({"id": "Zürich ✓ 𝄞", "intersect": true})");
+    // A stream with invalid UTF-8 lines keeps its line count and order.
+    const StreamResult r = run_stream(kGood + "\n" + cases[0] + "\n" + "\xc3\x28\n" + kGood + "\n");
+    ASSERT_EQ(r.lines.size(), 4u);
+    EXPECT_EQ(r.bad, 2u);
+    error_text({r.lines[1], false}, "line 2: ");
+    error_text({r.lines[2], false}, "line 3: ");
+    EXPECT_EQ(r.lines[3], R"({"id": 1, "intersect": true})");
+}
+
+TEST(JsonlHostile, EmptyAndBlankLines) {
+    const RunOptions opt = make_run_options("inequalities", "filtered");
+    for (const char* blank : {"", " ", "\t", "\r", " \t \r", "\r\r"})
+        EXPECT_EQ(answer_line(blank, 9, opt).text, R"({"error": "line 9: empty line"})") << '"' << blank << '"';
+    // NUL bytes are not whitespace: a line of them is invalid JSON, not an empty line.
+    error_text(answer_line(std::string(3, '\0'), 9, opt), "line 9: invalid JSON: ");
+    const StreamResult r = run_stream("\n" + kGood + "\n\r\n  \n" + kGood);
+    ASSERT_EQ(r.lines.size(), 5u);
+    EXPECT_EQ(r.bad, 3u);
+    EXPECT_EQ(r.lines[0], R"({"error": "line 1: empty line"})");
+    EXPECT_EQ(r.lines[2], R"({"error": "line 3: empty line"})");
+    EXPECT_EQ(r.lines[3], R"({"error": "line 4: empty line"})");
+    EXPECT_EQ(r.lines[4], R"({"id": 1, "intersect": true})");
+}
+
+TEST(JsonlHostile, HugeLinesOf10MB) {
+    const RunOptions opt = make_run_options("inequalities", "filtered");
+    const std::size_t mb10 = 10u << 20;
+    // Good queries padded to 10 MB (a long ignored string, long whitespace) are answered.
+    EXPECT_EQ(answer_line(R"({"id": 1, "pad": ")" + std::string(mb10, 'x') + "\", " + kBox + ", " + kCyl + "}", 1, opt).text,
+              R"({"id": 1, "intersect": true})");
+    EXPECT_EQ(answer_line(kGood + std::string(mb10, ' '), 2, opt).text, R"({"id": 1, "intersect": true})");
+    // A 10 MB decimal literal is still the nearest double: 0.000…0001 underflows to radius 0 (valid).
+    EXPECT_EQ(answer_line("{" + kBox + R"(, "cylinder": {"center": [2, 0.5, 0.5], "axis": [0, 0, 1], "radius": 0.)" +
+                              std::string(mb10, '0') + R"(1, "height": 1}})",
+                          3, opt)
+                  .text,
+              R"({"intersect": false})");
+    // A 10 MB integer is beyond the double range.
+    EXPECT_EQ(answer_line("{" + kBox + R"(, "cylinder": {"center": [2, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1)" +
+                              std::string(mb10, '0') + R"(, "height": 1}})",
+                          4, opt)
+                  .text,
+              R"({"error": "line 4: cylinder.radius: out of double range"})");
+    // 10 MB of nesting is refused early (no deep DOM, no deep recursion); 256 levels are fine.
+    EXPECT_EQ(answer_line(std::string(mb10, '['), 5, opt).text,
+              R"({"error": "line 5: invalid JSON: nested deeper than 256 levels"})");
+    EXPECT_EQ(answer_line(R"({"id": 6, "deep": )" + std::string(255, '[') + std::string(255, ']') + ", " + kBox + ", " + kCyl + "}", 6, opt).text,
+              R"({"id": 6, "intersect": true})");
+    EXPECT_EQ(answer_line(R"({"id": 7, "deep": )" + std::string(256, '[') + std::string(256, ']') + ", " + kBox + ", " + kCyl + "}", 7, opt).text,
+              R"({"id": 7, "error": "line 7: invalid JSON: nested deeper than 256 levels"})");
+    // 10 MB of garbage between good lines changes nothing around it.
+    const StreamResult r = run_stream(kGood + "\n" + std::string(mb10, '#') + "\n" + kGood + "\n");
+    ASSERT_EQ(r.lines.size(), 3u);
+    EXPECT_EQ(r.bad, 1u);
+    EXPECT_EQ(r.lines[0], R"({"id": 1, "intersect": true})");
+    error_text({r.lines[1], false}, "line 2: invalid JSON: column 1: syntax error");
+    EXPECT_LT(r.lines[1].size(), 300u);  // the message quotes only a short piece of the line
+    EXPECT_EQ(r.lines[2], R"({"id": 1, "intersect": true})");
+}
+
+TEST(JsonlHostile, DuplicateKeysAnywhereMakeTheLineBad) {
+    const std::string tail = ", " + kBox + ", " + kCyl + "}";
+    EXPECT_EQ(error_of(R"({"id": 1, "id": 2)" + tail), "line 7: id: duplicate key");
+    EXPECT_EQ(error_of(R"({"extra": {"a": 1, "a": 1})" + tail), "line 7: extra.a: duplicate key");  // even in ignored keys
+    EXPECT_EQ(error_of(R"({"extra": [0, {"a": 1, "a": 1}])" + tail), "line 7: extra[1].a: duplicate key");
+    // Keys are compared after unescaping: "r\u0061dius" is "radius".
+    EXPECT_EQ(error_of("{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 1, "r\u0061dius": 2, "height": 1}})"),
+              "line 7: cylinder.radius: duplicate key");
+    EXPECT_EQ(error_of(R"({"box": {"center": [0, 0, 0], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [1, 1, 1]}})" +
+                       (", " + kCyl + "}")),
+              "line 7: box.axes: duplicate key");
+    // The same key in different objects is no duplicate.
+    EXPECT_TRUE(parse_line(R"({"a": {"x": 1}, "b": {"x": 1})" + tail, 1).query);
+}
+
+TEST(JsonlHostile, NumbersOutOfRangeNameTheirField) {
+    const std::string tail = ", " + kBox + ", " + kCyl + "}";
+    // Built by appending: `"1" + std::string` trips GCC 12's false -Wrestrict (bug 105329).
+    const std::string digits400 = std::string("1") + std::string(400, '0');
+    EXPECT_EQ(error_of("{" + kBox + R"(, "cylinder": {"center": [0, 0, )" + digits400 + R"(], "axis": [0, 0, 1], "radius": 1, "height": 1}})"),
+              "line 7: cylinder.center[2]: out of double range");
+    EXPECT_EQ(error_of(R"({"box": {"min": [-)" + digits400 + R"(, 0, 0], "max": [1, 1, 1]}, )" + kCyl + "}"),
+              "line 7: box.min[0]: out of double range");
+    EXPECT_EQ(error_of(R"({"box": {"center": [0, 0, 0], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [1, 1.8e308, 1]}, )" + kCyl + "}"),
+              "line 7: box.extents[1]: out of double range");
+    // Even in an ignored key: a number the tool cannot represent is never silently dropped.
+    EXPECT_EQ(error_of(R"({"extra": {"x": [1, -1e309]})" + tail), "line 7: extra.x[1]: out of double range");
+    // Underflow is in range: the nearest double, possibly a signed zero.
+    EXPECT_EQ(bits(parse_number("-1e-400")), bits(-0.0));
+    EXPECT_EQ(bits(parse_number(std::string("-0.") + std::string(400, '0') + "1")), bits(-0.0));
+    EXPECT_EQ(bits(parse_number(std::string("-") + std::string(308, '9'))), bits(-1e308));
 }
 
 }  // namespace

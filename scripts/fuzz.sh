@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (fuzz/) with clang and ASan + UBSan and runs each for SECONDS (default 30).
+# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   targets: jsonl query (default both)
+# The seed corpora (fuzz/corpus/<t>) and kept findings (fuzz/regressions/<t>) are read, never written;
+# inputs libFuzzer finds new coverage with go to $BUILD_DIR/corpus/<t>, crashes to $BUILD_DIR/findings/<t>.
+# Exits non-zero on any finding (crash, sanitizer report, wrong answer, timeout, out of memory):
+# keep the input in fuzz/regressions/<t>/ once fixed, where CTest replays it (test fuzz.replay.<t>).
+# BUILD_DIR (default build-fuzz), JOBS and FUZZ_CXX (default clang++-14) may be overridden.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-30}"
+shift || true
+targets=("$@")
+((${#targets[@]})) || targets=(jsonl query)
+bash scripts/deps.sh clang-14 libclang-rt-14-dev
+build="${BUILD_DIR:-build-fuzz}"
+jobs="${JOBS:-$(nproc)}"
+cxx="${FUZZ_CXX:-clang++-14}"
+san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+# Everything is instrumented for coverage (fuzzer-no-link); only the fuzz executables link libFuzzer.
+cmake -S . -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Fuzz \
+      -DCMAKE_CXX_FLAGS_FUZZ="-O1 -g -fsanitize=fuzzer-no-link $san" -DCMAKE_EXE_LINKER_FLAGS_FUZZ="$san" \
+      -DBOXCYL_BUILD_TESTS=OFF -DBOXCYL_BUILD_TOOLS=ON -DBOXCYL_BUILD_FUZZERS=ON -DBOXCYL_INSTALL=OFF \
+      -DBOXCYL_BUILD_PYTHON=OFF >/dev/null
+cmake --build "$build" -j "$jobs" --target "${targets[@]/#/fuzz_}"
+
+export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+status=0
+for t in "${targets[@]}"; do
+    corpus="$build/corpus/$t"
+    findings="$build/findings/$t"
+    mkdir -p "$corpus" "$findings"
+    max_len=8192  # several JSON lines
+    [[ $t == query ]] && max_len=256  # a whole query is < 150 bytes in the decoder's format
+    echo "== fuzz_$t for ${seconds}s" >&2
+    if ! "$build/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 -max_len="$max_len" \
+            -print_final_stats=1 -artifact_prefix="$findings/" \
+            "$corpus" "fuzz/corpus/$t" "fuzz/regressions/$t"; then
+        echo "FUZZ FINDING in fuzz_$t: see $findings/ (reproduce: $build/fuzz/fuzz_$t FILE)" >&2
+        status=1
+    fi
+done
+exit $status
