@@ -6,7 +6,8 @@
 // the batch forms _intersects_aligned / _intersects_oriented over float64 arrays whose leading length
 // is N or 1 (broadcast). Batches validate every element first (a ValueError names field and index,
 // "boxes[17].max[0]: is less than boxes[17].min[0]"), then run boxcyl::intersects with the GIL
-// released. The default is the library's exact query.
+// released — through the batch API (boxcyl/batch.hpp: SIMD filter, all cores) when one cylinder meets
+// many boxes with the default exact query. The default is the library's exact query.
 #include <pybind11/numpy.h>     // float64 input arrays, bool output arrays
 #include <pybind11/pybind11.h>  // the bindings
 #include <pybind11/stl.h>       // std::array <-> Python sequences
@@ -15,7 +16,9 @@
 #include <initializer_list>  // the fields of one batch
 #include <stdexcept>         // std::domain_error, std::invalid_argument (mapped to ValueError)
 #include <string>            // element names in messages
+#include <vector>            // the batch API's box arrays
 
+#include "boxcyl/batch.hpp"            // one cylinder against many boxes: SIMD filter + exact fallback
 #include "boxcyl/number/interval.hpp"  // fp_environment_ok
 #include "boxcyl/query.hpp"
 #include "boxcyl/version.hpp"
@@ -105,10 +108,12 @@ std::string element_name(const char* singular, const char* plural, bool single, 
 }
 
 // The batch loop shared by both box kinds: box_at(i) builds box i. All of it runs without the GIL.
-template <class BoxAt>
+// With one cylinder (broadcast) and the default exact query, batched(cylinder, result) answers through
+// boxcyl::batch (the same exact answers, SIMD filter and threads); otherwise the scalar loop does.
+template <class BoxAt, class Batched>
 py::array_t<bool> run_batch(py::ssize_t n, BoxAt box_at, bool box_single, const Rows& center, const Rows& axis,
                             const Rows& radius, const Rows& height, bool cylinder_single,
-                            boxcyl::Algorithm algorithm, boxcyl::Arithmetic arithmetic) {
+                            boxcyl::Algorithm algorithm, boxcyl::Arithmetic arithmetic, Batched batched) {
     py::array_t<bool> out(n);
     bool* result = out.mutable_data();
     {
@@ -122,6 +127,11 @@ py::array_t<bool> run_batch(py::ssize_t n, BoxAt box_at, bool box_single, const 
             const Cylinder cyl = cylinder_at(center, axis, radius, height, i);
             if (!boxcyl::validate(cyl, "").ok())
                 validated(cyl, element_name("cylinder", "cylinders", cylinder_single, i).c_str());
+        }
+        if (cylinder_single && !box_single && n > 0 && algorithm == boxcyl::Algorithm::inequalities &&
+            arithmetic == boxcyl::Arithmetic::filtered) {
+            batched(cylinder_at(center, axis, radius, height, 0), result);
+            return out;
         }
         const boxcyl::QueryOptions opt{algorithm, arithmetic};
         py::ssize_t i = 0;
@@ -151,8 +161,20 @@ py::array_t<bool> intersects_aligned(const F64Array& min, const F64Array& max, b
         const double* b = hi[i];
         return AlignedBox{{a[0], a[1], a[2]}, {b[0], b[1], b[2]}};
     };
+    // The batch API takes aligned boxes as six arrays.
+    auto batched = [&](const Cylinder& cyl, bool* result) {
+        std::vector<double> v[6];
+        for (auto& a : v) a.resize(static_cast<std::size_t>(n));
+        for (py::ssize_t i = 0; i < n; ++i)
+            for (int j = 0; j < 3; ++j) {
+                v[j][static_cast<std::size_t>(i)] = lo[i][j];
+                v[3 + j][static_cast<std::size_t>(i)] = hi[i][j];
+            }
+        boxcyl::batch::intersects(cyl, boxcyl::batch::AlignedBoxes<double>{v[0], v[1], v[2], v[3], v[4], v[5]},
+                                  std::span<bool>(result, static_cast<std::size_t>(n)), {0});
+    };
     return run_batch(n, box_at, box_single, Rows(center, 3), Rows(axis, 3), Rows(radius, 1), Rows(height, 1),
-                     cylinder_single, algorithm, arithmetic);
+                     cylinder_single, algorithm, arithmetic, batched);
 }
 
 py::array_t<bool> intersects_oriented(const F64Array& box_center, const F64Array& axes, const F64Array& extents,
@@ -176,8 +198,15 @@ py::array_t<bool> intersects_oriented(const F64Array& box_center, const F64Array
                            {Vec{a[0], a[1], a[2]}, Vec{a[3], a[4], a[5]}, Vec{a[6], a[7], a[8]}},
                            {x[0], x[1], x[2]}};
     };
+    auto batched = [&](const Cylinder& cyl, bool* result) {
+        std::vector<OrientedBox> boxes;
+        boxes.reserve(static_cast<std::size_t>(n));
+        for (py::ssize_t i = 0; i < n; ++i) boxes.push_back(box_at(i));
+        boxcyl::batch::intersects(cyl, std::span<const OrientedBox>(boxes),
+                                  std::span<bool>(result, static_cast<std::size_t>(n)), {0});
+    };
     return run_batch(n, box_at, box_single, Rows(center, 3), Rows(axis, 3), Rows(radius, 1), Rows(height, 1),
-                     cylinder_single, algorithm, arithmetic);
+                     cylinder_single, algorithm, arithmetic, batched);
 }
 
 }  // namespace

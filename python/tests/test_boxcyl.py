@@ -289,3 +289,43 @@ def test_readme_example_runs():
         scope = {}
         exec(compile(block, "python/README.md", "exec"), scope)
         assert scope["hits"].dtype == np.bool_ and scope["hits"].shape == (100_000,)
+
+
+def _random_rotations(rng, n):
+    """Rotation matrices (rows = box axes, rounded to float64) from random unit quaternions."""
+    q = rng.normal(size=(n, 4))
+    q /= np.linalg.norm(q, axis=1, keepdims=True)
+    w, x, y, z = q.T
+    return np.stack([
+        np.stack([1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)], axis=1),
+        np.stack([2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)], axis=1),
+        np.stack([2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)], axis=1),
+    ], axis=1)
+
+
+def test_one_cylinder_batch_equals_scalar():
+    """One cylinder against 3000 boxes goes through the C++ batch API (SIMD filter, threads); the
+    answers must equal the scalar loop's (the same cylinder repeated per box) and the scalar query's."""
+    rng = np.random.default_rng(SEED + 5)
+    n = 3000
+    cyl = boxcyl.Cylinder(center=(0.25, -0.5, 1.0), axis=(1.0, 2.0, -0.5), radius=1.5, height=4.0)
+    per_box = (np.tile(cyl.center, (n, 1)), np.tile(cyl.axis, (n, 1)), np.full(n, cyl.radius), np.full(n, cyl.height))
+    lo = rng.uniform(-4, 4, size=(n, 3))
+    size = rng.uniform(0, 1.5, size=(n, 3)) * (rng.uniform(size=(n, 3)) > 0.1)  # 10% flat sides
+    aligned = np.stack([lo, lo + size], axis=1)
+    batch = boxcyl.intersects_aligned(aligned, cyl)
+    assert 0.1 < batch.mean() < 0.9, "the set should mix hits and misses"
+    assert np.array_equal(batch, boxcyl.intersects_aligned(aligned, per_box))
+    for i in range(0, n, 97):
+        box = boxcyl.AlignedBox(min=aligned[i, 0], max=aligned[i, 1])
+        assert batch[i] == boxcyl.intersects(box, cyl), (i, box, cyl)
+
+    centers = rng.uniform(-4, 4, size=(n, 3))
+    axes = _random_rotations(rng, n)
+    extents = rng.uniform(0, 1.0, size=(n, 3))
+    obatch = boxcyl.intersects_oriented((centers, axes, extents), cyl)
+    assert 0.1 < obatch.mean() < 0.9
+    assert np.array_equal(obatch, boxcyl.intersects_oriented((centers, axes, extents), per_box))
+    for i in range(0, n, 97):
+        box = boxcyl.OrientedBox(center=centers[i], axes=axes[i], extents=extents[i])
+        assert obatch[i] == boxcyl.intersects(box, cyl), (i, box, cyl)

@@ -1,0 +1,219 @@
+// The batch API (boxcyl/batch.hpp, issue #5): per-box cost of the batch against the scalar exact
+// default on the same data, single- and multi-threaded, the fraction of lanes that went to the scalar
+// path, and the throughput on 10 million double aligned boxes beside the memory bandwidth measured on
+// the same arrays in the same run.
+//
+// Data (generated before any timing, fixed seeds; tests/support/batch_cases.hpp, from the tests'
+// CaseGenerator): for each of 32 cylinders, 2048 aligned and 2048 oriented boxes around it, about
+// half hitting.
+//   mixed:   the CaseGenerator cylinders as they come (1/12 segments, 1/12 disks, tiny axis components)
+//   regular: the first 32 seeds whose cylinder has r > 0 and h > 0
+//   10M:     10,000,000 aligned boxes (structure of arrays, 480 MB) around one regular cylinder:
+//            `voxels` (sides 1/64 of the cylinder's reach, uniform in its bounding box grown by half)
+//            and `random` (the batch_cases distribution: boxes up to the cylinder's size).
+// Counters: ns_per_box (CPU time per box; Google Benchmark prints it as seconds: "108.5s" is 108.5 ns),
+// exact_pct (% of lanes answered by the scalar path), hit_pct, boxes_per_s and GB_per_s of box data
+// (48 bytes per box) on real time, and for `stream_sum` the bandwidth of summing the same six arrays
+// (one thread, and all threads split like the batch).
+//
+// Run: build-batch/bench/bench_batch --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <algorithm>  // std::min
+#include <cstdint>    // std::uint64_t
+#include <cstdio>     // std::printf
+#include <thread>     // hardware_concurrency
+#include <vector>     // data
+
+#include "boxcyl/batch.hpp"
+#include "boxcyl/query.hpp"
+#include "support/batch_cases.hpp"
+
+namespace {
+
+using namespace boxcyl;
+using boxcyl::testing::BatchSet;
+
+constexpr std::size_t kSets = 32;
+constexpr std::size_t kBoxesPerSet = 2048;
+constexpr std::size_t kLarge = 10'000'000;
+
+struct Soa {
+    std::vector<double> v[6];
+    void add(const AlignedBox<double>& b) {
+        for (int j = 0; j < 3; ++j) v[j].push_back(b.min[j]), v[3 + j].push_back(b.max[j]);
+    }
+    batch::AlignedBoxes<double> view() const { return {v[0], v[1], v[2], v[3], v[4], v[5]}; }
+    std::size_t size() const { return v[0].size(); }
+};
+
+struct Set {
+    BatchSet boxes;
+    Soa soa;
+};
+
+bool regular(const Cylinder<double>& c) { return c.radius > 0 && c.height > 0; }
+
+std::vector<Set> make_sets(bool only_regular) {
+    std::vector<Set> sets;
+    for (std::uint64_t seed = 0xBE7C0000; sets.size() < kSets; ++seed) {
+        Set s{testing::random_batch(seed, kBoxesPerSet), {}};
+        if (only_regular && !regular(s.boxes.cylinder)) continue;
+        for (const AlignedBox<double>& b : s.boxes.aligned) s.soa.add(b);
+        sets.push_back(std::move(s));
+    }
+    return sets;
+}
+
+const std::vector<Set>& data(bool only_regular) {
+    static const std::vector<Set> mixed = make_sets(false), reg = make_sets(true);
+    return only_regular ? reg : mixed;
+}
+
+void report(benchmark::State& state, std::size_t boxes_per_pass, std::size_t exact) {
+    const double n = static_cast<double>(state.iterations()) * static_cast<double>(boxes_per_pass);
+    state.counters["ns_per_box"] = benchmark::Counter(n * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["exact_pct"] = 100.0 * static_cast<double>(exact) / n;
+    state.SetItemsProcessed(static_cast<std::int64_t>(n));
+}
+
+// The scalar exact default over every box of every set.
+void scalar(benchmark::State& state, bool only_regular, bool oriented) {
+    const std::vector<Set>& sets = data(only_regular);
+    std::size_t per_pass = 0;
+    for (auto _ : state) {
+        per_pass = 0;
+        for (const Set& s : sets) {
+            if (oriented) {
+                for (const OrientedBox<double>& b : s.boxes.oriented) benchmark::DoNotOptimize(boxcyl::intersects(b, s.boxes.cylinder));
+                per_pass += s.boxes.oriented.size();
+            } else {
+                for (const AlignedBox<double>& b : s.boxes.aligned) benchmark::DoNotOptimize(boxcyl::intersects(b, s.boxes.cylinder));
+                per_pass += s.boxes.aligned.size();
+            }
+        }
+    }
+    report(state, per_pass, 0);
+}
+
+// The batch, one call per cylinder.
+void batched(benchmark::State& state, bool only_regular, bool oriented, unsigned threads) {
+    const std::vector<Set>& sets = data(only_regular);
+    std::vector<std::uint64_t> mask(batch::mask_words(kBoxesPerSet));
+    std::size_t per_pass = 0, exact = 0;
+    for (auto _ : state) {
+        per_pass = 0;
+        for (const Set& s : sets) {
+            const batch::Stats st =
+                oriented ? batch::intersects(s.boxes.cylinder, std::span<const OrientedBox<double>>(s.boxes.oriented),
+                                             std::span<std::uint64_t>(mask), {threads})
+                         : batch::intersects(s.boxes.cylinder, s.soa.view(), std::span<std::uint64_t>(mask), {threads});
+            benchmark::DoNotOptimize(mask.data());
+            per_pass += st.boxes;
+            exact += st.exact_lanes;
+        }
+    }
+    report(state, per_pass, exact);
+}
+
+// ---- 10 million aligned boxes. ----
+
+struct Large {
+    Cylinder<double> cylinder;
+    Soa soa;
+};
+
+const Large& large(bool voxels) {
+    static const Large v = [] {
+        Large l;
+        BatchSet s;
+        for (std::uint64_t seed = 0xBE7C1000;; ++seed) {
+            s = testing::random_batch(seed, 0);
+            if (regular(s.cylinder)) break;
+        }
+        l.cylinder = s.cylinder;
+        const Cylinder<double>& c = l.cylinder;
+        const double reach = c.radius + c.height * 0.5;
+        testing::CaseGenerator gen(0xBE7C2000);
+        const double side = reach / 64;
+        for (std::size_t i = 0; i < kLarge; ++i) {
+            AlignedBox<double> b;
+            for (int j = 0; j < 3; ++j) {
+                b.min[j] = c.center[j] + 1.5 * reach * gen.uniform(-1, 1);
+                b.max[j] = b.min[j] + side;
+            }
+            l.soa.add(b);
+        }
+        return l;
+    }();
+    static const Large r = [] {
+        Large l;
+        for (std::uint64_t seed = 0xBE7C1000;; ++seed) {
+            if (!regular(testing::random_batch(seed, 0).cylinder)) continue;
+            const BatchSet t = testing::random_batch(seed, kLarge, testing::Profile::mixed, false);
+            l.cylinder = t.cylinder;
+            for (const AlignedBox<double>& b : t.aligned) l.soa.add(b);
+            return l;
+        }
+    }();
+    return voxels ? v : r;
+}
+
+constexpr double kBytesPerBox = 6 * sizeof(double);
+
+void large_batch(benchmark::State& state, bool voxels, unsigned threads) {
+    const Large& l = large(voxels);
+    std::vector<std::uint64_t> mask(batch::mask_words(kLarge));
+    std::size_t exact = 0, hits = 0;
+    for (auto _ : state) {
+        const batch::Stats st = batch::intersects(l.cylinder, l.soa.view(), std::span<std::uint64_t>(mask), {threads});
+        benchmark::DoNotOptimize(mask.data());
+        exact += st.exact_lanes;
+    }
+    for (std::uint64_t w : mask) hits += static_cast<std::size_t>(__builtin_popcountll(w));
+    const double n = static_cast<double>(state.iterations()) * kLarge;
+    state.counters["boxes_per_s"] = benchmark::Counter(n, benchmark::Counter::kIsRate);
+    state.counters["GB_per_s"] = benchmark::Counter(n * kBytesPerBox * 1e-9, benchmark::Counter::kIsRate);
+    state.counters["exact_pct"] = 100.0 * static_cast<double>(exact) / n;
+    state.counters["hit_pct"] = 100.0 * static_cast<double>(hits) / kLarge;
+}
+
+// The memory bandwidth on the same arrays: the sum of the six arrays, streamed once per pass, split
+// over the threads like the batch.
+void stream_sum(benchmark::State& state, bool voxels, unsigned threads) {
+    const Large& l = large(voxels);
+    const unsigned t = threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+    std::vector<double> partial(t * 8);  // a cache line apart
+    for (auto _ : state) {
+        batch::detail::for_each_range(kLarge / 64, t, [&](std::size_t b, std::size_t e, unsigned k) {
+            double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+            for (int a = 0; a < 6; ++a) {
+                const double* p = l.soa.v[a].data();
+                for (std::size_t i = b * 64; i < e * 64; i += 4) s0 += p[i], s1 += p[i + 1], s2 += p[i + 2], s3 += p[i + 3];
+            }
+            partial[k * 8] = (s0 + s1) + (s2 + s3);
+        });
+        benchmark::DoNotOptimize(partial.data());
+    }
+    const double n = static_cast<double>(state.iterations()) * kLarge;
+    state.counters["GB_per_s"] = benchmark::Counter(n * kBytesPerBox * 1e-9, benchmark::Counter::kIsRate);
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(scalar, mixed/aligned, false, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, mixed/aligned, false, false, 1u)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(scalar, mixed/oriented, false, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, mixed/oriented, false, true, 1u)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(scalar, regular/aligned, true, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, regular/aligned, true, false, 1u)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(scalar, regular/oriented, true, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, regular/oriented, true, true, 1u)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(large_batch, voxels/threads_1, true, 1u)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, voxels/threads_all, true, 0u)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(stream_sum, voxels/threads_1, true, 1u)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(stream_sum, voxels/threads_all, true, 0u)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, random/threads_1, false, 1u)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, random/threads_all, false, 0u)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+BENCHMARK_MAIN();

@@ -1,0 +1,434 @@
+// The SIMD filter of the batch API (batch.hpp): one cylinder, a vector of boxes per step. For each lane
+// it either proves the exact answer (a certain miss or a certain hit, for the inputs as given: every
+// double is the rational it denotes, u = axis/|axis| exactly, closed solids) or leaves the lane
+// undecided; batch.hpp sends undecided lanes to the scalar exact default (filtered.hpp). It never
+// decides wrongly; docs/robustness.md §8 derives every bound below, in short:
+//
+//  * Cylinder side, once per batch, in outward-rounded intervals (number/interval.hpp, sound in every
+//    rounding mode): a double vector û with δ_u ≥ max_j |u_j − û_j|, the cylinder's bounding box,
+//    ρ_u ≥ the cylinder's support radius along û, r_N ≥ r(1 + 2^-40), R2 ≤ r². H = h/2 must be exact.
+//  * Lane side, in plain double: a margin m̂ that would be > 0 for a certain answer, and a bound β̂ on
+//    its error, β̂ = K·(sum of the absolute values of the terms of m̂) + (terms for δ_u and for
+//    rounded intermediate points) + τ. Decided only when m̂ > β̂. Each margin is at most a few dozen
+//    operations deep, whose relative rounding error is ≤ γ_k ≤ k·2^-52/(1 − k·2^-52) in round-to-
+//    nearest (and in any rounding mode: 2^-52 is one ulp), with or without FMA contraction (a fused
+//    operation removes a rounding); K = 2^-46 covers k ≤ 40 with room, and every other bound term
+//    carries a relative slack of 2^-40 that covers the rounding of β̂ itself.
+//  * Overflow and underflow: a lane is eligible only if its coordinates relative to the cylinder's
+//    centre and its sizes are ≤ 2^200 (and the cylinder's ≤ 2^200), so no operation overflows (margins
+//    are at most quadratic); τ = 2^-800 covers every underflow loss (≤ 2^-1074 per rounding, amplified
+//    by at most 2^406 through later products). Lanes outside the range, and margins below τ, stay
+//    undecided: the scalar path answers them.
+//
+// Miss certificates (a separating direction n: the box lies where n·(X − C) < −(support radius of the
+// cylinder along n)), hit certificates (a point of the box, exactly, inside the cylinder):
+//   aligned:  the bounding boxes (exact comparisons); n = û (the slab along the axis); n = the
+//             direction from a box point to the nearest axis point (radial).  Hit: the box point
+//             nearest to an axis point, after one step of alternating projection box ↔ axis segment.
+//   oriented: the same with n = e_x, e_y, e_z (box support Σ e_i|A_ij|), û, radial; the hit point is
+//             K + Σ ξ_i A_i with |ξ_i| ≤ e_i exactly (clamped box coordinates).
+// Oriented boxes are taken with their axes exactly as given (the parallelepiped they span); the
+// bounds need |A_ij| ≤ 2 (checked per lane) and nothing about orthonormality.
+//
+// SIMD: std::experimental::simd's native ABI for double, chosen at compile time: 2 lanes with the
+// default x86-64 flags (SSE2, runs on any x86-64), 4 with -mavx2, 8 with -mavx512f (-march=native).
+#pragma once
+
+#include <experimental/simd>
+
+#include <algorithm>  // std::max
+#include <cmath>      // std::fabs, std::ilogb, std::ldexp
+#include <cstddef>    // std::size_t
+
+#include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/number/interval.hpp"
+
+namespace boxcyl::batch {
+
+namespace stdx = std::experimental;
+
+// One vector of lanes: the widest the compile flags allow.
+using Lanes = stdx::native_simd<double>;
+using LaneMask = Lanes::mask_type;
+inline constexpr std::size_t lane_count = Lanes::size();
+static_assert(64 % lane_count == 0, "a vector of lanes must not straddle a 64-bit mask word");
+
+namespace detail {
+
+inline constexpr double kRel = 0x1p-46;     // K: relative rounding allowance of one margin
+inline constexpr double kAbs = 0x1p-800;    // τ: absolute underflow allowance
+inline constexpr double kLimit = 0x1p200;   // eligibility: magnitudes ≤ 2^200
+inline constexpr double kSlack = 1 + 0x1p-40;
+inline constexpr int kSteps = 8;  // alternating-projection steps towards a hit point (measured: 3 → 8 halves the undecided hits)
+
+// The cylinder's quantities, computed once (certified in intervals) and broadcast to every lane.
+struct CylinderFilter {
+    bool usable = false;            // false: every lane is left undecided (and the bounding-box test off)
+    double c[3]{};                  // C
+    double u[3]{};                  // û ≈ u = axis/|axis|
+    bool u_nonneg[3]{};             // û_j ≥ 0: which box bound is the far one along û
+    double du = 0;                  // δ_u(1 + 2^-40) rounded up, δ_u ≥ max_j |u_j − û_j|
+    double h = 0;                   // H = height/2, exact
+    double rho_u = 0;               // ≥ H|u·û| + r·√(|û|² − (u·û)²): the support radius along û
+    double r_n = 0;                 // ≥ r(1 + 2^-40): the support radius r|n| for |n| ≤ 1 + 2^-42, with slack
+    double r = 0;                   // r
+    double r2 = 0;                  // ≤ r²
+    double w[3]{};                  // ≥ the cylinder's half-width along e_j: H|u_j| + r√(1 − u_j²)
+    double box_lo[3]{}, box_hi[3]{};  // the cylinder's bounding box, outward (±∞: test off)
+};
+
+inline bool eligible(double x) { return std::fabs(x) <= kLimit; }  // false for NaN and ±∞
+
+// √x for an enclosure of a quantity known to be ≥ 0 (a sum of squares may get a lower bound just
+// below 0 from outward rounding).
+inline Interval sqrt_nonneg(const Interval& x) { return sqrt(Interval(std::max(0.0, x.lo()), std::max(0.0, x.hi()))); }
+
+// An enclosure of u = a/|a|: exact ±1 for a single non-zero component, else a prescaled by a power of
+// two (exact unless a component lands below the normal range: then widened by one double each way)
+// and normalised in intervals.
+inline void unit_axis(const Vec3<double>& a, Interval out[3]) {
+    int nonzero = 0, which = 0;
+    double m = 0;
+    for (int j = 0; j < 3; ++j) {
+        if (a[j] != 0) ++nonzero, which = j;
+        m = std::max(m, std::fabs(a[j]));
+    }
+    if (nonzero == 1) {
+        for (int j = 0; j < 3; ++j) out[j] = Interval(j == which ? (a[j] > 0 ? 1.0 : -1.0) : 0.0);
+        return;
+    }
+    const int e = m > 0 ? std::ilogb(m) : 0;
+    Interval v[3];
+    for (int j = 0; j < 3; ++j) {
+        const double y = std::ldexp(a[j], -e);
+        v[j] = std::ldexp(y, e) == a[j] ? Interval(y) : Interval(boxcyl::detail::next_down(y), boxcyl::detail::next_up(y));
+    }
+    const Interval len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (int j = 0; j < 3; ++j) out[j] = v[j] / len;
+}
+
+inline CylinderFilter prepare(const Cylinder<double>& cyl) {
+    CylinderFilter f;
+    const double inf = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < 3; ++j) f.box_lo[j] = -inf, f.box_hi[j] = inf;
+    for (int j = 0; j < 3; ++j)
+        if (!eligible(cyl.center[j])) return f;
+    if (!eligible(cyl.radius) || !eligible(cyl.height) || !(cyl.radius >= 0) || !(cyl.height >= 0)) return f;
+    if (!(cyl.axis[0] != 0 || cyl.axis[1] != 0 || cyl.axis[2] != 0)) return f;
+    const double half = cyl.height * 0.5;
+    if (half * 2 != cyl.height) return f;  // h/2 rounded (h subnormal): leave it to the scalar path
+    Interval u[3];
+    unit_axis(cyl.axis, u);
+    const Interval H(half), r(cyl.radius);
+    double du = 0;
+    for (int j = 0; j < 3; ++j) {
+        f.c[j] = cyl.center[j];
+        f.u[j] = u[j].lo() * 0.5 + u[j].hi() * 0.5;  // any double: δ_u measures it
+        f.u_nonneg[j] = f.u[j] >= 0;
+        du = std::max({du, (Interval(u[j].hi()) - Interval(f.u[j])).hi(), (Interval(f.u[j]) - Interval(u[j].lo())).hi()});
+    }
+    if (!(du <= 0x1p-20)) return f;  // the oriented bounds use δ_u ≤ 1/4; a sane axis gives ~2^-52
+    f.du = (Interval(du) * Interval(kSlack)).hi();
+    f.h = half;
+    // Half-widths along e_j: H|u_j| + r√(u_k² + u_l²) (√(1 − u_j²) without cancellation).
+    for (int j = 0; j < 3; ++j) {
+        const Interval& uk = u[(j + 1) % 3];
+        const Interval& ul = u[(j + 2) % 3];
+        const Interval w = H * enclosure_abs(u[j]) + r * sqrt_nonneg(uk * uk + ul * ul);
+        f.w[j] = w.hi();
+        f.box_lo[j] = (Interval(cyl.center[j]) - w).lo();
+        f.box_hi[j] = (Interval(cyl.center[j]) + w).hi();
+    }
+    // Support radius along û: H|u·û| + r√(|û|² − (u·û)²).
+    const Interval uu = u[0] * Interval(f.u[0]) + u[1] * Interval(f.u[1]) + u[2] * Interval(f.u[2]);
+    const Interval nn = Interval(f.u[0]) * Interval(f.u[0]) + Interval(f.u[1]) * Interval(f.u[1]) +
+                        Interval(f.u[2]) * Interval(f.u[2]);
+    const Interval perp2 = nn - uu * uu;
+    const Interval perp = sqrt_nonneg(perp2);
+    f.rho_u = (H * enclosure_abs(uu) + r * perp).hi();
+    f.r_n = (r * Interval(kSlack)).hi();
+    f.r = cyl.radius;
+    f.r2 = std::max(0.0, (r * r).lo());
+    f.usable = eligible(f.rho_u) && eligible(f.r_n) && eligible(f.w[0]) && eligible(f.w[1]) && eligible(f.w[2]);
+    return f;
+}
+
+// What the filter proved for each lane: decided lanes answer `hit`; the others are undecided.
+struct LaneResult {
+    LaneMask decided;
+    LaneMask hit;
+};
+
+inline Lanes clamp(const Lanes& x, const Lanes& lo, const Lanes& hi) { return stdx::min(stdx::max(x, lo), hi); }
+
+// The certified tests at a box point w, given as v (relative to C) exact up to `ev` per component
+// (ev = 0 when v_j is within 2^-52|v_j| of w_j): with a = u·w,
+//   e_a ≥ |â − a|: K·Σ|û_j||v_j| (products, sums, and v's own rounding) + δ_u·Σ|v_j| + 2.5·ev + τ
+//   inside radially (|w|² − a² ≤ r²): (R2 − q̂) + â² > K(R2 + q̂ + â²) + e_a(2|â| + e_a) + ev(2Σ|v_j| + 3ev) + τ
+//   below the top (a ≤ H):      H − â > e_a + K(H + |â|);   above the bottom (a ≥ −H): H + â > the same
+// (|â² − a²| ≤ e_a(2|â| + e_a); |q̂ − |w|²| ≤ K·q̂ + Σ_j ev(2|v_j| + ev); Σ|û_j| ≤ √3(1 + 2^-40) and
+// δ_u ≤ 2^-20 give the 2.5).
+struct PointTests {
+    LaneMask radial, below_top, above_bottom;
+};
+inline PointTests point_tests(const CylinderFilter& f, const Lanes v[3], const Lanes& ev) {
+    const Lanes a = f.u[0] * v[0] + f.u[1] * v[1] + f.u[2] * v[2];
+    const Lanes sa = std::fabs(f.u[0]) * stdx::abs(v[0]) + std::fabs(f.u[1]) * stdx::abs(v[1]) +
+                     std::fabs(f.u[2]) * stdx::abs(v[2]);
+    const Lanes sv = stdx::abs(v[0]) + stdx::abs(v[1]) + stdx::abs(v[2]);
+    const Lanes ea = kRel * sa + f.du * sv + 2.5 * ev + kAbs;
+    const Lanes aa = stdx::abs(a);
+    const Lanes axial_bound = ea + kRel * (f.h + aa);
+    const Lanes q = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    const Lanes a2 = a * a;
+    const Lanes m = (f.r2 - q) + a2;
+    const Lanes bound = kRel * (f.r2 + q + a2) + ea * (2 * aa + ea) + ev * (2 * sv + 3 * ev) + kAbs;
+    return {m > bound, (f.h - a) > axial_bound, (f.h + a) > axial_bound};
+}
+
+// A certain hit from box points P_k (each exactly in the box): if the points that are radially inside
+// include one with a ≤ H and one with a ≥ −H, the segment between those two lies in the box (convex)
+// and radially inside (the distance to the axis line is convex), and a is affine along it, so one of
+// its points has |a| ≤ H: it lies in the cylinder. (One point with both is the plain case; two points
+// on either side of the end planes certify the hits of disks, h = 0, and of boxes over an end.)
+inline LaneMask certain_hit(const PointTests* p, int count) {
+    LaneMask low(false), high(false);
+    for (int k = 0; k < count; ++k) {
+        low = low || (p[k].radial && p[k].below_top);
+        high = high || (p[k].radial && p[k].above_bottom);
+    }
+    return low && high;
+}
+
+// Normalises n in place (n/|n|, rounded: any double vector is a valid direction) and reports the lanes
+// where that worked and |n| ≤ 1 + 2^-42 is certain: Σ n̂_j² computed ≤ 1 + 2^-42 gives
+// |n̂|² ≤ (1 + 2^-42)(1 + 2^-49) + 3·2^-1074 < (1 + 2^-42)² (r_n carries 1 + 2^-40).
+inline LaneMask normalise(Lanes n[3]) {
+    const Lanes nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    LaneMask ok = nn >= 0x1p-600 && nn <= 0x1p600;
+    Lanes s = 1;
+    stdx::where(ok, s) = stdx::sqrt(nn);
+    for (int j = 0; j < 3; ++j) n[j] = n[j] / s;
+    const Lanes n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    return ok && n2 <= 1 + 0x1p-42;
+}
+
+// The radial miss test along a lane direction n̂ (|n̂| ≤ 1 + 2^-42, `dir_ok`): the box's support along
+// n̂ relative to C is Ŝ⁺ with error ≤ K·err_s, and the cylinder's is H|u·n̂| + r√(|n̂|² − (u·n̂)²).
+// p̂ = û·n̂ is within e_p = K·Σ|û_j||n̂_j| + δ_u·Σ|n̂_j| + τ of u·n̂; with p_lo = max(0, |p̂| − e_p)
+// (rounded down: (·)(1 − 2^-50)), √(|n̂|² − (u·n̂)²) ≤ √(1 + 2^-40 − p_lo²) ≤ s_up, computed with the
+// factors (1 − 2^-50) on p_lo² and (1 + 2^-50) on the root that cover its four roundings. Miss if
+// −(Ŝ⁺ + H(|p̂| + e_p) + r·s_up) > K(err_s + H(|p̂| + e_p) + r·s_up) + τ.
+inline LaneMask radial_miss(const CylinderFilter& f, const Lanes n[3], const Lanes& s_plus, const Lanes& err_s) {
+    Lanes p = 0, tpu = 0, sn = 0;
+    for (int j = 0; j < 3; ++j) {
+        p += f.u[j] * n[j];
+        tpu += std::fabs(f.u[j]) * stdx::abs(n[j]);
+        sn += stdx::abs(n[j]);
+    }
+    const Lanes ap = stdx::abs(p);
+    const Lanes ep = kRel * tpu + f.du * sn + kAbs;
+    const Lanes p_lo = stdx::max(Lanes(0), (ap - ep) * (1 - 0x1p-50));
+    const Lanes s_up = stdx::sqrt(stdx::max(Lanes(0), (1 + 0x1p-40) - (p_lo * p_lo) * (1 - 0x1p-50))) * (1 + 0x1p-50);
+    const Lanes axial = f.h * (ap + ep);
+    const Lanes across = f.r * s_up;
+    const Lanes m = -(s_plus + axial + across);
+    return m > kRel * (err_s + axial + across) + kAbs;
+}
+
+// Moves w (relative to C) to the nearest point of the cylinder shrunk to 7/8 (radius and half-height),
+// in plain double: only a choice of the next target, nothing is concluded from it.
+inline void into_cylinder(const CylinderFilter& f, const Lanes w[3], Lanes y[3]) {
+    const Lanes a = f.u[0] * w[0] + f.u[1] * w[1] + f.u[2] * w[2];
+    const Lanes ac = clamp(a, -0.875 * f.h, 0.875 * f.h);
+    Lanes rho[3];
+    for (int j = 0; j < 3; ++j) rho[j] = w[j] - a * f.u[j];
+    const Lanes rr = rho[0] * rho[0] + rho[1] * rho[1] + rho[2] * rho[2];
+    const double r7 = 0.875 * f.r;
+    Lanes scale = 1;
+    const LaneMask outside = rr > r7 * r7;
+    stdx::where(outside, scale) = r7 / stdx::sqrt(stdx::max(rr, Lanes(0x1p-1000)));
+    for (int j = 0; j < 3; ++j) y[j] = ac * f.u[j] + scale * rho[j];
+}
+
+// ---- Aligned boxes: lo ≤ X ≤ hi. ----
+//
+// d = lo − C, hi − C rounded: |d̂ − d| ≤ 2^-52|d̂| (a subnormal difference is exact).
+// Bounding boxes: exact comparisons of the inputs with the outward cylinder bounding box.
+// Slab along û: S⁺ = Σ û_j far_j = max over the box of û·(X − C) (far_j: hi_j − C_j where û_j ≥ 0),
+//   S⁻ = Σ û_j near_j; the cylinder lies in |û·(X − C)| ≤ ρ_u. Miss if −(Ŝ⁺ + ρ_u) > K(Σ|û_j||far_j| + ρ_u) + τ,
+//   or Ŝ⁻ − ρ_u > K(Σ|û_j||near_j| + ρ_u) + τ.
+// Hit point: v_j = clamp(y_j, d̂lo_j, d̂hi_j) for any double y_j. Rounding is monotone and fixes doubles,
+//   so d̂lo_j < y_j < d̂hi_j implies lo_j ≤ C_j + y_j ≤ hi_j: then v_j = y_j is exact; otherwise v_j is
+//   d̂lo_j or d̂hi_j, within 2^-52|v_j| of lo_j − C_j or hi_j − C_j. Either way v is within 2^-52|v_j| per
+//   component of P − C for a point P of the box, exactly: the hit test applies with ev = 0.
+// Radial miss: n = y − v (from the box point towards the axis point), normalised; the box's support
+//   along n̂ is S⁺ = Σ n̂_j far_j (far_j by the sign of n̂_j, per lane), the cylinder's at most
+//   H|u·n̂| + r|n̂| ≤ H(|û·n̂| + γΣ|û_j||n̂_j| + δ_uΣ|n̂_j|) + r_n. Miss if
+//   −(Ŝ⁺ + H|p̂| + r_n) > K(Σ|n̂_j||far_j| + H(|p̂| + Σ|û_j||n̂_j|) + r_n) + H·δ_u·Σ|n̂_j| + τ, p̂ = û·n̂.
+inline LaneResult aligned_lanes(const CylinderFilter& f, const Lanes lo[3], const Lanes hi[3]) {
+    LaneMask miss = (lo[0] > f.box_hi[0]) || (hi[0] < f.box_lo[0]) || (lo[1] > f.box_hi[1]) ||
+                    (hi[1] < f.box_lo[1]) || (lo[2] > f.box_hi[2]) || (hi[2] < f.box_lo[2]);
+    if (stdx::all_of(miss) || !f.usable) return {miss, LaneMask(false)};
+    Lanes dlo[3], dhi[3];
+    for (int j = 0; j < 3; ++j) dlo[j] = lo[j] - f.c[j], dhi[j] = hi[j] - f.c[j];
+    const Lanes big = stdx::max(stdx::max(stdx::max(stdx::abs(dlo[0]), stdx::abs(dhi[0])),
+                                          stdx::max(stdx::abs(dlo[1]), stdx::abs(dhi[1]))),
+                                stdx::max(stdx::abs(dlo[2]), stdx::abs(dhi[2])));
+    const LaneMask ok = big <= kLimit;
+
+    // Slab along û.
+    Lanes smax_c = 0, smin_c = 0;
+    {
+        Lanes smax = 0, smin = 0, tmax = 0, tmin = 0;
+        for (int j = 0; j < 3; ++j) {
+            const Lanes& far = f.u_nonneg[j] ? dhi[j] : dlo[j];
+            const Lanes& near = f.u_nonneg[j] ? dlo[j] : dhi[j];
+            const double au = std::fabs(f.u[j]);
+            smax += f.u[j] * far, smin += f.u[j] * near;
+            tmax += au * stdx::abs(far), tmin += au * stdx::abs(near);
+        }
+        miss = miss || (ok && (-(smax + f.rho_u) > kRel * (tmax + f.rho_u) + kAbs)) ||
+               (ok && (smin - f.rho_u > kRel * (tmin + f.rho_u) + kAbs));
+        smax_c = smax, smin_c = smin;
+    }
+    if (stdx::all_of(miss)) return {miss, LaneMask(false)};
+
+    // Box points nearest to three axis points: the one nearest to the box centre (t_c), and t_c ± λ
+    // with λ a quarter of the box's extent along û.
+    Lanes t = 0;
+    for (int j = 0; j < 3; ++j) t += f.u[j] * ((dlo[j] + dhi[j]) * 0.5);
+    t = clamp(t, -f.h, f.h);
+    const Lanes lambda = (smax_c - smin_c) * 0.25;
+    Lanes v[3], y[3], w[3];
+    PointTests pt[4];
+    for (int k = 1; k < 3; ++k) {
+        const Lanes tk = k == 1 ? t - lambda : t + lambda;
+        for (int j = 0; j < 3; ++j) w[j] = clamp(tk * f.u[j], dlo[j], dhi[j]);
+        pt[k] = point_tests(f, w, Lanes(0));
+    }
+    for (int j = 0; j < 3; ++j) y[j] = t * f.u[j], v[j] = clamp(y[j], dlo[j], dhi[j]);
+    pt[0] = point_tests(f, v, Lanes(0));
+    LaneMask hit = ok && !miss && certain_hit(pt, 3);
+    if (stdx::all_of(miss || hit)) return {miss || hit, hit};
+    // Radial separation along the direction from the box point nearest to an axis point to that
+    // axis point, after one more step of alternating projection (v, then the axis point nearest to it).
+    t = clamp(f.u[0] * v[0] + f.u[1] * v[1] + f.u[2] * v[2], -f.h, f.h);
+    for (int j = 0; j < 3; ++j) y[j] = t * f.u[j], v[j] = clamp(y[j], dlo[j], dhi[j]);
+    Lanes n[3] = {y[0] - v[0], y[1] - v[1], y[2] - v[2]};
+    const LaneMask dir_ok = normalise(n);
+    Lanes sp = 0, tp = 0;
+    for (int j = 0; j < 3; ++j) {
+        Lanes far = dlo[j];
+        stdx::where(n[j] >= 0, far) = dhi[j];
+        sp += n[j] * far;
+        tp += stdx::abs(n[j]) * stdx::abs(far);
+    }
+    miss = miss || (ok && dir_ok && radial_miss(f, n, sp, tp));
+    if (stdx::all_of(miss || hit)) return {miss || hit, hit};
+    // Still undecided: alternate between the box and the shrunk cylinder, and test where it ends.
+    for (int j = 0; j < 3; ++j) w[j] = v[j];
+    for (int it = 0; it < kSteps; ++it) {
+        Lanes z[3];
+        into_cylinder(f, w, z);
+        for (int j = 0; j < 3; ++j) w[j] = clamp(z[j], dlo[j], dhi[j]);
+    }
+    pt[3] = point_tests(f, w, Lanes(0));
+    hit = ok && !miss && certain_hit(pt, 4);
+    return {miss || hit, hit};
+}
+
+// ---- Oriented boxes: {K + Σ ξ_i A_i : |ξ_i| ≤ e_i}, the axes A_i exactly as given. ----
+//
+// d = K − C rounded (|d̂ − d| ≤ 2^-52|d̂|). Eligible: |d̂_j|, e_i ≤ 2^200, |A_ij| ≤ 2; E = Σ e_i.
+// Along e_j: the box spans d_j ± Σ_i e_i|A_ij|, the cylinder ±w_j. Miss if
+//   |d̂_j| − hw_j − w_j > K(|d̂_j| + hw_j + w_j) + τ, hw_j = Σ_i e_i|A_ij| computed.
+// Along û: the box spans û·d ± Σ_i e_i|û·A_i|. With Σ_j|û_j||A_ij| ≤ 2·√3(1 + 2^-40) < 4, every rounding
+//   of p_i = û·A_i and of Σ e_i|p_i| is within K·4E: miss if −(û·d + ext + ρ_u) or (û·d − ext − ρ_u)
+//   exceeds K(Σ|û_j||d̂_j| + 4E + ρ_u) + τ.
+// Hit point: ξ_i = clamp(A_i·(y − d̂), −e_i, e_i) (exactly within ±e_i), v = d̂ + Σ ξ_i A_i rounded; the
+//   box point w = K − C + Σ ξ_i A_i is within ev = K(max_j|d̂_j| + 2E) of v per component.
+// Radial miss: as for aligned boxes, with the box's support along n̂ = n̂·d + Σ_i e_i|n̂·A_i|, within
+//   K(Σ|n̂_j||d̂_j| + 4E) (Σ_j|n̂_j||A_ij| ≤ 2√3(1 + 2^-42) < 4).
+inline LaneResult oriented_lanes(const CylinderFilter& f, const Lanes k[3], const Lanes A[3][3], const Lanes e[3]) {
+    if (!f.usable) return {LaneMask(false), LaneMask(false)};
+    Lanes d[3];
+    for (int j = 0; j < 3; ++j) d[j] = k[j] - f.c[j];
+    const Lanes dmax = stdx::max(stdx::max(stdx::abs(d[0]), stdx::abs(d[1])), stdx::abs(d[2]));
+    Lanes amax = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) amax = stdx::max(amax, stdx::abs(A[i][j]));
+    const Lanes E = e[0] + e[1] + e[2];
+    const LaneMask ok = dmax <= kLimit && E <= kLimit && amax <= 2;
+
+    LaneMask miss(false);
+    for (int j = 0; j < 3; ++j) {
+        const Lanes hw = e[0] * stdx::abs(A[0][j]) + e[1] * stdx::abs(A[1][j]) + e[2] * stdx::abs(A[2][j]);
+        const Lanes ad = stdx::abs(d[j]);
+        miss = miss || (ad - hw - f.w[j] > kRel * (ad + hw + f.w[j]) + kAbs);
+    }
+    miss = miss && ok;
+    if (stdx::all_of(miss)) return {miss, LaneMask(false)};
+
+    // Slab along û.
+    Lanes ext_c = 0;
+    {
+        Lanes ud = 0, sud = 0, ext = 0;
+        for (int j = 0; j < 3; ++j) ud += f.u[j] * d[j], sud += std::fabs(f.u[j]) * stdx::abs(d[j]);
+        for (int i = 0; i < 3; ++i) ext += e[i] * stdx::abs(f.u[0] * A[i][0] + f.u[1] * A[i][1] + f.u[2] * A[i][2]);
+        const Lanes bound = kRel * (sud + 4 * E + f.rho_u) + kAbs;
+        miss = miss || (ok && (-(ud + ext + f.rho_u) > bound || (ud - ext - f.rho_u) > bound));
+        ext_c = ext;
+    }
+    if (stdx::all_of(miss)) return {miss, LaneMask(false)};
+
+    // Box points nearest (in box coordinates) to three axis points, as for aligned boxes.
+    auto box_point = [&](const Lanes y[3], Lanes v[3]) {
+        Lanes xi[3];
+        for (int i = 0; i < 3; ++i)
+            xi[i] = clamp(A[i][0] * (y[0] - d[0]) + A[i][1] * (y[1] - d[1]) + A[i][2] * (y[2] - d[2]), -e[i], e[i]);
+        for (int j = 0; j < 3; ++j) v[j] = d[j] + xi[0] * A[0][j] + xi[1] * A[1][j] + xi[2] * A[2][j];
+    };
+    const Lanes ev = kRel * (dmax + 2 * E);
+    const Lanes t = clamp(f.u[0] * d[0] + f.u[1] * d[1] + f.u[2] * d[2], -f.h, f.h);
+    const Lanes lambda = ext_c * 0.5;
+    Lanes v[3], y[3], w[3];
+    PointTests pt[4];
+    for (int k = 1; k < 3; ++k) {
+        const Lanes tk = k == 1 ? t - lambda : t + lambda;
+        for (int j = 0; j < 3; ++j) y[j] = tk * f.u[j];
+        box_point(y, w);
+        pt[k] = point_tests(f, w, ev);
+    }
+    for (int j = 0; j < 3; ++j) y[j] = t * f.u[j];
+    box_point(y, v);
+    pt[0] = point_tests(f, v, ev);
+    LaneMask hit = ok && !miss && certain_hit(pt, 3);
+    if (stdx::all_of(miss || hit)) return {miss || hit, hit};
+    // Radial separation, after one more step of alternating projection.
+    const Lanes t2 = clamp(f.u[0] * v[0] + f.u[1] * v[1] + f.u[2] * v[2], -f.h, f.h);
+    for (int j = 0; j < 3; ++j) y[j] = t2 * f.u[j];
+    box_point(y, v);
+    Lanes n[3] = {y[0] - v[0], y[1] - v[1], y[2] - v[2]};
+    const LaneMask dir_ok = normalise(n);
+    Lanes sp = 0, tp = 0;
+    for (int j = 0; j < 3; ++j) {
+        sp += n[j] * d[j];
+        tp += stdx::abs(n[j]) * stdx::abs(d[j]);
+    }
+    for (int i = 0; i < 3; ++i) sp += e[i] * stdx::abs(n[0] * A[i][0] + n[1] * A[i][1] + n[2] * A[i][2]);
+    miss = miss || (ok && dir_ok && radial_miss(f, n, sp, tp + 4 * E));
+    if (stdx::all_of(miss || hit)) return {miss || hit, hit};
+    for (int j = 0; j < 3; ++j) w[j] = v[j];
+    for (int it = 0; it < kSteps; ++it) {
+        Lanes z[3];
+        into_cylinder(f, w, z);
+        box_point(z, w);
+    }
+    pt[3] = point_tests(f, w, ev);
+    hit = ok && !miss && certain_hit(pt, 4);
+    return {miss || hit, hit};
+}
+
+}  // namespace detail
+}  // namespace boxcyl::batch

@@ -1,0 +1,314 @@
+// The batch API (boxcyl/batch.hpp, issue #5) against the scalar exact default boxcyl::intersects(box,
+// cylinder), bit for bit: random sets around CaseGenerator cylinders (segments, disks, tiny axis
+// components included), boxes one ulp from touching, degenerate boxes and cylinders, huge and tiny
+// magnitudes, float inputs (widened exactly), every batch length 0..3·lanes+1 (all remainders), both
+// outputs (bit mask, bools), and 1/2/4 threads on a large N. Every failure prints the case as
+// copy-pasteable C++ (hex floats). The filter's undecided fraction of each set is printed.
+#include <gtest/gtest.h>
+
+#include <array>    // frames
+#include <cfenv>    // rounding modes
+#include <cmath>    // std::ldexp, std::nextafter
+#include <cstdint>  // std::uint64_t
+#include <cstdio>   // std::printf
+#include <memory>   // std::unique_ptr<bool[]>
+#include <string>   // labels
+#include <vector>   // the sets
+
+#include "boxcyl/batch.hpp"
+#include "boxcyl/query.hpp"
+#include "support/batch_cases.hpp"
+#include "support/fp.hpp"
+#include "support/runner.hpp"
+
+namespace boxcyl {
+namespace {
+
+using namespace boxcyl::testing;
+
+std::string show(const AlignedBox<double>& b, const Cylinder<double>& c) {
+    Case k;
+    k.kind = BoxKind::aligned, k.aligned = b, k.cylinder = c;
+    return describe(k);
+}
+std::string show(const OrientedBox<double>& b, const Cylinder<double>& c) {
+    Case k;
+    k.kind = BoxKind::oriented, k.oriented = b, k.cylinder = c;
+    return describe(k);
+}
+
+// The six arrays of a set of aligned boxes, in T (double, or float when the boxes are floats).
+template <class T>
+struct Soa {
+    std::vector<T> v[6];
+    explicit Soa(const std::vector<AlignedBox<double>>& boxes) {
+        for (const AlignedBox<double>& b : boxes)
+            for (int j = 0; j < 3; ++j) v[j].push_back(static_cast<T>(b.min[j])), v[3 + j].push_back(static_cast<T>(b.max[j]));
+    }
+    batch::AlignedBoxes<T> view() const { return {v[0], v[1], v[2], v[3], v[4], v[5]}; }
+};
+
+template <class T, class U>
+std::vector<OrientedBox<T>> narrowed(const std::vector<OrientedBox<U>>& boxes) {
+    std::vector<OrientedBox<T>> out;
+    auto n = [](const Vec3<U>& v) { return Vec3<T>{static_cast<T>(v[0]), static_cast<T>(v[1]), static_cast<T>(v[2])}; };
+    for (const OrientedBox<U>& b : boxes) out.push_back({n(b.center), {n(b.axes[0]), n(b.axes[1]), n(b.axes[2])}, n(b.extents)});
+    return out;
+}
+
+struct Count {
+    long boxes = 0, exact = 0;
+};
+
+// Runs the batch (mask and bools) on boxes[0, n) and compares every answer with want[i].
+Cylinder<double> as_double(const Cylinder<double>& c) { return c; }
+Cylinder<double> as_double(const Cylinder<float>& c) { return batch::detail::widen(c); }
+
+template <class Cyl, class Boxes, class Box>
+void compare(const Cyl& cyl, const Boxes& view, const std::vector<Box>& boxes, const std::vector<bool>& want,
+             std::size_t n, unsigned threads, const std::string& where, Count& count) {
+    std::vector<std::uint64_t> mask(batch::mask_words(n) + 1, ~std::uint64_t{0});
+    const batch::Stats st = batch::intersects(cyl, view, std::span<std::uint64_t>(mask), {threads});
+    std::unique_ptr<bool[]> bools(new bool[n + 1]);
+    const batch::Stats sb = batch::intersects(cyl, view, std::span<bool>(bools.get(), n), {threads});
+    EXPECT_EQ(st.boxes, n);
+    EXPECT_EQ(st.exact_lanes, sb.exact_lanes) << where;
+    count.boxes += static_cast<long>(n);
+    count.exact += static_cast<long>(st.exact_lanes);
+    int failures = 0;
+    for (std::size_t i = 0; i < n && failures < 5; ++i) {
+        const bool got = (mask[i / 64] >> (i % 64)) & 1u;
+        if (got != want[i] || bools[i] != want[i]) {
+            ++failures;
+            ADD_FAILURE() << where << " box " << i << " of " << n << " (threads " << threads << "): batch says " << got
+                          << " (bools " << bools[i] << "), scalar default " << want[i] << "\n  " << show(boxes[i], as_double(cyl));
+        }
+    }
+    if (n % 64 != 0) {
+        EXPECT_EQ(mask[n / 64] >> (n % 64), 0u) << where << ": bits beyond the last box must be 0";
+    }
+    EXPECT_EQ(mask[batch::mask_words(n)], ~std::uint64_t{0}) << where << ": wrote past the mask";
+}
+
+template <class Box>
+std::vector<bool> scalar_answers(const Cylinder<double>& cyl, const std::vector<Box>& boxes) {
+    std::vector<bool> want;
+    for (const Box& b : boxes) want.push_back(boxcyl::intersects(b, cyl));
+    return want;
+}
+
+// Every check of one set: double and float inputs, both box kinds, both outputs.
+void check_set(const Cylinder<double>& cyl, const std::vector<AlignedBox<double>>& aligned,
+               const std::vector<OrientedBox<double>>& oriented, const std::string& where, Count& ca, Count& co,
+               unsigned threads = 1) {
+    const std::vector<bool> wa = scalar_answers(cyl, aligned), wo = scalar_answers(cyl, oriented);
+    const Soa<double> sa(aligned);
+    compare(cyl, sa.view(), aligned, wa, aligned.size(), threads, where + " aligned", ca);
+    const std::vector<OrientedBox<double>>& od = oriented;
+    compare(cyl, std::span<const OrientedBox<double>>(od), oriented, wo, oriented.size(), threads, where + " oriented", co);
+}
+
+// The same set with every input rounded to float (cylinder too): the answers are those of the
+// widened values.
+void check_float(const BatchSet& s, const std::string& where, Count& ca, Count& co) {
+    const Cylinder<float> cf{{float(s.cylinder.center[0]), float(s.cylinder.center[1]), float(s.cylinder.center[2])},
+                             {float(s.cylinder.axis[0]), float(s.cylinder.axis[1]), float(s.cylinder.axis[2])},
+                             float(s.cylinder.radius), float(s.cylinder.height)};
+    const Cylinder<double> cd = batch::detail::widen(cf);
+    if (!validate(cd).ok()) return;  // e.g. an axis whose components all round to 0 in float
+    const Soa<float> sf(s.aligned);
+    std::vector<AlignedBox<double>> aw;
+    for (std::size_t i = 0; i < s.aligned.size(); ++i)
+        aw.push_back({{double(sf.v[0][i]), double(sf.v[1][i]), double(sf.v[2][i])},
+                      {double(sf.v[3][i]), double(sf.v[4][i]), double(sf.v[5][i])}});
+    const std::vector<OrientedBox<float>> of = narrowed<float>(s.oriented);
+    const std::vector<OrientedBox<double>> ow = narrowed<double>(narrowed<float>(s.oriented));
+    std::vector<AlignedBox<double>> av;
+    std::vector<bool> wa;
+    std::vector<OrientedBox<double>> ov;
+    std::vector<bool> wo;
+    // Rounding to float may break validity (an axis frame, min ≤ max cannot break): keep valid boxes.
+    Soa<float> keep_a(std::vector<AlignedBox<double>>{});
+    std::vector<OrientedBox<float>> keep_o;
+    for (std::size_t i = 0; i < aw.size(); ++i)
+        if (validate(aw[i]).ok()) {
+            av.push_back(aw[i]);
+            for (int j = 0; j < 6; ++j) keep_a.v[j].push_back(sf.v[j][i]);
+        }
+    for (std::size_t i = 0; i < ow.size(); ++i)
+        if (validate(ow[i]).ok()) ov.push_back(ow[i]), keep_o.push_back(of[i]);
+    wa = scalar_answers(cd, av);
+    wo = scalar_answers(cd, ov);
+    compare(cf, keep_a.view(), av, wa, av.size(), 1, where + " float aligned", ca);
+    compare(cf, std::span<const OrientedBox<float>>(keep_o), ov, wo, ov.size(), 1, where + " float oriented", co);
+}
+
+void print(const char* label, const Count& a, const Count& o) {
+    std::printf("%-40s aligned %7ld boxes, to the scalar path %5.2f%%   oriented %7ld, %5.2f%%\n", label, a.boxes,
+                a.boxes ? 100.0 * double(a.exact) / double(a.boxes) : 0.0, o.boxes,
+                o.boxes ? 100.0 * double(o.exact) / double(o.boxes) : 0.0);
+}
+
+TEST(Batch, EnvironmentIsDefault) { EXPECT_TRUE(fp_environment_ok()); }
+
+// Random sets: 150 cylinders × 150 boxes of each kind, double and float.
+TEST(Batch, RandomSetsAgreeWithScalar) {
+    Count ca, co, fa, fo;
+    const long sets = scaled(150);
+    for (long k = 0; k < sets; ++k) {
+        const std::uint64_t seed = 0xBA7C4000 + static_cast<std::uint64_t>(k);
+        const BatchSet s = random_batch(seed, 150, k % 4 == 3 ? Profile::degenerate : Profile::mixed);
+        check_set(s.cylinder, s.aligned, s.oriented, "random seed " + std::to_string(seed), ca, co);
+        if (k % 3 == 0) check_float(s, "random seed " + std::to_string(seed), fa, fo);
+    }
+    print("random sets (double)", ca, co);
+    print("random sets (float inputs)", fa, fo);
+}
+
+// Every length 0..3·lanes + 1 (every remainder modulo the vector width, and short tails), from
+// several offsets into a set so that different boxes land in the tail.
+TEST(Batch, EveryLengthAndRemainder) {
+    Count ca, co;
+    const std::size_t max_len = 3 * batch::lane_count + 1;
+    for (std::uint64_t seed : {0xBA7C5001ull, 0xBA7C5002ull, 0xBA7C5003ull}) {
+        const BatchSet s = random_batch(seed, 64 + max_len);
+        for (std::size_t offset : {std::size_t{0}, std::size_t{5}, std::size_t{64}}) {
+            for (std::size_t len = 0; len <= max_len; ++len) {
+                const std::vector<AlignedBox<double>> a(s.aligned.begin() + offset, s.aligned.begin() + offset + len);
+                const std::vector<OrientedBox<double>> o(s.oriented.begin() + offset, s.oriented.begin() + offset + len);
+                check_set(s.cylinder, a, o,
+                          "seed " + std::to_string(seed) + " offset " + std::to_string(offset) + " length " + std::to_string(len),
+                          ca, co);
+            }
+        }
+    }
+    print("every length 0..3*lanes+1", ca, co);
+}
+
+// Boxes one ulp from touching, on both sides (40 pairs of each kind per cylinder).
+TEST(Batch, BoundaryPairsAgreeWithScalar) {
+    Count ca, co;
+    const long sets = scaled(6);
+    for (long k = 0; k < sets; ++k) {
+        const std::uint64_t seed = 0xBA7C6000 + static_cast<std::uint64_t>(k);
+        const BatchSet s = random_batch(seed, 200);
+        std::vector<AlignedBox<double>> a;
+        std::vector<OrientedBox<double>> o;
+        append_boundary(s.cylinder, s.aligned, 40, a);
+        append_boundary(s.cylinder, s.oriented, 40, o);
+        check_set(s.cylinder, a, o, "boundary seed " + std::to_string(seed), ca, co);
+    }
+    print("one-ulp boundary boxes", ca, co);
+}
+
+// Degenerate boxes and cylinders, with exactly touching configurations.
+TEST(Batch, DegenerateAndTouching) {
+    Count ca, co;
+    const std::array<Vec3<double>, 3> id{Vec3<double>{1, 0, 0}, Vec3<double>{0, 1, 0}, Vec3<double>{0, 0, 1}};
+    const std::vector<Cylinder<double>> cyls{
+        {{0, 0, 0}, {0, 0, 1}, 1, 2},        // axis-aligned: touching faces are exact
+        {{0, 0, 0}, {0, 0, 1}, 0, 2},        // segment
+        {{0, 0, 0}, {0, 0, 1}, 1, 0},        // disk
+        {{0, 0, 0}, {1, 1, 1}, 0, 0},        // point
+        {{0.5, -0.25, 3}, {3, 4, 0}, 2, 5},  // exactly rational unit axis (3/5, 4/5, 0)
+        {{1, 2, 3}, {1, 1e-300, 0}, 1, 1},   // tiny axis component
+    };
+    for (std::size_t ci = 0; ci < cyls.size(); ++ci) {
+        const Cylinder<double>& c = cyls[ci];
+        std::vector<AlignedBox<double>> a;
+        std::vector<OrientedBox<double>> o;
+        for (double x : {-3.0, -2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0, 3.0})
+            for (double z : {-2.0, -1.0, 0.0, 1.0, 2.0}) {
+                const Vec3<double> p{c.center[0] + x, c.center[1], c.center[2] + z};
+                for (double w : {0.0, 0.5, 1.0}) {
+                    a.push_back({{p[0], p[1] - w, p[2]}, {p[0] + w, p[1] + w, p[2] + w}});  // flat, point, cube
+                    a.push_back({{std::nextafter(p[0], 9.0), p[1], p[2] - w}, {p[0] + 1, p[1] + w, p[2]}});
+                    o.push_back({p, id, {w, 0.5 * w, 0}});
+                    o.push_back({p, {Vec3<double>{0.6, 0.8, 0}, Vec3<double>{-0.8, 0.6, 0}, Vec3<double>{0, 0, 1}}, {w, w, w}});
+                }
+            }
+        a.push_back({{-1e6, -1e6, -1e6}, {1e6, 1e6, 1e6}});  // contains the cylinder
+        o.push_back({c.center, id, {1e6, 1e6, 1e6}});
+        check_set(c, a, o, "degenerate cylinder " + std::to_string(ci), ca, co);
+    }
+    print("degenerate and touching", ca, co);
+}
+
+// Whole sets scaled by 2^k (exact in the normal range; the answers are the scalar's either way), and
+// sets mixing huge and tiny boxes with an ordinary cylinder.
+TEST(Batch, HugeAndTinyMagnitudes) {
+    Count ca, co;
+    for (int k : {-1060, -1000, -700, -300, 300, 700, 1000}) {
+        BatchSet s = random_batch(0xBA7C7000 + static_cast<std::uint64_t>(k + 2000), 120);
+        auto sc = [k](double x) { return std::ldexp(x, k); };
+        auto sv = [&](Vec3<double>& v) { v = {sc(v[0]), sc(v[1]), sc(v[2])}; };
+        sv(s.cylinder.center), s.cylinder.radius = sc(s.cylinder.radius), s.cylinder.height = sc(s.cylinder.height);
+        if (!validate(s.cylinder).ok()) continue;
+        for (AlignedBox<double>& b : s.aligned) sv(b.min), sv(b.max);
+        for (OrientedBox<double>& b : s.oriented) sv(b.center), sv(b.extents);
+        check_set(s.cylinder, s.aligned, s.oriented, "scaled by 2^" + std::to_string(k), ca, co);
+    }
+    BatchSet s = random_batch(0xBA7C7100, 200);
+    for (std::size_t i = 0; i < s.aligned.size(); i += 3) {
+        const int k = (i % 2) ? 900 : -900;
+        for (int j = 0; j < 3; ++j) {
+            s.aligned[i].min[j] = std::ldexp(s.aligned[i].min[j], k), s.aligned[i].max[j] = std::ldexp(s.aligned[i].max[j], k);
+            s.oriented[i].center[j] = std::ldexp(s.oriented[i].center[j], k);
+            s.oriented[i].extents[j] = std::ldexp(s.oriented[i].extents[j], k);
+        }
+    }
+    s.aligned.push_back({{-dmax, -dmax, -dmax}, {dmax, dmax, dmax}});
+    s.aligned.push_back({{dmax, dmax, dmax}, {dmax, dmax, dmax}});
+    s.aligned.push_back({{denorm, 0, -denorm}, {2 * denorm, denorm, 0}});
+    check_set(s.cylinder, s.aligned, s.oriented, "mixed huge and tiny boxes", ca, co);
+    print("huge and tiny magnitudes", ca, co);
+}
+
+// 140,000 boxes with 1, 2 and 4 threads: the same answers as the scalar query, bit for bit.
+TEST(Batch, ThreadsGiveTheSameAnswers) {
+    const BatchSet s = random_batch(0xBA7C8000, 140000);
+    const std::vector<bool> wa = scalar_answers(s.cylinder, s.aligned);
+    const std::vector<bool> wo = scalar_answers(s.cylinder, s.oriented);
+    const Soa<double> sa(s.aligned);
+    Count ca, co;
+    for (unsigned t : {1u, 2u, 4u, 0u}) {
+        compare(s.cylinder, sa.view(), s.aligned, wa, s.aligned.size(), t, "large N", ca);
+        compare(s.cylinder, std::span<const OrientedBox<double>>(s.oriented), s.oriented, wo, s.oriented.size(), t,
+                "large N", co);
+    }
+    print("140,000 boxes, threads 1/2/4/0", ca, co);
+}
+
+// The filter's bounds are derived for every IEEE rounding mode (one-ulp error terms); check a set in each.
+TEST(Batch, RoundingModes) {
+    Count ca, co;
+    for (int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+        const BatchSet s = random_batch(0xBA7C9000 + static_cast<std::uint64_t>(mode), 300);
+        std::vector<bool> wa, wo;
+        {
+            RoundingMode guard(mode);
+            wa = scalar_answers(s.cylinder, s.aligned);
+            wo = scalar_answers(s.cylinder, s.oriented);
+        }
+        const Soa<double> sa(s.aligned);
+        RoundingMode guard(mode);
+        compare(s.cylinder, sa.view(), s.aligned, wa, s.aligned.size(), 1, std::string("mode ") + mode_name(mode), ca);
+        compare(s.cylinder, std::span<const OrientedBox<double>>(s.oriented), s.oriented, wo, s.oriented.size(), 1,
+                std::string("mode ") + mode_name(mode), co);
+    }
+    print("rounding modes", ca, co);
+}
+
+TEST(Batch, MismatchedLengthsAndShortOutputsThrow) {
+    const std::vector<double> a(3, 0.0), b(2, 0.0);
+    const Cylinder<double> c{{0, 0, 0}, {0, 0, 1}, 1, 1};
+    std::vector<std::uint64_t> mask(1);
+    EXPECT_THROW(batch::intersects(c, batch::AlignedBoxes<double>{a, a, a, a, a, b}, std::span<std::uint64_t>(mask)),
+                 std::invalid_argument);
+    std::vector<double> big(65, 0.0);
+    EXPECT_THROW(batch::intersects(c, batch::AlignedBoxes<double>{big, big, big, big, big, big}, std::span<std::uint64_t>(mask)),
+                 std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace boxcyl
