@@ -3,12 +3,16 @@
 // cylinder axis is axis/|axis| exactly, an oriented box is the parallelepiped its axes span exactly as
 // given, both solids are closed (touching intersects).
 //
-//   Stage 1, the certified filter: the canonical problem (§1.3/§1.4) is built in interval arithmetic
-//   (number/interval.hpp) so that it encloses the exact one, and the same generic §4 code,
-//   algo::linear_inequalities<Interval>, runs on it inside an UncertaintyScope. If no comparison was
+//   Stage 1, the certified filter: the canonical problem (§1.3/§1.4) is built in an enclosure type N
+//   so that it encloses the exact one — first Bounded (number/bounded.hpp: a double and a running
+//   error bound, cheap), then Interval (number/interval.hpp: tighter) if that could not decide — and
+//   the same generic §4 code, algo::linear_inequalities<N>, runs on it inside an UncertaintyScope. If no comparison was
 //   undecided, every real problem inside the intervals takes the same branches to the same answer;
 //   the exact problem is one of them, so that answer is exact. Oriented boxes whose axes are not
 //   exactly orthonormal are first widened by a proved bound η (docs/robustness.md §3).
+//   Where §4 stays undecided on degenerate shapes (disks, flat boxes, segments), hit certificates
+//   (certain_hit, frame_hit: a witness point solved exactly in real arithmetic, only inequalities
+//   checked on enclosures) and thickened sizes (misses) decide most of the rest (docs/robustness.md §5).
 //   Stage 2, the exact fallback (only when stage 1 could not decide): §4 in Q(√d) for aligned and
 //   canonical boxes and for exactly orthonormal frames (signed permutations: the only exactly
 //   orthonormal frames of doubles), §3 on the exact parallelepiped otherwise (exact_paths.hpp). The
@@ -184,6 +188,118 @@ bool apart_along_box_axes(const CanonicalQuery<N>& q) {
     return false;
 }
 
+// Cheap certificates of a hit (not in the specification), tried only where §4 was undecided: the
+// degenerate shapes (disks, flat boxes, segments) whose §4 branches compare rounding noise, but whose
+// hits usually have a witness far from touching. A witness is a segment of points that lie in the box
+// for sure, parallel to the cylinder axis d (so all at the same distance from the axis line), that
+// reaches the slab |t| ≤ H for sure:
+//   (a) the axis itself (distance 0): {c + t·d} ∩ box reaches [−H, H];
+//   (b) the chord through a box point Q near c, when Q's distance to the axis line is < r for sure.
+// The chord {Q + t·d : t ∈ [t0, t1]} lies in the box where, for every i with d_i ≠ 0,
+// a_i = (−e_i − Q_i)/d_i, b_i = (e_i − Q_i)/d_i (swapped if d_i < 0), t0 = max a_i ≤ 0 ≤ t1 = min b_i
+// (axes with d_i = 0 exactly impose |Q_i| ≤ e_i, true for Q in the box). It meets the slab, whose
+// points have s + t ∈ [−H, H] with s = d·(Q − c), iff every a_i ≤ H − s and every b_i ≥ −H − s — all
+// pairwise comparisons, so no min/max needs deciding; pairs (a_i, b_i) of one axis hold by
+// construction. Every comparison is recorded; any doubt rejects the certificate, never the query.
+template <class N>
+bool chord_reaches_slab(const CanonicalQuery<N>& q, const Vec3<N>& point, const Vec3<N>& diff, bool on_axis) {
+    const Vec3<N>& d = q.cylinder.direction;
+    const Vec3<N>& e = q.box.extents;
+    const N& H = q.cylinder.half_height;
+    const N s = on_axis ? N(0) : dot(d, diff);  // diff = point − c
+    N a[3], b[3];
+    bool used[3] = {false, false, false};
+    for (int i = 0; i < 3; ++i) {
+        if (d[i].lo() == 0 && d[i].hi() == 0) {  // exactly parallel to the face pair: no bound on t
+            if (on_axis && !(abs_value(point[i]) <= e[i])) return false;  // (b): Q is in the box
+            continue;
+        }
+        const N lo = (-e[i] - point[i]) / d[i], hi = (e[i] - point[i]) / d[i];
+        const bool positive = N(0) < d[i];
+        a[i] = positive ? lo : hi;
+        b[i] = positive ? hi : lo;
+        used[i] = true;
+    }
+    for (int i = 0; i < 3; ++i) {
+        if (!used[i]) continue;
+        if (!(a[i] <= H - s) || !(-H - s <= b[i])) return false;
+        for (int j = 0; j < 3; ++j)  // (a): the axis line's entry and exit; (b): holds (Q in the box)
+            if (on_axis && used[j] && j != i && !(a[i] <= b[j])) return false;
+    }
+    return true;
+}
+// (c) The cross-section through the axis point p, the disk {p + w : w ⊥ d, |w| ≤ r}, meets the box:
+// the point of the polygon (plane ∩ box) nearest to p is p itself (done by (a)), the foot on a side
+// (a face's line in the plane), or a vertex (a box edge crossing the plane). So the candidates are
+//   face x_i = f:  X = p + λ(E_i − d_i·d), λ = (f − p_i)/w_i, w_i = 1 − d_i² = d_j² + d_k² (no
+//                  cancellation); |X − p|² = λ²·w_i, so within r iff (f − p_i)² < r²·w_i; X_i = f
+//                  exactly and X_j = p_j − (f − p_i)·d_i·d_j/w_i must lie inside (−e_j, e_j);
+//   edge ∥ x_k at (x_i, x_j) = (σ_i e_i, σ_j e_j):  x_k = p_k − (d_i(x_i − p_i) + d_j(x_j − p_j))/d_k
+//                  inside [−e_k, e_k], and |X − p|² < r².
+// Each candidate is a point of the plane (exact in real arithmetic), so any one certainly in the box
+// and the disk is a witness; the enclosures carry the rounding.
+template <class N>
+bool disk_meets_box(const CanonicalQuery<N>& q, const Vec3<N>& p) {
+    const Vec3<N>& d = q.cylinder.direction;
+    const Vec3<N>& e = q.box.extents;
+    const N r2 = q.cylinder.radius * q.cylinder.radius;
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        const N w = d[j] * d[j] + d[k] * d[k];
+        if (!(w.lo() > 0)) continue;  // w = 0 exactly, or too small to divide by
+        for (const N& f : {e[i], -e[i]}) {
+            UncertaintyScope scope;  // per candidate: an undecided one must not veto a later certain one
+            const N g = f - p[i];
+            if (!(g * g < r2 * w)) continue;
+            const N m = g * d[i] / w;
+            if (abs_value(p[j] - m * d[j]) < e[j] && abs_value(p[k] - m * d[k]) < e[k] && scope.certain())
+                return true;
+        }
+    }
+    for (int k = 0; k < 3; ++k) {
+        if (d[k].lo() == 0 && d[k].hi() == 0) continue;
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        for (const N& xi : {e[i], -e[i]})
+            for (const N& xj : {e[j], -e[j]}) {
+                UncertaintyScope scope;
+                const N gi = xi - p[i], gj = xj - p[j];
+                const N gk = -(d[i] * gi + d[j] * gj) / d[k];  // x_k − p_k
+                if (abs_value(p[k] + gk) <= e[k] && gi * gi + gj * gj + gk * gk < r2 && scope.certain()) return true;
+            }
+    }
+    return false;
+}
+
+template <class N>
+bool certain_hit(const CanonicalQuery<N>& q) {
+    const Vec3<N>& c = q.cylinder.center;
+    const Vec3<N>& e = q.box.extents;
+    {
+        UncertaintyScope scope;
+        if (chord_reaches_slab(q, c, Vec3<N>{N(0), N(0), N(0)}, true) && scope.certain()) return true;
+    }
+    if (disk_meets_box(q, c)) return true;
+    UncertaintyScope scope;
+    if (!(N(0) < q.cylinder.radius)) return false;
+    // Q: c clamped into the box, chosen from the enclosures without comparisons (any box point is a
+    // valid start; an ambiguous coordinate takes the face it is nearest to, else 0).
+    Vec3<N> point, diff;
+    for (int i = 0; i < 3; ++i) {
+        if (c[i].lo() >= -e[i].lo() && c[i].hi() <= e[i].lo()) {
+            point[i] = c[i], diff[i] = N(0);
+        } else if (c[i].lo() > 0) {
+            point[i] = e[i], diff[i] = e[i] - c[i];
+        } else if (c[i].hi() < 0) {
+            point[i] = -e[i], diff[i] = -e[i] - c[i];
+        } else {
+            point[i] = N(0), diff[i] = -c[i];
+        }
+    }
+    const N s = dot(q.cylinder.direction, diff);
+    if (!(dot(diff, diff) - s * s < q.cylinder.radius * q.cylinder.radius)) return false;
+    return chord_reaches_slab(q, point, diff, false) && scope.certain();
+}
+
 // Stage 1 proper, on an enclosure `outer` of a problem that contains the exact one (a miss of outer
 // certifies a miss) and an enclosure `inner` of a problem contained in it (a hit of inner certifies a
 // hit), or null if there is none. Usually both are the exact problem's enclosure (&inner == &outer).
@@ -203,12 +319,14 @@ std::optional<bool> decide(const CanonicalQuery<N>& outer, const CanonicalQuery<
         if (inner == nullptr) return std::nullopt;
         const std::optional<bool> i = run_li(*inner);
         if (i && *i) return true;
+        if (certain_hit(*inner)) return true;
         return std::nullopt;
     }
     if (inner != nullptr && inner != &outer) {
         const std::optional<bool> i = run_li(*inner);
         if (i && *i) return true;
     }
+    if (inner != nullptr && certain_hit(*inner)) return true;
     const double delta = std::ldexp(scale, -30);
     if (!(delta > 0)) return std::nullopt;
     CanonicalQuery<N> thick = outer;
@@ -371,6 +489,111 @@ inline bool signed_permutation(const std::array<Vec3<double>, 3>& axes, int perm
     return true;
 }
 
+// Hit certificates for the parallelepiped {K + Σ x_m·A_m : |x_m| ≤ e_m} with the axes A_m exactly as
+// given (no η: where η leaves no inner problem — flat boxes, disks — these are the only way to certify
+// a hit without exact arithmetic). delta = C − K, u the unit axis, all enclosures. Each candidate is
+// built from a linear system that its exact point solves by construction (Cramer's rule, or the
+// plane equation u·(X − C) = 0 solved for one coordinate), so only inequalities are checked:
+//   (a) C in the box; the axis segment crossing a face x_k = ±e_k: y·A_i + z·A_j − t·u = delta ∓ e_k·A_k
+//       with |y| ≤ e_i, |z| ≤ e_j, |t| ≤ H (works for r = 0 too);
+//   (c) the central disk meeting a box edge (as disk_meets_box, in the frame's coordinates) or a face
+//       (the nearest point to C of the line where the disk's plane cuts the face's plane).
+template <class N>
+N det3(const Vec3<N>& a, const Vec3<N>& b, const Vec3<N>& c) {
+    return dot(a, cross(b, c));
+}
+template <class N>
+bool frame_disk_hit(const Vec3<N>& delta, const Vec3<N> (&A)[3], const Vec3<N>& e, const Vec3<N>& u, const N& r);
+template <class N>
+bool frame_hit(const Vec3<N>& delta, const Vec3<N> (&A)[3], const Vec3<N>& e, const Vec3<N>& u, const N& H,
+               const N& r) {
+    auto certainly = [](auto&& test) {
+        UncertaintyScope scope;
+        const bool ok = test();
+        return ok && scope.certain();
+    };
+    auto nonzero = [](const N& x) { return N(0) < abs_value(x); };
+    // (a) C inside: x = A⁻¹·delta.
+    if (certainly([&] {
+            const N det = det3(A[0], A[1], A[2]);
+            if (!nonzero(det)) return false;
+            return abs_value(det3(delta, A[1], A[2]) / det) <= e[0] && abs_value(det3(A[0], delta, A[2]) / det) <= e[1] &&
+                   abs_value(det3(A[0], A[1], delta) / det) <= e[2];
+        }))
+        return true;
+    const Vec3<N> mu = -u;
+    for (int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        for (const N& f : {e[k], -e[k]})
+            if (certainly([&] {
+                    const N det = det3(A[i], A[j], mu);
+                    if (!nonzero(det)) return false;
+                    const Vec3<N> rhs = delta - f * A[k];
+                    return abs_value(det3(rhs, A[j], mu) / det) <= e[i] && abs_value(det3(A[i], rhs, mu) / det) <= e[j] &&
+                           abs_value(det3(A[i], A[j], rhs) / det) <= H;
+                }))
+                return true;
+    }
+    if (!certainly([&] { return N(0) < r; })) return false;
+    // (c) for the cross-sections at t = 0 (the central disk), at the box centre's level t = −u·delta
+    // when that is certainly within [−H, H], and at the end caps t = ±H: each is a subset of the
+    // cylinder; the one at p = C + t·u has delta_t = C + t·u − K.
+    const N tk = -dot(u, delta);
+    const bool level = certainly([&] { return abs_value(tk) <= H; });
+    const N heights[4] = {N(0), tk, H, -H};
+    for (int h = 0; h < 4; ++h)
+        if ((h != 1 || level) && frame_disk_hit(delta + heights[h] * u, A, e, u, r)) return true;
+    return false;
+}
+template <class N>
+bool frame_disk_hit(const Vec3<N>& delta, const Vec3<N> (&A)[3], const Vec3<N>& e, const Vec3<N>& u, const N& r) {
+    auto certainly = [](auto&& test) {
+        UncertaintyScope scope;
+        const bool ok = test();
+        return ok && scope.certain();
+    };
+    auto nonzero = [](const N& x) { return N(0) < abs_value(x); };
+    const N r2 = r * r;
+    const N D[3] = {dot(u, A[0]), dot(u, A[1]), dot(u, A[2])};
+    const N ud = dot(u, delta);
+    // (c) edges ∥ A_k at (x_i, x_j) = (±e_i, ±e_j): x_k = (u·delta − x_i·D_i − x_j·D_j)/D_k.
+    for (int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        for (const N& xi : {e[i], -e[i]})
+            for (const N& xj : {e[j], -e[j]})
+                if (certainly([&] {
+                        if (!nonzero(D[k])) return false;
+                        const N xk = (ud - xi * D[i] - xj * D[j]) / D[k];
+                        const Vec3<N> v = xi * A[i] + xj * A[j] + xk * A[k] - delta;  // X − C
+                        return abs_value(xk) <= e[k] && dot(v, v) < r2;
+                    }))
+                    return true;
+    }
+    // (c) faces x_i = f: the plane cuts the face's plane along D_j·y + D_k·z = ρ = u·delta − f·D_i; its
+    // point (y0, z0) = ρ·(D_j, D_k)/(D_j² + D_k²), direction L = D_k·A_j − D_j·A_k (⊥ u), and the point
+    // nearest to C at λ = −L·V0/(L·L), V0 = X0 − C.
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        for (const N& f : {e[i], -e[i]})
+            if (certainly([&] {
+                    const N n = D[j] * D[j] + D[k] * D[k];
+                    if (!(N(0) < n)) return false;
+                    const N rho = ud - f * D[i];
+                    const N y0 = rho * D[j] / n, z0 = rho * D[k] / n;
+                    const Vec3<N> L = D[k] * A[j] - D[j] * A[k];
+                    const N ll = dot(L, L);
+                    if (!(N(0) < ll)) return false;
+                    const Vec3<N> v0 = f * A[i] + y0 * A[j] + z0 * A[k] - delta;
+                    const N lambda = -dot(L, v0) / ll;
+                    const Vec3<N> v = v0 + lambda * L;
+                    return abs_value(y0 + lambda * D[k]) <= e[j] && abs_value(z0 - lambda * D[j]) <= e[k] &&
+                           dot(v, v) < r2;
+                }))
+                return true;
+    }
+    return false;
+}
+
 // §1.4 with the axes as given. For a signed permutation, C' = Aᵀ(C − K) and D' = Aᵀu are exact
 // permutations of enclosures. Otherwise A = QS (polar decomposition) is only nearly orthogonal and the
 // problem is widened by η (docs/robustness.md §4):
@@ -450,7 +673,9 @@ std::optional<bool> filter(const OrientedBox<double>& b, const Cylinder<double>&
     q.cylinder.half_height = half_height;
     q.box.extents = extents;
     const Widened<N> w = widen(q, on_cyl, on_box);
-    return decide(w.outer, w.has_inner ? &w.inner : nullptr, std::ldexp(m, k));
+    if (const std::optional<bool> r = decide(w.outer, w.has_inner ? &w.inner : nullptr, std::ldexp(m, k))) return r;
+    if (frame_hit(delta, axes, extents, normalised(a), half_height, radius)) return true;
+    return std::nullopt;
 }
 
 // Stage 1: the cheap enclosure first, the tight one only when it could not decide.
