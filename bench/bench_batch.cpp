@@ -183,7 +183,7 @@ void large_batch(benchmark::State& state, bool voxels, unsigned threads) {
 void stream_sum(benchmark::State& state, bool voxels, unsigned threads) {
     const Large& l = large(voxels);
     const unsigned t = threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
-    std::vector<double> partial(t * 8);  // a cache line apart
+    std::vector<double> partial(std::size_t{t} * 8);  // a cache line apart
     for (auto _ : state) {
         batch::detail::for_each_range(kLarge / 64, t, [&](std::size_t b, std::size_t e, unsigned k) {
             double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
@@ -191,7 +191,7 @@ void stream_sum(benchmark::State& state, bool voxels, unsigned threads) {
                 const double* p = l.soa.v[a].data();
                 for (std::size_t i = b * 64; i < e * 64; i += 4) s0 += p[i], s1 += p[i + 1], s2 += p[i + 2], s3 += p[i + 3];
             }
-            partial[k * 8] = (s0 + s1) + (s2 + s3);
+            partial[std::size_t{k} * 8] = (s0 + s1) + (s2 + s3);
         });
         benchmark::DoNotOptimize(partial.data());
     }

@@ -9,6 +9,7 @@
 #include <array>    // frames
 #include <cfenv>    // rounding modes
 #include <cmath>    // std::ldexp, std::nextafter
+#include <cstddef>  // std::size_t, std::ptrdiff_t
 #include <cstdint>  // std::uint64_t
 #include <cstdio>   // std::printf
 #include <memory>   // std::unique_ptr<bool[]>
@@ -51,6 +52,7 @@ struct Soa {
 template <class T, class U>
 std::vector<OrientedBox<T>> narrowed(const std::vector<OrientedBox<U>>& boxes) {
     std::vector<OrientedBox<T>> out;
+    out.reserve(boxes.size());
     auto n = [](const Vec3<U>& v) { return Vec3<T>{static_cast<T>(v[0]), static_cast<T>(v[1]), static_cast<T>(v[2])}; };
     for (const OrientedBox<U>& b : boxes) out.push_back({n(b.center), {n(b.axes[0]), n(b.axes[1]), n(b.axes[2])}, n(b.extents)});
     return out;
@@ -93,6 +95,7 @@ void compare(const Cyl& cyl, const Boxes& view, const std::vector<Box>& boxes, c
 template <class Box>
 std::vector<bool> scalar_answers(const Cylinder<double>& cyl, const std::vector<Box>& boxes) {
     std::vector<bool> want;
+    want.reserve(boxes.size());
     for (const Box& b : boxes) want.push_back(boxcyl::intersects(b, cyl));
     return want;
 }
@@ -174,8 +177,9 @@ TEST(Batch, EveryLengthAndRemainder) {
         const BatchSet s = random_batch(seed, 64 + max_len);
         for (std::size_t offset : {std::size_t{0}, std::size_t{5}, std::size_t{64}}) {
             for (std::size_t len = 0; len <= max_len; ++len) {
-                const std::vector<AlignedBox<double>> a(s.aligned.begin() + offset, s.aligned.begin() + offset + len);
-                const std::vector<OrientedBox<double>> o(s.oriented.begin() + offset, s.oriented.begin() + offset + len);
+                const auto from = static_cast<std::ptrdiff_t>(offset), to = static_cast<std::ptrdiff_t>(offset + len);
+                const std::vector<AlignedBox<double>> a(s.aligned.begin() + from, s.aligned.begin() + to);
+                const std::vector<OrientedBox<double>> o(s.oriented.begin() + from, s.oriented.begin() + to);
                 check_set(s.cylinder, a, o,
                           "seed " + std::to_string(seed) + " offset " + std::to_string(offset) + " length " + std::to_string(len),
                           ca, co);
