@@ -3,7 +3,7 @@
 // ("line N: " in the N-th output's error); each output line is a JSON object holding either a boolean
 // "intersect" or a string "error" (plus an optional "id"); the count of error lines is the count
 // process_stream returns. Run with the default options (the exact query) and with --arithmetic float
-// (inputs rounded to float first: another validation path).
+// (inputs rounded to float first: another validation path), and with 2 threads: the same output.
 #include <cstddef>  // std::size_t
 #include <cstdint>  // std::uint8_t
 #include <cstdio>   // std::fprintf
@@ -57,6 +57,12 @@ void check(const std::string& input, const boxcyl::cli::RunOptions& opt) {
     if (lines != want_lines)
         fail(std::to_string(lines) + " output lines for " + std::to_string(want_lines) + " input lines", s);
     if (errors != bad) fail(std::to_string(errors) + " error lines but process_stream counted " + std::to_string(bad), s);
+
+    // The multi-threaded path (intersect --threads) must give the same bytes and count.
+    std::istringstream in2(input);
+    std::ostringstream out2;
+    const std::size_t bad2 = boxcyl::cli::process_stream(in2, out2, opt, 2);
+    if (out2.str() != s || bad2 != bad) fail("--threads 2 output differs from the single-threaded one", out2.str());
 }
 
 }  // namespace

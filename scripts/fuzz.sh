@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (fuzz/) with clang and ASan + UBSan and runs each for SECONDS (default 30).
-# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   targets: jsonl query (default both)
+# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   targets: jsonl query (default both); SECONDS 0: build only
 # The seed corpora (fuzz/corpus/<t>) and kept findings (fuzz/regressions/<t>) are read, never written;
 # inputs libFuzzer finds new coverage with go to $BUILD_DIR/corpus/<t>, crashes to $BUILD_DIR/findings/<t>.
 # Exits non-zero on any finding (crash, sanitizer report, wrong answer, timeout, out of memory):
 # keep the input in fuzz/regressions/<t>/ once fixed, where CTest replays it (test fuzz.replay.<t>).
-# BUILD_DIR (default build-fuzz), JOBS and FUZZ_CXX (default clang++-14) may be overridden.
+# BUILD_DIR (default build-fuzz), JOBS and FUZZ_CXX (default clang++-14) may be overridden. FUZZ_ALSO_BUILD:
+# more targets to build with the same instrumentation (then the tests are configured too), e.g. tests
+# to run under the sanitizers from the same objects (scripts/ci-sanitize.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-30}"
@@ -20,9 +22,11 @@ san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-poin
 # Everything is instrumented for coverage (fuzzer-no-link); only the fuzz executables link libFuzzer.
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Fuzz \
       -DCMAKE_CXX_FLAGS_FUZZ="-O1 -g -fsanitize=fuzzer-no-link $san" -DCMAKE_EXE_LINKER_FLAGS_FUZZ="$san" \
-      -DBOXCYL_BUILD_TESTS=OFF -DBOXCYL_BUILD_TOOLS=ON -DBOXCYL_BUILD_FUZZERS=ON -DBOXCYL_INSTALL=OFF \
+      -DBOXCYL_BUILD_TESTS="$([[ -n ${FUZZ_ALSO_BUILD:-} ]] && echo ON || echo OFF)" -DBOXCYL_BUILD_TOOLS=ON -DBOXCYL_BUILD_FUZZERS=ON -DBOXCYL_INSTALL=OFF \
       -DBOXCYL_BUILD_PYTHON=OFF >/dev/null
-cmake --build "$build" -j "$jobs" --target "${targets[@]/#/fuzz_}"
+# shellcheck disable=SC2086 # FUZZ_ALSO_BUILD is a list of target names
+cmake --build "$build" -j "$jobs" --target "${targets[@]/#/fuzz_}" ${FUZZ_ALSO_BUILD:-}
+((seconds > 0)) || exit 0
 
 export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"

@@ -11,3 +11,8 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWI
       -DBOXCYL_BUILD_TESTS=ON -DBOXCYL_BUILD_TOOLS=ON
 cmake --build "$build" -j "$jobs"
 ctest --test-dir "$build" --output-on-failure -j "$jobs" -LE long --timeout 1500
+# Then ASan + UBSan on the input-facing tests and a 20 s libFuzzer run per target, in a separate clang
+# build of those targets only (docs/reliability.md). BOXCYL_CI_SANITIZE=0 skips it.
+if [[ ${BOXCYL_CI_SANITIZE:-1} != 0 ]]; then
+    BUILD_DIR="$build-ci-sanitize" JOBS="$jobs" bash scripts/ci-sanitize.sh 20
+fi

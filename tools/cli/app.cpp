@@ -74,8 +74,9 @@ std::vector<std::string> names_of(const Table& table) {
 
 // The options of `intersect`, from the tables, for the top-level --help (which CLI11 would not show).
 std::string options_section() {
-    std::string s = "OPTIONS OF intersect\n  boxcyl intersect [--algorithm NAME] [--arithmetic NAME] [FILE|-]\n";
+    std::string s = "OPTIONS OF intersect\n  boxcyl intersect [--algorithm NAME] [--arithmetic NAME] [--threads N] [FILE|-]\n";
     s += "  FILE: JSON Lines input; '-' or none reads standard input.\n";
+    s += "  --threads N: answer blocks of lines on N threads (default 1; 0: one per core); same output\n";
     s += "  --algorithm NAME (default " + std::string(default_algorithm) + ")\n";
     for (const auto& row : algorithm_choices)
         s += "    " + std::string(row.name) + ": " + std::string(row.description) + "\n";
@@ -97,8 +98,8 @@ std::string describe(const std::string& what, const Table& table) {
     return s;
 }
 
-int run_on(std::istream& input, std::ostream& out, const RunOptions& options) {
-    const std::size_t bad = process_stream(input, out, options);
+int run_on(std::istream& input, std::ostream& out, const RunOptions& options, unsigned threads) {
+    const std::size_t bad = process_stream(input, out, options, threads);
     if (input.bad()) return exit_usage;  // a read error: the output is incomplete
     return bad == 0 ? exit_ok : exit_bad_lines;
 }
@@ -116,6 +117,7 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
     std::string algorithm{default_algorithm};
     std::string arithmetic{default_arithmetic};
     std::string file = "-";
+    unsigned threads = 1;
     CLI::App* intersect = app.add_subcommand(
         "intersect", "Answer one query per input line: does the cylinder intersect the box?");
     intersect->footer(help_body);  // its options are listed by CLI11 above it
@@ -125,6 +127,9 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
     intersect->add_option("--arithmetic", arithmetic,
                           describe("Arithmetic (default " + std::string(default_arithmetic) + "):", arithmetic_choices))
         ->check(CLI::IsMember(names_of(arithmetic_choices)));
+    intersect->add_option("--threads", threads,
+                          "Threads answering lines (default 1; 0: one per core); the output is the same, in input order")
+        ->check(CLI::Range(0u, 1024u));
     intersect->add_option("file", file, "JSON Lines input; '-' or none: standard input");
     ExplainCommand explain;
     add_explain_command(app, explain);
@@ -148,7 +153,7 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
         return exit_usage;
     }
 #endif
-    if (file == "-") return run_on(in, out, options);
+    if (file == "-") return run_on(in, out, options, threads);
 
     std::error_code ec;
     if (std::filesystem::is_directory(file, ec)) {
@@ -160,7 +165,7 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
         err << "boxcyl: cannot open '" << file << "': " << std::strerror(errno) << "\n";
         return exit_usage;
     }
-    return run_on(f, out, options);
+    return run_on(f, out, options, threads);
 }
 
 int run_app(int argc, const char* const* argv) {

@@ -9,12 +9,18 @@
 // 64 bits are converted with a (correctly rounded) cast, larger ones go through strtod.
 #include "jsonl_query.hpp"
 
-#include <cstdint>    // integer SAX events
-#include <exception>  // failures of the library call
-#include <istream>    // std::getline
-#include <ostream>    // output lines
-#include <utility>    // std::move
-#include <vector>     // the DOM builder's stack
+#include <algorithm>           // std::max
+#include <condition_variable>  // process_stream's hand-offs between threads
+#include <cstdint>             // integer SAX events
+#include <deque>               // blocks in flight
+#include <exception>           // failures of the library call
+#include <istream>             // std::getline
+#include <memory>              // blocks
+#include <mutex>               // process_stream's shared state
+#include <ostream>             // output lines
+#include <thread>              // process_stream's workers
+#include <utility>             // std::move
+#include <vector>              // the DOM builder's stack
 
 #include <nlohmann/json.hpp>
 
@@ -353,7 +359,9 @@ LineAnswer answer_line(std::string_view text, std::size_t line_number, const Run
     }
 }
 
-std::size_t process_stream(std::istream& in, std::ostream& out, const RunOptions& opt) {
+namespace {
+
+std::size_t process_stream_serial(std::istream& in, std::ostream& out, const RunOptions& opt) {
     std::size_t line_number = 0;
     std::size_t bad = 0;
     std::string line;
@@ -367,6 +375,155 @@ std::size_t process_stream(std::istream& in, std::ostream& out, const RunOptions
     }
     out.flush();
     return bad;
+}
+
+// Consecutive input lines and, once a worker has answered them, their output lines.
+struct Block {
+    std::size_t first_line = 0;  // the number of lines[0], from 1
+    std::vector<std::string> lines;
+    std::size_t bytes = 0;
+    std::string out;  // one newline-terminated output line per input line
+    std::size_t bad = 0;
+    bool done = false;                // guarded by the mutex
+    std::exception_ptr failure;       // what answering threw (e.g. std::bad_alloc): the run stops
+};
+
+// This thread reads and cuts the input into blocks; `threads` workers answer blocks in any order; one
+// writer thread writes the answered blocks strictly in input order. Reading, answering and writing
+// overlap, and at most 2 * threads blocks exist between reader and writer (memory bound).
+std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads) {
+    const std::size_t max_in_flight = 2 * std::size_t{threads};
+    std::mutex m;
+    std::condition_variable work_ready;  // workers: a block in `todo`, or the end
+    std::condition_variable front_done;  // writer: the oldest block is answered, or the end
+    std::condition_variable space;       // reader: fewer than max_in_flight blocks, or a failure
+    std::deque<std::unique_ptr<Block>> in_flight;  // input order; owned here until written
+    std::deque<Block*> todo;                       // not yet taken by a worker
+    bool end_of_input = false;
+    std::exception_ptr failure;
+    std::size_t bad = 0;  // the writer's
+
+    auto worker = [&] {
+        for (;;) {
+            Block* b = nullptr;
+            {
+                std::unique_lock lk(m);
+                work_ready.wait(lk, [&] { return !todo.empty() || end_of_input; });
+                if (todo.empty()) return;
+                b = todo.front();
+                todo.pop_front();
+            }
+            try {
+                for (std::size_t i = 0; i < b->lines.size(); ++i) {
+                    const LineAnswer a = answer_line(b->lines[i], b->first_line + i, opt);
+                    b->out += a.text;
+                    b->out += '\n';
+                    if (!a.good) ++b->bad;
+                }
+            } catch (...) {
+                b->failure = std::current_exception();
+            }
+            b->lines = {};  // the input is no longer needed
+            {
+                std::lock_guard lk(m);
+                b->done = true;
+            }
+            front_done.notify_one();
+        }
+    };
+
+    auto writer = [&] {
+        const auto ready = [&] {
+            return (!in_flight.empty() && in_flight.front()->done) || (end_of_input && in_flight.empty());
+        };
+        for (;;) {
+            std::unique_ptr<Block> b;
+            {
+                std::unique_lock lk(m);
+                if (!ready()) {
+                    // Nothing more to write yet: an interactive caller sees everything answered so far.
+                    lk.unlock();
+                    out.flush();
+                    lk.lock();
+                    front_done.wait(lk, ready);
+                }
+                if (in_flight.empty()) return;
+                b = std::move(in_flight.front());
+                in_flight.pop_front();
+                if (b->failure && !failure) failure = b->failure;
+            }
+            space.notify_one();
+            if (failure) continue;  // written so far: a prefix of the output; the caller rethrows
+            out.write(b->out.data(), static_cast<std::streamsize>(b->out.size()));
+            bad += b->bad;
+        }
+    };
+
+    // Hands `b` to the workers once there is room; false when the run must stop.
+    const auto dispatch = [&](std::unique_ptr<Block>& b) {
+        std::unique_lock lk(m);
+        space.wait(lk, [&] { return in_flight.size() < max_in_flight || failure; });
+        if (failure) return false;
+        todo.push_back(b.get());
+        in_flight.push_back(std::move(b));
+        b = std::make_unique<Block>();
+        lk.unlock();
+        work_ready.notify_one();
+        return true;
+    };
+
+    // A tied stream would be flushed by this thread's reads while the writer writes to it.
+    std::ostream* const tied = in.tie(nullptr);
+    std::vector<std::thread> pool;
+    std::thread writing;
+    const auto finish = [&] {
+        {
+            std::lock_guard lk(m);
+            end_of_input = true;
+        }
+        work_ready.notify_all();
+        front_done.notify_all();
+        for (std::thread& t : pool) t.join();
+        if (writing.joinable()) writing.join();
+        in.tie(tied);
+    };
+    try {
+        pool.reserve(threads);
+        for (unsigned i = 0; i < threads; ++i) pool.emplace_back(worker);
+        writing = std::thread(writer);
+        auto block = std::make_unique<Block>();
+        std::size_t line_number = 0;
+        std::string line;
+        for (;;) {
+            // Hand over a partial block before a read could block: an interactive caller waits for it.
+            if (!block->lines.empty() && (in.rdbuf() == nullptr || in.rdbuf()->in_avail() <= 0) && !dispatch(block))
+                break;
+            if (!std::getline(in, line)) {
+                if (!block->lines.empty()) dispatch(block);
+                break;
+            }
+            if (block->lines.empty()) block->first_line = line_number + 1;
+            ++line_number;
+            block->bytes += line.size();
+            block->lines.push_back(std::move(line));
+            if ((block->lines.size() >= stream_block_lines || block->bytes >= stream_block_bytes) && !dispatch(block))
+                break;
+        }
+    } catch (...) {
+        finish();
+        throw;
+    }
+    finish();
+    out.flush();
+    if (failure) std::rethrow_exception(failure);
+    return bad;
+}
+
+}  // namespace
+
+std::size_t process_stream(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads) {
+    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    return threads == 1 ? process_stream_serial(in, out, opt) : process_stream_parallel(in, out, opt, threads);
 }
 
 }  // namespace boxcyl::cli

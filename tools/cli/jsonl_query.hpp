@@ -73,9 +73,15 @@ struct LineAnswer {
 };
 LineAnswer answer_line(std::string_view text, std::size_t line_number, const RunOptions& opt);
 
-// Reads `in` line by line (memory bounded by the longest line), writes one output line per input
-// line in order. Returns the number of bad lines. Flushes `out` whenever no more input is buffered,
-// so that the tool also works as an interactive filter.
-std::size_t process_stream(std::istream& in, std::ostream& out, const RunOptions& opt);
+// Reads `in` line by line, writes one output line per input line in input order. Returns the number
+// of bad lines. Flushes `out` whenever no more input is buffered (threads == 1) or no further answer
+// is ready (threads > 1), so that the tool also works as an interactive filter.
+// threads == 1: one line at a time, memory bounded by the longest line. threads > 1: that many
+// workers answer blocks of up to stream_block_lines lines (or stream_block_bytes bytes) while this
+// thread reads; at most 2 * threads blocks are in flight, so memory stays bounded too, and the
+// output is byte for byte the single-threaded one. threads == 0: std::thread::hardware_concurrency().
+inline constexpr std::size_t stream_block_lines = 4096;
+inline constexpr std::size_t stream_block_bytes = std::size_t{1} << 20;
+std::size_t process_stream(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads = 1);
 
 }  // namespace boxcyl::cli

@@ -161,6 +161,34 @@ large_line_count)
     run 1 intersect "$work/head"
     same_bytes "$work/out" "$work/oracle"
     ;;
+threads)
+    # --threads N: byte for byte the single-threaded output and exit status, on a large generated file
+    # with bad lines (every 499th: empty, truncated, invalid value, invalid UTF-8), from a file and from
+    # a pipe; one output line per input line.
+    n=40000  # about 10 blocks of 4096 lines
+    bash "$(dirname "$0")/gen_queries.sh" $n 11 499 >"$work/in"
+    [[ $(wc -l <"$work/in") == "$n" ]] || fail "generator wrote $(wc -l <"$work/in") lines"
+    run 1 intersect --threads 1 "$work/in"
+    mv "$work/out" "$work/serial"
+    [[ $(wc -l <"$work/serial") == "$n" ]] || fail "got $(wc -l <"$work/serial") output lines for $n input lines"
+    for t in 2 3 0; do
+        run 1 intersect --threads $t "$work/in"
+        same_bytes "$work/out" "$work/serial"
+    done
+    cat "$work/in" | "$exe" intersect --threads 2 >"$work/out" 2>"$work/err"
+    rc=$?
+    [[ $rc == 1 ]] || fail "piped --threads 2 exited $rc, expected 1"
+    same_bytes "$work/out" "$work/serial"
+    # The same on good lines only (exit 0) and a last line without newline.
+    grep -v error "$work/serial" >/dev/null || fail "no answers"
+    head -n 498 "$work/in" | head -c -1 >"$work/good"
+    run 0 intersect "$work/good"
+    mv "$work/out" "$work/good_serial"
+    run 0 intersect --threads 2 "$work/good"
+    same_bytes "$work/out" "$work/good_serial"
+    run 2 intersect --threads -1 "$work/good"
+    run 2 intersect --threads many "$work/good"
+    ;;
 hostile_bytes)
     # Raw bytes through the executable: invalid UTF-8, NUL, CR-only line, a 10 MB line, a truncated
     # last line. One output line each, all valid UTF-8, the good lines answered, exit 1.
@@ -222,13 +250,13 @@ help_version)
         '"id"' '"intersect": true' '"error"' "touching counts as intersecting" "closed" \
         "need not be unit length" "orthonormal within" "1e-4" "parallelepiped" "nearest double" \
         "17 significant digits" "EXIT STATUS" "0  every line" "1  at least one line" "2  usage error" \
-        "one JSON line per input line" "empty line" "standard input"; do
+        "one JSON line per input line" "empty line" "standard input" "--threads"; do
         contains "$work/out" "$phrase"
     done
     run 0 -h
     contains "$work/out" "EXIT STATUS"
     run 0 intersect --help
-    for phrase in "--algorithm" "--arithmetic" "inequalities" "oracle" "EXIT STATUS" "parallelepiped"; do
+    for phrase in "--algorithm" "--arithmetic" "--threads" "inequalities" "oracle" "EXIT STATUS" "parallelepiped"; do
         contains "$work/out" "$phrase"
     done
     ;;
@@ -300,6 +328,20 @@ streaming)
     [[ $got == "$(head -n 1 "$expected/queries.out")" ]] || fail "no answer before end of input (got '$got')"
     exec 3>&-
     wait "$pid" || fail "exit status $? after end of input"
+    # The same with --threads 2: a partial block is answered while the input is still open.
+    : >"$work/out"
+    "$exe" intersect --threads 2 <"$work/fifo" >"$work/out" 2>"$work/err" &
+    pid=$!
+    exec 3>"$work/fifo"
+    head -n 2 "$examples/queries.jsonl" >&3
+    got=""
+    for _ in $(seq 1 200); do
+        [[ $(wc -l <"$work/out") == 2 ]] && { got=$(cat "$work/out"); break; }
+        sleep 0.05
+    done
+    [[ $got == "$(head -n 2 "$expected/queries.out")" ]] || fail "--threads 2: no answers before end of input (got '$got')"
+    exec 3>&-
+    wait "$pid" || fail "--threads 2: exit status $? after end of input"
     ;;
 grid_basic)
     # `boxcyl grid`: cell indices in lexicographic order, the count, ids echoed; stdin and a file.

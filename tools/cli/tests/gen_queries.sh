@@ -5,7 +5,8 @@
 #   SEED       awk's random seed (default 1): the same awk and seed give the same file.
 #   BAD_EVERY  when > 0, every BAD_EVERY-th line is bad instead (cycling through an empty line, a
 #              truncated object, a negative radius and invalid UTF-8), to exercise the error path.
-# For the line-count test (cli.e2e.large_line_count) and the streaming measurement in docs/reliability.md.
+# For the line-count tests (cli.e2e.large_line_count, cli.e2e.threads) and scripts/stream-check.sh
+# (the streaming measurement in docs/reliability.md).
 set -euo pipefail
 n=${1:?usage: gen_queries.sh N [SEED] [BAD_EVERY]}
 seed=${2:-1}

@@ -380,6 +380,58 @@ TEST(JsonlStream, OnlyNewlinesAreEmptyLines) {
               "{\"error\": \"line 3: empty line\"}\n");
 }
 
+// Inputs around the block size of the multi-threaded path: good lines with varied answers, bad ones
+// of every kind (empty, invalid JSON, invalid UTF-8, an invalid value) and one line longer than a
+// block's byte budget. `n` lines; with `final_newline` false the last one has none.
+std::string mixed_input(std::size_t n, bool final_newline) {
+    std::string s;
+    for (std::size_t i = 1; i <= n; ++i) {
+        const std::string id = R"({"id": )" + std::to_string(i) + ", ";
+        switch (i == n ? 1 : i % 13) {  // the last line is a query: empty and unterminated is no line
+            case 0: break;                 // empty line
+            case 5: s += id + kBox; break;  // truncated
+            case 7: s += id + "\"note\": \"\xff\", " + kBox + ", " + kCyl + "}"; break;
+            case 11: s += id + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 0], "radius": 1, "height": 1}})"; break;
+            default: {
+                // The cylinder's x slides across the box face x = 1 in steps of 1/8: hits, touches, misses.
+                const double x = 1.0 + static_cast<double>(i % 9) / 8.0;
+                s += id + kBox + R"(, "cylinder": {"center": [)" + std::to_string(x) +
+                     R"(, 0.5, 0.5], "axis": [0, 0, 1], "radius": 0.5, "height": 1}})";
+            }
+        }
+        if (i == 4100) s += std::string(stream_block_bytes + 10, ' ');  // trailing whitespace is fine JSON
+        if (i < n || final_newline) s += '\n';
+    }
+    return s;
+}
+
+TEST(JsonlStream, ThreadedOutputIsByteIdenticalToSerial) {
+    const RunOptions opt = make_run_options("inequalities", "filtered");
+    for (const std::size_t n : {std::size_t{0}, std::size_t{1}, stream_block_lines - 1, stream_block_lines,
+                                stream_block_lines + 1, 3 * stream_block_lines + 17}) {
+        for (const bool final_newline : {true, false}) {
+            const std::string input = mixed_input(n, final_newline);
+            std::istringstream in1(input);
+            std::ostringstream out1;
+            const std::size_t bad1 = process_stream(in1, out1, opt, 1);
+            ASSERT_EQ(lines_of(out1.str()).size(), n);
+            if (n > 13) {
+                EXPECT_GT(bad1, 0u);
+                EXPECT_LT(bad1, n);
+            }
+            for (const unsigned threads : {2u, 8u}) {  // 0 (one per core): the CLI test
+                std::istringstream in(input);
+                std::ostringstream out;
+                const std::size_t bad = process_stream(in, out, opt, threads);
+                EXPECT_EQ(bad, bad1) << n << " lines, " << threads << " threads";
+                EXPECT_TRUE(out.str() == out1.str())
+                    << n << " lines (final newline " << final_newline << "), " << threads
+                    << " threads: output differs from the single-threaded one";
+            }
+        }
+    }
+}
+
 
 // --- hostile input (issue 7): every bad line gets its error line, the run goes on ---
 
