@@ -155,17 +155,23 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
 #endif
     if (file == "-") return run_on(in, out, options, threads);
 
+    std::optional<std::ifstream> f = open_input(file, err);
+    if (!f) return exit_usage;
+    return run_on(*f, out, options, threads);
+}
+
+std::optional<std::ifstream> open_input(const std::string& file, std::ostream& err) {
     std::error_code ec;
     if (std::filesystem::is_directory(file, ec)) {
         err << "boxcyl: cannot read '" << file << "': is a directory\n";
-        return exit_usage;
+        return std::nullopt;
     }
     std::ifstream f(file, std::ios::binary);
     if (!f) {
         err << "boxcyl: cannot open '" << file << "': " << std::strerror(errno) << "\n";
-        return exit_usage;
+        return std::nullopt;
     }
-    return run_on(f, out, options, threads);
+    return f;
 }
 
 int run_app(int argc, const char* const* argv) {

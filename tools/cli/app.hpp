@@ -1,7 +1,10 @@
 // The command line of `boxcyl`: options, help text, input selection and exit codes.
 #pragma once
 
-#include <iosfwd>  // std::istream, std::ostream
+#include <fstream>   // std::ifstream
+#include <iosfwd>    // std::istream, std::ostream
+#include <optional>  // open_input's failure
+#include <string>    // file names
 
 namespace boxcyl::cli {
 
@@ -15,5 +18,9 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
 
 // The same on the process's standard streams.
 int run_app(int argc, const char* const* argv);
+
+// Opens a subcommand's input file (binary), or says on `err` why not ("boxcyl: cannot open 'F': ...";
+// a directory is refused: it opens but reads nothing) and returns nullopt: exit with exit_usage.
+std::optional<std::ifstream> open_input(const std::string& file, std::ostream& err);
 
 }  // namespace boxcyl::cli

@@ -9,7 +9,6 @@
 #include <cmath>      // std::isfinite, std::cos, std::sin
 #include <cstdio>     // std::snprintf
 #include <cstring>    // std::strerror
-#include <filesystem> // refuse directories
 #include <fstream>    // input and output files
 #include <iostream>   // streams
 #include <iterator>   // std::istreambuf_iterator
@@ -684,17 +683,9 @@ int run_explain(const ExplainCommand& cmd, std::istream& in, std::ostream& out, 
             return exit_usage;
         }
     } else {
-        std::error_code ec;
-        if (std::filesystem::is_directory(cmd.file, ec)) {
-            err << "boxcyl: cannot read '" << cmd.file << "': is a directory\n";
-            return exit_usage;
-        }
-        std::ifstream f(cmd.file, std::ios::binary);
-        if (!f) {
-            err << "boxcyl: cannot open '" << cmd.file << "': " << std::strerror(errno) << "\n";
-            return exit_usage;
-        }
-        text = read_all(f);
+        std::optional<std::ifstream> f = open_input(cmd.file, err);
+        if (!f) return exit_usage;
+        text = read_all(*f);
     }
 
     // The query text and the line number its messages name.

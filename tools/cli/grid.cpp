@@ -3,11 +3,9 @@
 #include "grid.hpp"
 
 #include <array>       // the counts
-#include <cerrno>      // errno after a failed open
 #include <cstdint>     // std::int64_t, std::uint64_t
 #include <cstring>     // std::strerror
 #include <exception>   // failures of the library call
-#include <filesystem>  // refuse directories (they "open" but read nothing)
 #include <fstream>     // input files
 #include <istream>     // std::getline
 #include <limits>      // the int64 range
@@ -170,17 +168,9 @@ int run_grid(const GridCommand& cmd, std::istream& in, std::ostream& out, std::o
         return bad == 0 ? exit_ok : exit_bad_lines;
     };
     if (cmd.file == "-") return run_on(in);
-    std::error_code ec;
-    if (std::filesystem::is_directory(cmd.file, ec)) {
-        err << "boxcyl: cannot read '" << cmd.file << "': is a directory\n";
-        return exit_usage;
-    }
-    std::ifstream f(cmd.file, std::ios::binary);
-    if (!f) {
-        err << "boxcyl: cannot open '" << cmd.file << "': " << std::strerror(errno) << "\n";
-        return exit_usage;
-    }
-    return run_on(f);
+    std::optional<std::ifstream> f = open_input(cmd.file, err);
+    if (!f) return exit_usage;
+    return run_on(*f);
 #endif
 }
 
