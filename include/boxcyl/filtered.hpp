@@ -49,6 +49,7 @@
 
 #include "boxcyl/algo/linear_inequalities.hpp"
 #include "boxcyl/exact_paths.hpp"
+#include "boxcyl/filtered/semi_static.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/reduce.hpp"
@@ -727,7 +728,8 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
 #if defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT
     return {exact_answer(box, cyl), true};
 #else
-    const std::optional<bool> fast = filter(box, cyl);
+    std::optional<bool> fast = semi_static::filter(box, cyl);  // stage 0
+    if (!fast) fast = filter(box, cyl);                         // stage 1
     if (!fast) return {exact_answer(box, cyl), true};
 #if defined(BOXCYL_CHECK_FILTER) && BOXCYL_CHECK_FILTER
     if (exact_answer(box, cyl) != *fast)

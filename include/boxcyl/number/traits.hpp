@@ -38,7 +38,7 @@ T inexact_sqrt(const T& x) {
 // enclosure_clamp, found by argument-dependent lookup: they enclose the result without deciding a
 // sign, so a value near 0 does not make the filter undecided. Other types compare.
 template <class T>
-T abs_value(const T& x) {
+constexpr T abs_value(const T& x) {
     if constexpr (requires { enclosure_abs(x); }) {
         return enclosure_abs(x);
     } else {

@@ -1,0 +1,393 @@
+// Stage 0 of the filtered exact query (issue #4): a semi-static filter in plain double.
+//
+// A handful of cheap geometric tests decide most queries far from touching before §4 runs at all:
+//   misses: a separating axis — a box face normal E_i, the cylinder axis d, or d × E_i;
+//   hits:   the cylinder centre inside the box; a witness point Q of the box inside the cylinder
+//           (Q: the box point nearest to the cylinder centre, the box centre, and the box point
+//           nearest to the axis point nearest to the box centre); or a witness point X of the
+//           cylinder inside the box (X: that axis point itself, and the point of its cross-section
+//           0.9·r towards the box centre) — the latter for segments and disks too.
+// Each test is one polynomial in the inputs evaluated in plain double; it decides only when the
+// computed value exceeds a bound B = (κ_ε·ε + κ_g·g)·L^k on its error, where L is a length scale of
+// the query (every input length is ≤ L/2), k the test's degree in lengths, ε = 2^-52 the rounding
+// unit, g an oriented frame's distance from orthonormal (0 for other boxes), and κ_ε, κ_g constants
+// computed at compile time by evaluating the very same template expression on StaticBound
+// (number/static_bound.hpp) from the input model of the box kind below. So every bound is derived by
+// code (docs/robustness.md §9), and a test costs one or two extra flops and a comparison.
+// Anything undecided goes on to stage 1 (filtered.hpp), which is slower but tighter.
+//
+// Exactness argument. Misses are certified on a problem that contains the exact one, hits on one
+// contained in it, and a witness point Q is always exactly a point of the box (clamping a double to
+// [min, max] is exact; for oriented boxes Q is given by box coordinates x with |x_m| ≤ e_m exactly).
+// An oriented box with a rounded frame A is compared with the box of the orthonormal polar factor Q_A
+// of A = Q_A·S, which is within Hausdorff distance γ = g·|e|₁ of it (g ≥ ‖AᵀA − I‖₂ ≥ ‖A − Q_A‖₂):
+// the cylinder grown by γ (radius and half-height) certifies misses, shrunk by γ certifies hits, as in
+// stage 1 (docs/robustness.md §4). The computed canonical data differ from the ideal problem's (Q_Aᵀ
+// applied exactly) by the input model's errors, in units ε·L and g·L.
+//
+// Range: stage 0 runs only when L ∈ [2^-200, 2^200] (else stage 1 scales the problem). Then every
+// quantity of degree ≤ 4 stays far from overflow, and each rounding in the subnormal range adds at
+// most 2^-1074·(4L)^(k−j)/L^k ≤ 2^-266 (in units of L^k) to a bound of degree k: the "+ 1" slack of
+// every κ_ε (one unit of ε·L^k) covers 2^214 of them.
+#pragma once
+
+#include <algorithm>  // std::max, std::clamp
+#include <array>      // the oriented frame
+#include <cmath>      // std::fabs, std::ilogb, std::scalbn, std::sqrt
+#include <optional>   // undecided
+#include <utility>    // std::swap
+
+#include "boxcyl/geometry/box.hpp"
+#include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/number/static_bound.hpp"
+#include "boxcyl/number/traits.hpp"  // abs_value
+
+namespace boxcyl::filtered::semi_static {
+
+inline constexpr double eps = 0x1p-52;  // one rounding, relative, in every rounding mode
+inline constexpr double min_scale = 0x1p-200, max_scale = 0x1p200;
+
+// ---- The tests, written once over T: double evaluates them, StaticBound bounds their error. ----
+
+// A box face normal E_i separates when the box's gap s = |c_i| − e_i − H|d_i| exceeds the cylinder's
+// cross-section half-width r·√(1 − d_i²) = r·√(d_j² + d_k²) (|d| = 1): s > 0 and s² > r²(d_j² + d_k²).
+template <class T>
+constexpr T face_gap(const T& ci, const T& ei, const T& h, const T& di) {
+    return abs_value(ci) - ei - h * abs_value(di);
+}
+template <class T>
+constexpr T face_gap_squared(const T& s, const T& r, const T& dj, const T& dk) {
+    return s * s - r * r * (dj * dj + dk * dk);
+}
+// The cylinder axis d separates when |d·c| > H + Σ e_k|d_k| (the box's extent along d).
+template <class T>
+constexpr T axis_gap(const Vec3<T>& c, const Vec3<T>& d, const Vec3<T>& e, const T& h) {
+    return abs_value(dot(d, c)) - h - (e[0] * abs_value(d[0]) + e[1] * abs_value(d[1]) + e[2] * abs_value(d[2]));
+}
+// n = d × E_i = (0, d_k, −d_j) in (i, j, k) order, ⊥ d: the axis segment projects to a point, the
+// cross-section to r|n|, the box to e_j|d_k| + e_k|d_j|; it separates when s = |n·c| − (that) > 0 and
+// s² > r²|n|² = r²(d_j² + d_k²).
+template <class T>
+constexpr T edge_gap(const T& cj, const T& ck, const T& dj, const T& dk, const T& ej, const T& ek) {
+    return abs_value(T(dk * cj - dj * ck)) - (ej * abs_value(dk) + ek * abs_value(dj));
+}
+// The cylinder centre inside the box: e_i − |c_i| ≥ 0 for every i.
+template <class T>
+constexpr T inside_margin(const T& ci, const T& ei) {
+    return ei - abs_value(ci);
+}
+// A box point Q = C + v inside the cylinder: H − |d·v| ≥ 0 and r² − (|v|² − (d·v)²) ≥ 0 (|d| = 1).
+template <class T>
+constexpr T witness_height_margin(const Vec3<T>& v, const Vec3<T>& d, const T& h) {
+    return h - abs_value(dot(d, v));
+}
+template <class T>
+constexpr T witness_radial_margin(const Vec3<T>& v, const Vec3<T>& d, const T& r) {
+    const T t = dot(d, v);
+    return r * r - (dot(v, v) - t * t);
+}
+// A cylinder point X = C + t·d + (z − (d·z)·d) for doubles t, z with |t| ≤ H exactly and
+// |z − (d·z)d| ≤ r (that is witness_radial_margin(z, d, r) ≥ 0; nothing to check for z = 0) inside
+// the box: e_i − |c_i + t·d_i + z_i − (d·z)·d_i| ≥ 0 for every i (dz = d·z, computed once).
+template <class T>
+constexpr T chord_box_margin(const T& ci, const T& ei, const T& t, const T& di, const T& zi, const T& dz) {
+    return ei - abs_value(T(ci + t * di + zi - dz * di));
+}
+
+// ---- Input models: magnitude (units of L) and error (units of ε·L and g·L) of the computed data. ----
+//
+// L = 2·max|input length|: every input length is ≤ L/2. u = axis/|axis| computed after an exact
+// power-of-two scaling (|u_i| ≤ 1, error ≤ 3.6ε|u_i|: γ3 for the squared norm, half of it through the
+// sqrt, one rounding each for the sqrt and the quotient).
+//   canonical: c, e, r, H = h/2 exact; v = fl(clamp(c, ±e) − c): |v| ≤ L, one rounding.
+//   aligned:   K = fl(min/2 + max/2) (error ≤ εL/2), c = fl(C − K) (|c| ≤ L, error ≤ 1.5ε·L + ε²),
+//              e = fl(max/2 − min/2) (error ≤ εL/2); v = fl(Q − C) with Q exactly in the box.
+//   oriented:  δ = fl(C − K) (|δ_j| ≤ L, error ≤ εL); c = fl(A_i·δ) against the ideal Q_A,iᵀδ:
+//              |c_i| ≤ |δ|₂ ≤ √3·L, error ≤ |A_i|·√3εL + γ3·|A_i||δ| + g·√3L ≤ 7εL + 1.7321gL
+//              (|A_i| ≤ 1.0005); d_i = fl(A_i·u): error ≤ |A_i|·3.6ε + γ3·|A_i| + g ≤ 7ε + g;
+//              r ± γ, H ± γ with γ ≤ 2^-10·1.5L the double used, one rounding each; v = fl(x − c) with
+//              x exact box coordinates: |v| ≤ (0.5 + √3)L, error c's + one rounding.
+// The cylinder-side witnesses' t and z are doubles chosen by the filter, exact by definition:
+// |t| ≤ H ≤ 0.26L, and z = s·(−c − t·d) with s ≤ 1, |z_i| ≤ |c_i| + |t| ≤ 2L.
+struct InputModel {
+    StaticBound c, d, e, r, h, v;
+    StaticBound t{0.26, 0}, z{2, 0};
+};
+inline constexpr InputModel canonical_model{{0.5, 0}, {1, 4}, {0.5, 0}, {0.5, 0}, {0.25, 0}, {1, 1}};
+inline constexpr InputModel aligned_model{{1, 2}, {1, 4}, {0.5, 1}, {0.5, 0}, {0.25, 0}, {1, 1}};
+inline constexpr InputModel oriented_model{{1.7321, 7, 1.7321}, {1, 7, 1},  {0.5, 0},
+                                           {0.51, 1},           {0.26, 1}, {2.2321, 10, 1.7321}};
+
+// κ of each test for a model: the StaticBound evaluation inflated by 1% (the constant evaluation's own
+// rounding and the rounding of the bound at run time), plus one unit of ε (the subnormal slack).
+struct Kappa {
+    double eps = 0, g = 0;
+};
+struct Kappas {
+    Kappa face, face_sq, axis, edge, edge_sq, inside, height, radial, chord_box, chord_radial;
+};
+constexpr Kappa kappa(const StaticBound& b) { return {b.eps * 1.01 + 1, b.g * 1.01}; }
+constexpr Kappas kappas_for(const InputModel& m) {
+    const Vec3<StaticBound> c{m.c, m.c, m.c}, d{m.d, m.d, m.d}, e{m.e, m.e, m.e}, v{m.v, m.v, m.v}, z{m.z, m.z, m.z};
+    const StaticBound face = face_gap(m.c, m.e, m.h, m.d);
+    const StaticBound edge = edge_gap(m.c, m.c, m.d, m.d, m.e, m.e);
+    return {kappa(face),
+            kappa(face_gap_squared(face, m.r, m.d, m.d)),
+            kappa(axis_gap(c, d, e, m.h)),
+            kappa(edge),
+            kappa(face_gap_squared(edge, m.r, m.d, m.d)),
+            kappa(inside_margin(m.c, m.e)),
+            kappa(witness_height_margin(v, d, m.h)),
+            kappa(witness_radial_margin(v, d, m.r)),
+            kappa(chord_box_margin(m.c, m.e, m.t, m.d, m.z, dot(d, z))),
+            kappa(witness_radial_margin(z, d, m.r))};
+}
+inline constexpr Kappas canonical_kappas = kappas_for(canonical_model);
+inline constexpr Kappas aligned_kappas = kappas_for(aligned_model);
+inline constexpr Kappas oriented_kappas = kappas_for(oriented_model);
+
+// ---- The computed problem and the decision. ----
+
+// The canonical problem as computed (box frame): miss tests use (r_out, h_out), hit tests (r_in, h_in)
+// when has_inner (they differ by γ for rounded oriented frames only).
+struct Problem {
+    Vec3<double> c, d, e;
+    double r_out = 0, h_out = 0, r_in = 0, h_in = 0;
+    bool has_inner = true;
+    bool exact_inside = false;  // aligned and canonical boxes: "C in the box" decided exactly
+    double l = 0;               // the length scale L
+    double e1 = 0, e2 = 0;      // ε·L and ε·L²: the rounding units of degree 1 and 2
+    double g1 = 0, g2 = 0;      // g·L and g·L²
+    double g = 0, gamma = 0;    // oriented boxes: g ≥ ‖AᵀA − I‖₂ and γ ≥ g·|e|₁
+    Vec3<double> k;             // aligned boxes: the computed centre (min + max)/2, a box point
+};
+
+// The unit axis: the largest component scaled to [1, 2) by a power of two, then normalised.
+inline Vec3<double> unit_axis(const Vec3<double>& a) {
+    const double m = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])});
+    const int k = std::ilogb(m);  // m > 0: the caller checked
+    const Vec3<double> s{std::scalbn(a[0], -k), std::scalbn(a[1], -k), std::scalbn(a[2], -k)};
+    const double len = std::sqrt(dot(s, s));
+    return {s[0] / len, s[1] / len, s[2] / len};
+}
+
+inline bool in_range(double l) { return l >= min_scale && l <= max_scale; }
+inline double largest(const Vec3<double>& v) { return std::max({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])}); }
+inline bool usable_axis(const Vec3<double>& a) {
+    const double m = largest(a);
+    return m > 0 && m <= 0x1p1000;  // finite and non-zero (validated input is)
+}
+
+// The decision on a computed problem; `witness(k)` returns the offset v = Q_k − C of the k-th witness
+// box point (k = 0, 1, 2) in the box frame.
+// The cylinder-side witnesses' axial parameter t: the axis point nearest to the box centre, clamped to
+// |t| ≤ H' where H' < H_in for sure (H_in·(1 − 2^-40) with H_in normal, or 0 for a disk); nullopt when
+// H_in is subnormal (no safe H').
+inline std::optional<double> axial_parameter(const Problem& p) {
+    if (p.h_in != 0 && !(p.h_in >= 0x1p-1000)) return std::nullopt;
+    const double h = p.h_in * (1 - 0x1p-40);
+    return std::clamp(-dot(p.d, p.c), -h, h);
+}
+// The middle of the axis segment's part inside the box (Liang–Barsky clipping of c + t·d, |t| ≤ H',
+// against |x_i| ≤ e_i), when that part is not empty; H' as in axial_parameter (call it first: it
+// rejects a subnormal H_in).
+inline std::optional<double> chord_middle(const Problem& p) {
+    const double h = p.h_in * (1 - 0x1p-40);
+    double lo = -h, hi = h;
+    for (int i = 0; i < 3; ++i) {
+        if (p.d[i] == 0) continue;
+        double a = (-p.e[i] - p.c[i]) / p.d[i], b = (p.e[i] - p.c[i]) / p.d[i];
+        if (a > b) std::swap(a, b);
+        lo = std::max(lo, a);
+        hi = std::min(hi, b);
+    }
+    if (!(lo <= hi)) return std::nullopt;
+    return std::clamp(lo * 0.5 + hi * 0.5, -h, h);
+}
+// z = s·y, y = −c − t·d (from the axis point to the box centre), s ≤ 1 such that the radial part of z
+// is about 0.9·r_in: any double vector would do, the radial margin is checked.
+inline Vec3<double> towards_centre(const Problem& p, double t) {
+    const Vec3<double> y = -(p.c + t * p.d);
+    const double a = dot(p.d, y);
+    const double perp = std::sqrt(std::max(0.0, dot(y, y) - a * a));
+    const double s = perp > 0.9 * p.r_in ? 0.9 * p.r_in / perp : 1.0;
+    return s * y;
+}
+
+template <class Witness>
+std::optional<bool> decide(const Problem& p, const Kappas& k, Witness&& witness) {
+    const Vec3<double>& c = p.c;
+    const Vec3<double>& d = p.d;
+    const Vec3<double>& e = p.e;
+    auto bound1 = [&p](const Kappa& kk) { return kk.eps * p.e1 + kk.g * p.g1; };
+    auto bound2 = [&p](const Kappa& kk) { return kk.eps * p.e2 + kk.g * p.g2; };
+    // Misses along the box faces' normals: the most common certificate.
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, l = (i + 2) % 3;
+        const double s = face_gap(c[i], e[i], p.h_out, d[i]);
+        if (s > bound1(k.face) && face_gap_squared(s, p.r_out, d[j], d[l]) > bound2(k.face_sq)) return false;
+    }
+    if (axis_gap(c, d, e, p.h_out) > bound1(k.axis)) return false;
+    if (p.has_inner) {
+        if (p.exact_inside) return true;
+        const double inside = bound1(k.inside);
+        if (inside_margin(c[0], e[0]) > inside && inside_margin(c[1], e[1]) > inside && inside_margin(c[2], e[2]) > inside)
+            return true;
+        for (int w = 0; w < 3; ++w) {
+            const Vec3<double> v = witness(w);
+            if (witness_height_margin(v, d, p.h_in) > bound1(k.height) &&
+                witness_radial_margin(v, d, p.r_in) > bound2(k.radial))
+                return true;
+        }
+        if (const std::optional<double> t = axial_parameter(p)) {
+            auto chord_hit = [&](double at, const Vec3<double>& z) {
+                const double dz = dot(d, z), b = bound1(k.chord_box);
+                for (int i = 0; i < 3; ++i)
+                    if (!(chord_box_margin(c[i], e[i], at, d[i], z[i], dz) > b)) return false;
+                return true;
+            };
+            auto in_box = [&](const Vec3<double>& z) { return chord_hit(*t, z); };
+            const Vec3<double> zero{0, 0, 0};
+            if (in_box(zero)) return true;
+            if (const std::optional<double> mid = chord_middle(p); mid && chord_hit(*mid, zero)) return true;
+            const Vec3<double> z = towards_centre(p, *t);
+            if (witness_radial_margin(z, d, p.r_in) > bound2(k.chord_radial) && in_box(z)) return true;
+        }
+    }
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, l = (i + 2) % 3;
+        const double s = edge_gap(c[j], c[l], d[j], d[l], e[j], e[l]);
+        if (s > bound1(k.edge) && face_gap_squared(s, p.r_out, d[j], d[l]) > bound2(k.edge_sq)) return false;
+    }
+    return std::nullopt;
+}
+
+// `sound = false` (the filter() overloads below) sets every κ to 0: decisions on the computed values
+// alone, unsound, for the tests that show the bounds are needed.
+// The error units of degree 1 and 2 for the scale l and an oriented frame's g (0 otherwise).
+inline void set_units(Problem& p, double l, double g) {
+    p.l = l;
+    p.e1 = eps * l;
+    p.e2 = p.e1 * l;
+    p.g1 = g * l;
+    p.g2 = p.g1 * l;
+}
+
+// The axis point nearest to the box centre (canonical origin), clamped to the slab: c + t·d with
+// t = clamp(−d·c, −H, H). Any point will do for a witness; this one is often deep inside.
+inline Vec3<double> axis_point_near_centre(const Vec3<double>& c, const Vec3<double>& d, double h) {
+    const double t = std::clamp(-dot(d, c), -h, h);
+    return {c[0] + t * d[0], c[1] + t * d[1], c[2] + t * d[2]};
+}
+
+// ---- The computed problem of each box kind (nullopt: out of range, stage 1 decides). ----
+
+// §1.2: the box is canonical, the cylinder already in its frame: nothing rounds but the unit axis.
+inline std::optional<Problem> problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl) {
+    const double l = 2 * std::max({largest(b.extents), largest(cyl.center), cyl.radius, cyl.height});
+    if (!in_range(l) || !usable_axis(cyl.axis)) return std::nullopt;
+    Problem p;
+    p.c = cyl.center;
+    p.d = unit_axis(cyl.axis);
+    p.e = b.extents;
+    p.r_out = p.r_in = cyl.radius;
+    p.h_out = p.h_in = cyl.height * 0.5;
+    p.exact_inside = std::fabs(p.c[0]) <= p.e[0] && std::fabs(p.c[1]) <= p.e[1] && std::fabs(p.c[2]) <= p.e[2];
+    set_units(p, l, 0);
+    return p;
+}
+
+// §1.3: centre K and extents E rounded (in the model); "C in the box" is decided exactly.
+inline std::optional<Problem> problem(const AlignedBox<double>& b, const Cylinder<double>& cyl) {
+    const double l = 2 * std::max({largest(b.min), largest(b.max), largest(cyl.center), cyl.radius, cyl.height});
+    if (!in_range(l) || !usable_axis(cyl.axis)) return std::nullopt;
+    Problem p;
+    for (int i = 0; i < 3; ++i) {
+        p.k[i] = b.min[i] * 0.5 + b.max[i] * 0.5;  // in [min, max]: rounding is monotone
+        p.c[i] = cyl.center[i] - p.k[i];
+        p.e[i] = b.max[i] * 0.5 - b.min[i] * 0.5;
+    }
+    p.d = unit_axis(cyl.axis);
+    p.r_out = p.r_in = cyl.radius;
+    p.h_out = p.h_in = cyl.height * 0.5;
+    p.exact_inside = true;
+    for (int i = 0; i < 3; ++i) p.exact_inside &= b.min[i] <= cyl.center[i] && cyl.center[i] <= b.max[i];
+    set_units(p, l, 0);
+    return p;
+}
+
+// §1.4 with the frame as given: g bounds ‖AᵀA − I‖₂ (max row sum of |G|). The computed Gram entries
+// are within γ3·|A_i||A_j| ≤ 3.0003ε of the exact ones (the diagonal's "− 1" is exact by Sterbenz's
+// lemma, as |A_i|² ∈ [0.5, 2]), a row sum of three rounds twice: so g ≤ row + 10ε, and
+// g = fl(row + 32ε) is an upper bound.
+inline std::optional<Problem> problem(const OrientedBox<double>& b, const Cylinder<double>& cyl) {
+    const double l = 2 * std::max({largest(b.center), largest(b.extents), largest(cyl.center), cyl.radius, cyl.height});
+    if (!in_range(l) || !usable_axis(cyl.axis)) return std::nullopt;
+    const std::array<Vec3<double>, 3>& a = b.axes;
+    double row_max = 0;
+    for (int i = 0; i < 3; ++i) {
+        double row = 0;
+        for (int j = 0; j < 3; ++j) row += std::fabs(dot(a[i], a[j]) - (i == j ? 1.0 : 0.0));
+        row_max = std::max(row_max, row);
+    }
+    const double g = row_max + 32 * eps;
+    if (!(g <= 0x1p-10)) return std::nullopt;  // also the validated bound on |G_ij| and a NaN
+    Problem p;
+    const Vec3<double> delta = cyl.center - b.center;
+    const Vec3<double> u = unit_axis(cyl.axis);
+    for (int i = 0; i < 3; ++i) {
+        p.c[i] = dot(a[i], delta);
+        p.d[i] = dot(a[i], u);
+    }
+    p.e = b.extents;
+    // γ ≥ g·|e|₁ as a double (the product rounded, then inflated by 8ε: ≥ the exact product).
+    p.gamma = g * (b.extents[0] + b.extents[1] + b.extents[2]) * (1 + 0x1p-49);
+    p.g = g;
+    const double h = cyl.height * 0.5;
+    p.r_out = cyl.radius + p.gamma;
+    p.h_out = h + p.gamma;
+    p.has_inner = cyl.radius >= p.gamma && cyl.height >= 2 * p.gamma;
+    p.r_in = cyl.radius - p.gamma;
+    p.h_in = h - p.gamma;
+    set_units(p, l, g);
+    return p;
+}
+
+// The witness offsets v = Q − C (box frame) of the three witness box points Q, w = 0, 1, 2: the box
+// point nearest to the cylinder centre, the box centre, the box point nearest to the axis point
+// nearest to the box centre. Q is exactly a box point: clamped in world coordinates for aligned boxes,
+// box coordinates x with |x_m| ≤ e_m otherwise.
+inline Vec3<double> witness_offset(const Problem& p, int w) {
+    const Vec3<double> target = w == 0 ? p.c : w == 1 ? Vec3<double>{0, 0, 0} : axis_point_near_centre(p.c, p.d, p.h_in);
+    Vec3<double> v;
+    for (int i = 0; i < 3; ++i) v[i] = std::clamp(target[i], -p.e[i], p.e[i]) - p.c[i];
+    return v;
+}
+inline Vec3<double> witness_offset(const Problem& p, int w, const AlignedBox<double>& b, const Cylinder<double>& cyl) {
+    Vec3<double> target = cyl.center;
+    if (w == 1) target = p.k;
+    if (w == 2) target = p.k + axis_point_near_centre(p.c, p.d, p.h_in);
+    Vec3<double> v;
+    for (int i = 0; i < 3; ++i) v[i] = std::clamp(target[i], b.min[i], b.max[i]) - cyl.center[i];
+    return v;
+}
+
+// ---- Stage 0: the answer, or nullopt when undecided. ----
+
+inline std::optional<bool> filter(const CanonicalBox<double>& b, const Cylinder<double>& cyl, bool sound = true) {
+    const std::optional<Problem> p = problem(b, cyl);
+    if (!p) return std::nullopt;
+    return decide(*p, sound ? canonical_kappas : Kappas{}, [&](int w) { return witness_offset(*p, w); });
+}
+inline std::optional<bool> filter(const AlignedBox<double>& b, const Cylinder<double>& cyl, bool sound = true) {
+    const std::optional<Problem> p = problem(b, cyl);
+    if (!p) return std::nullopt;
+    return decide(*p, sound ? aligned_kappas : Kappas{}, [&](int w) { return witness_offset(*p, w, b, cyl); });
+}
+inline std::optional<bool> filter(const OrientedBox<double>& b, const Cylinder<double>& cyl, bool sound = true) {
+    const std::optional<Problem> p = problem(b, cyl);
+    if (!p) return std::nullopt;
+    return decide(*p, sound ? oriented_kappas : Kappas{}, [&](int w) { return witness_offset(*p, w); });
+}
+
+}  // namespace boxcyl::filtered::semi_static
