@@ -410,9 +410,9 @@ TEST_P(FilteredRandom, AgreesWithOracle) {
     EXPECT_GT(f.t.hits, n / 5);
     EXPECT_LT(f.t.hits, n * 4 / 5);
     if (!forced) {
-        // Measured ≈ 0.03%, all flat oriented boxes (docs/robustness.md §5); the hit certificates must
-        // keep disks and segments off the exact path too.
-        EXPECT_LT(f.fallback(), 0.002);
+        // Measured 0–1 in 100,000 (0.03% before the witness search, all flat boxes; docs/robustness.md
+        // §5, §9): issue #4's goal is < 1e-4. The hit certificates keep disks and segments off too.
+        EXPECT_LT(f.fallback(), 2e-4);
         EXPECT_LT(f.fallback(regular), 0.0005);
         EXPECT_LT(f.fallback(disk), 0.002);
         EXPECT_LT(f.fallback(segment), 0.002);

@@ -50,6 +50,7 @@
 #include "boxcyl/algo/linear_inequalities.hpp"
 #include "boxcyl/exact_paths.hpp"
 #include "boxcyl/filtered/semi_static.hpp"
+#include "boxcyl/filtered/witness_search.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/reduce.hpp"
@@ -730,6 +731,7 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
 #else
     std::optional<bool> fast = semi_static::filter(box, cyl);  // stage 0
     if (!fast) fast = filter(box, cyl);                         // stage 1
+    if (!fast && witness_search::certain_hit(box, cyl)) fast = true;
     if (!fast) return {exact_answer(box, cyl), true};
 #if defined(BOXCYL_CHECK_FILTER) && BOXCYL_CHECK_FILTER
     if (exact_answer(box, cyl) != *fast)

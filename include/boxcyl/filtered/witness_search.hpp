@@ -1,0 +1,91 @@
+// A searched hit certificate (issue #4), the filtered query's last try before exact arithmetic.
+//
+// Where stage 1's certificates fail on a hit, the intersection of box and cylinder is usually still
+// far from degenerate — typically a flat box (a rectangle) cutting the cylinder off its centre and
+// central cross-sections, where no fixed candidate point lies. A point of it is found by alternating
+// projections (von Neumann) between the box and the cylinder shrunk to a fraction s ∈ {0.75, 0.97,
+// 0.999} of its radius and half-height (a deep point first, a thin intersection last): each step
+// projects onto the cylinder (clamp the axial coordinate to [−H', H'], scale the radial offset down
+// to r') and then onto the box (clamp each coordinate), so the iterate is always a box point exactly
+// (clamped in world coordinates for aligned boxes, in box coordinates otherwise). When the two
+// convex sets meet, the iterates approach their intersection; once one lies in the full cylinder
+// with margin, stage 0's witness test (semi_static.hpp: plain double, error bound computed at compile
+// time) certifies the hit. The search itself is plain double and need not be accurate: only the
+// final test has to be sound. Misses and near-touching hits stay undecided (the exact path answers);
+// they cost the search's 3 × 256 steps (≈10 µs), small beside the exact path's ≈500 µs.
+#pragma once
+
+#include <algorithm>  // std::clamp
+#include <cmath>      // std::sqrt
+
+#include "boxcyl/filtered/semi_static.hpp"
+
+namespace boxcyl::filtered::witness_search {
+
+namespace detail {
+
+using semi_static::Kappas;
+using semi_static::Problem;
+
+// One projection onto the cylinder (centre c, unit axis d, half-height h, radius r) in the box frame.
+inline Vec3<double> onto_cylinder(const Vec3<double>& x, const Problem& p, double h, double r) {
+    const Vec3<double> y = x - p.c;
+    const double t = dot(p.d, y);
+    Vec3<double> w = y - t * p.d;
+    const double rho = std::sqrt(dot(w, w));
+    if (rho > r) w = (rho > 0 ? r / rho : 0.0) * w;
+    return p.c + std::clamp(t, -h, h) * p.d + w;
+}
+inline Vec3<double> onto_box(const Vec3<double>& x, const Vec3<double>& e) {
+    return {std::clamp(x[0], -e[0], e[0]), std::clamp(x[1], -e[1], e[1]), std::clamp(x[2], -e[2], e[2])};
+}
+
+// True when a searched box point certainly lies in the cylinder. `offset(x)` turns the box-frame
+// iterate x into the witness offset v = Q − C of an exact box point Q (the clamp that makes it exact).
+template <class Offset>
+bool search(const Problem& p, const Kappas& k, Offset&& offset) {
+    if (!p.has_inner || !(p.r_in > 0) || !(p.h_in > 0)) return false;  // no room for a margin
+    auto certain = [&](const Vec3<double>& x) {
+        const Vec3<double> v = offset(x);
+        return semi_static::witness_height_margin(v, p.d, p.h_in) > k.height.eps * p.e1 + k.height.g * p.g1 &&
+               semi_static::witness_radial_margin(v, p.d, p.r_in) > k.radial.eps * p.e2 + k.radial.g * p.g2;
+    };
+    for (const double shrink : {0.75, 0.97, 0.999}) {
+        const double h = p.h_in * shrink, r = p.r_in * shrink;
+        Vec3<double> x = onto_box(p.c, p.e);
+        for (int step = 1; step <= 256; ++step) {
+            x = onto_box(onto_cylinder(x, p, h, r), p.e);
+            if ((step & (step - 1)) == 0 && certain(x)) return true;  // after steps 1, 2, 4, …, 256
+        }
+    }
+    return false;
+}
+
+}  // namespace detail
+
+// The witness search for each box kind (false: no certificate found, the query stays undecided).
+inline bool certain_hit(const CanonicalBox<double>& b, const Cylinder<double>& cyl) {
+    const std::optional<semi_static::Problem> p = semi_static::problem(b, cyl);
+    if (!p) return false;
+    return detail::search(*p, semi_static::canonical_kappas, [&](const Vec3<double>& x) {
+        return detail::onto_box(x, p->e) - p->c;
+    });
+}
+inline bool certain_hit(const AlignedBox<double>& b, const Cylinder<double>& cyl) {
+    const std::optional<semi_static::Problem> p = semi_static::problem(b, cyl);
+    if (!p) return false;
+    return detail::search(*p, semi_static::aligned_kappas, [&](const Vec3<double>& x) {
+        Vec3<double> v;  // Q = the world point K + x clamped to [min, max]: exactly in the box
+        for (int i = 0; i < 3; ++i) v[i] = std::clamp(p->k[i] + x[i], b.min[i], b.max[i]) - cyl.center[i];
+        return v;
+    });
+}
+inline bool certain_hit(const OrientedBox<double>& b, const Cylinder<double>& cyl) {
+    const std::optional<semi_static::Problem> p = semi_static::problem(b, cyl);
+    if (!p) return false;
+    return detail::search(*p, semi_static::oriented_kappas, [&](const Vec3<double>& x) {
+        return detail::onto_box(x, p->e) - p->c;  // box coordinates x with |x_m| ≤ e_m: exact
+    });
+}
+
+}  // namespace boxcyl::filtered::witness_search
