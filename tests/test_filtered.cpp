@@ -385,6 +385,64 @@ const std::vector<Case> regressions = {
          Cylinder<double>{{3, 0, 0}, {0, 0, 5}, 0x1.fffffffffffffp+0, 1}},
 };
 
+// Flat boxes hit away from the cross-sections stage 1's certificates try: they fell back to exact
+// arithmetic until the witness search (docs/robustness.md §9) certified them; the last five needed
+// its finest shrink (0.999) and up to 256 steps.
+const std::vector<Case> flat_box_hits = {
+    Case{BoxKind::canonical, {}, {}, CanonicalBox<double>{{0x1.d49fc13a2e63p+5, 0x1.788d1eedda2fp+5, 0x0p+0}},
+         Cylinder<double>{{0x1.bdbe665c0a306p+5, -0x1.32f72ce6827ffp+3, -0x1.9c61bf44d62ccp+5},
+                          {-0x1.fb2126540867ap-1, 0x1.1af9e198b654cp-1, 0x1.922d2421c2b2p-2}, 0x1.7c62787f4b53dp+5,
+                          0x1.03a0dccda844ep+7}},
+    Case{BoxKind::canonical, {}, {}, CanonicalBox<double>{{0x1.73c9c05d93bc1p-4, 0x0p+0, 0x1.7c803d6622de1p-2}},
+         Cylinder<double>{{0x1.166c418f968ep-4, -0x1.0b0ed55aa44fep-3, -0x1.3d0724c29b7cbp-4},
+                          {0x1.69ec1f0590e8p-1, -0x1.1f2ea2015bb6dp-1, -0x1.81c5ea1ca3e8cp-1}, 0x1.79c5792095f69p-4,
+                          0x1.ce854ff0aa325p-3}},
+    Case{BoxKind::aligned,
+         AlignedBox<double>{{0x1.b7e15ed5090d6p+17, 0x1.2749d9f657ba5p+15, -0x1.efa1e5b95b9acp+18},
+                            {0x1.bd07c9426dbcep+19, 0x1.78b18bf7c336ep+16, -0x1.efa1e5b95b9acp+18}},
+         {}, {},
+         Cylinder<double>{{0x1.aed8a0c6d4418p+19, -0x1.eadb2b8bfd2eap+18, -0x1.153b757460ccp+20},
+                          {0x1.b705ba340507ep-3, -0x1.c32496b815e5fp-3, -0x1.3202f8b7946f4p-3}, 0x1.c331b35b5148dp+17,
+                          0x1.d908d1f037aabp+20}},
+    Case{BoxKind::canonical, {}, {}, CanonicalBox<double>{{0x1.9ba68c6483096p+13, 0x1.3a57e3fc1a98ap+14, 0x0p+0}},
+         Cylinder<double>{{-0x1.72652f5b79dd3p+12, 0x1.3e112218e544ap+12, 0x1.78546ad45d2p+13},
+                          {0x1.4040c3e2b80fp-3, 0x1.5c4c7e82ea416p+0, 0x1.247062802c14ap+0}, 0x1.a71c8d6b22657p+13,
+                          0x1.659b796020402p+12}},
+    Case{BoxKind::aligned,
+         AlignedBox<double>{{-0x1.b4c01995d3342p-11, 0x1.5f668070a42bcp-12, 0x1.30f8554100a8p-16},
+                            {0x1.01ec77f2fef5cp-12, 0x1.f3bc6bffe19f1p-10, 0x1.30f8554100a8p-16}},
+         {}, {},
+         Cylinder<double>{{-0x1.5f3dc0a67740ap-11, 0x1.a51d335c1b6d1p-10, -0x1.17122628693e9p-12},
+                          {-0x1.fc388c724f784p-2, 0x1.03d238a5fa95cp-2, -0x1.2b0ea35715f2ep-1}, 0x1.2657175b34383p-12,
+                          0x1.09e0de054ec17p-12}},
+    Case{BoxKind::aligned,
+         AlignedBox<double>{{-0x1.76ed60304da88p-5, -0x1.4a4dc4d080792p-1, -0x1.b3174a4636a3p-3},
+                            {0x1.09f83b4e32ff1p-2, -0x1.4959534d5f247p-2, -0x1.b3174a4636a3p-3}},
+         {}, {},
+         Cylinder<double>{{0x1.849174c087a58p-5, -0x1.b3c7242d445f8p-2, -0x1.623d66d369482p-2},
+                          {-0x1.07178afd702d8p-3, -0x1.a527d42cf6e9ap-3, -0x1.e93fbf6e1ef0ap-2}, 0x1.5724f14cc8b02p-4,
+                          0x1.b7f9d2f997eaep-3}},
+    Case{BoxKind::canonical, {}, {}, CanonicalBox<double>{{0x1.358eeab345e0fp+18, 0x0p+0, 0x1.5387e52b68db6p+18}},
+         Cylinder<double>{{0x1.79584d358c91ep+16, -0x1.36cc349ecc713p+16, 0x1.ffdcfa9901a24p+16},
+                          {0x1.3cb91dd4b2298p-3, -0x1.e14b3d45646f4p-1, 0x1.a722f7cde7e94p-1}, 0x1.eab81c3f5e16ap+13,
+                          0x1.716feacc65995p+17}},
+};
+
+TEST(Filtered, WitnessSearchCertifiesFlatBoxHits) {
+    for (std::size_t i = 0; i < flat_box_hits.size(); ++i) {
+        const Case& c = flat_box_hits[i];
+        ASSERT_TRUE(oracle_answer(c)) << i;
+        const bool certified = c.kind == BoxKind::aligned ? filtered::witness_search::certain_hit(c.aligned, c.cylinder)
+                                                          : filtered::witness_search::certain_hit(c.canonical, c.cylinder);
+        EXPECT_TRUE(certified) << "flat box hit " << i << "\n  " << describe(c);
+        const filtered::Result r = run(c);
+        EXPECT_TRUE(r.intersect) << i;
+        if (!forced) {
+            EXPECT_FALSE(r.exact_used) << "flat box hit " << i << " fell back to exact arithmetic";
+        }
+    }
+}
+
 TEST(Filtered, Regressions) {
     FilterTally f;
     for (std::size_t i = 0; i < regressions.size(); ++i)
