@@ -144,9 +144,8 @@ struct BoundCheck {
 
 template <class Box>
 void check_bounds(BoundCheck& bc, const Box& box, const Cylinder<double>& cyl, const ss::Kappas& k, const std::string& where) {
-    const std::optional<ss::Problem> maybe = ss::problem(box, cyl);
-    if (!maybe) return;
-    const ss::Problem& p = *maybe;
+    ss::Problem p;
+    if (!ss::problem(box, cyl, p)) return;
     const Ideal q = ideal(p, box, cyl);
     for (int i = 0; i < 3; ++i) {
         const int j = (i + 1) % 3, l = (i + 2) % 3;

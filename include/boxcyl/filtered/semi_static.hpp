@@ -162,17 +162,22 @@ struct Problem {
     Vec3<double> k;             // aligned boxes: the computed centre (min + max)/2, a box point
 };
 
-// The unit axis: the largest component scaled to [1, 2) by a power of two, then normalised.
+// The unit axis. When the largest component m is within 2^±500, a·a neither overflows nor loses more
+// than 3·2^-1074 to underflow (≤ 2^-73 of a·a ≥ 2^-1000, inside the model's 3.6ε), so no scaling is
+// needed; otherwise the largest component is first scaled to [1, 2) by a power of two (a libm call).
 inline Vec3<double> unit_axis(const Vec3<double>& a) {
-    const double m = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])});
-    const int k = std::ilogb(m);  // m > 0: the caller checked
-    const Vec3<double> s{std::scalbn(a[0], -k), std::scalbn(a[1], -k), std::scalbn(a[2], -k)};
+    const double m = std::max(std::max(std::fabs(a[0]), std::fabs(a[1])), std::fabs(a[2]));
+    Vec3<double> s = a;
+    if (!(m >= 0x1p-500 && m <= 0x1p500)) {
+        const int k = std::ilogb(m);  // m > 0: the caller checked
+        s = {std::scalbn(a[0], -k), std::scalbn(a[1], -k), std::scalbn(a[2], -k)};
+    }
     const double len = std::sqrt(dot(s, s));
     return {s[0] / len, s[1] / len, s[2] / len};
 }
 
 inline bool in_range(double l) { return l >= min_scale && l <= max_scale; }
-inline double largest(const Vec3<double>& v) { return std::max({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])}); }
+inline double largest(const Vec3<double>& v) { return std::max(std::max(std::fabs(v[0]), std::fabs(v[1])), std::fabs(v[2])); }
 inline bool usable_axis(const Vec3<double>& a) {
     const double m = largest(a);
     return m > 0 && m <= 0x1p1000;  // finite and non-zero (validated input is)
@@ -221,13 +226,18 @@ std::optional<bool> decide(const Problem& p, const Kappas& k, Witness&& witness)
     const Vec3<double>& e = p.e;
     auto bound1 = [&p](const Kappa& kk) { return kk.eps * p.e1 + kk.g * p.g1; };
     auto bound2 = [&p](const Kappa& kk) { return kk.eps * p.e2 + kk.g * p.g2; };
-    // Misses along the box faces' normals: the most common certificate.
-    for (int i = 0; i < 3; ++i) {
-        const int j = (i + 1) % 3, l = (i + 2) % 3;
-        const double s = face_gap(c[i], e[i], p.h_out, d[i]);
-        if (s > bound1(k.face) && face_gap_squared(s, p.r_out, d[j], d[l]) > bound2(k.face_sq)) return false;
+    // Misses along the box faces' normals and the cylinder axis, the most common certificates: all
+    // four evaluated and combined without branches (on random data a branch per test mispredicts).
+    {
+        const double b_face = bound1(k.face), b_face_sq = bound2(k.face_sq);
+        bool apart = axis_gap(c, d, e, p.h_out) > bound1(k.axis);
+        for (int i = 0; i < 3; ++i) {
+            const int j = (i + 1) % 3, l = (i + 2) % 3;
+            const double s = face_gap(c[i], e[i], p.h_out, d[i]);
+            apart |= (s > b_face) & (face_gap_squared(s, p.r_out, d[j], d[l]) > b_face_sq);
+        }
+        if (apart) return false;
     }
-    if (axis_gap(c, d, e, p.h_out) > bound1(k.axis)) return false;
     if (p.has_inner) {
         if (p.exact_inside) return true;
         const double inside = bound1(k.inside);
@@ -280,13 +290,13 @@ inline Vec3<double> axis_point_near_centre(const Vec3<double>& c, const Vec3<dou
     return {c[0] + t * d[0], c[1] + t * d[1], c[2] + t * d[2]};
 }
 
-// ---- The computed problem of each box kind (nullopt: out of range, stage 1 decides). ----
+// ---- The computed problem of each box kind (false: out of range, stage 1 decides). ----
 
 // §1.2: the box is canonical, the cylinder already in its frame: nothing rounds but the unit axis.
-inline std::optional<Problem> problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl) {
+inline bool problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.extents), largest(cyl.center), cyl.radius, cyl.height});
-    if (!in_range(l) || !usable_axis(cyl.axis)) return std::nullopt;
-    Problem p;
+    if (!in_range(l) || !usable_axis(cyl.axis)) return false;
+    p = Problem{};
     p.c = cyl.center;
     p.d = unit_axis(cyl.axis);
     p.e = b.extents;
@@ -294,14 +304,14 @@ inline std::optional<Problem> problem(const CanonicalBox<double>& b, const Cylin
     p.h_out = p.h_in = cyl.height * 0.5;
     p.exact_inside = std::fabs(p.c[0]) <= p.e[0] && std::fabs(p.c[1]) <= p.e[1] && std::fabs(p.c[2]) <= p.e[2];
     set_units(p, l, 0);
-    return p;
+    return true;
 }
 
 // §1.3: centre K and extents E rounded (in the model); "C in the box" is decided exactly.
-inline std::optional<Problem> problem(const AlignedBox<double>& b, const Cylinder<double>& cyl) {
+inline bool problem(const AlignedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.min), largest(b.max), largest(cyl.center), cyl.radius, cyl.height});
-    if (!in_range(l) || !usable_axis(cyl.axis)) return std::nullopt;
-    Problem p;
+    if (!in_range(l) || !usable_axis(cyl.axis)) return false;
+    p = Problem{};
     for (int i = 0; i < 3; ++i) {
         p.k[i] = b.min[i] * 0.5 + b.max[i] * 0.5;  // in [min, max]: rounding is monotone
         p.c[i] = cyl.center[i] - p.k[i];
@@ -313,26 +323,25 @@ inline std::optional<Problem> problem(const AlignedBox<double>& b, const Cylinde
     p.exact_inside = true;
     for (int i = 0; i < 3; ++i) p.exact_inside &= b.min[i] <= cyl.center[i] && cyl.center[i] <= b.max[i];
     set_units(p, l, 0);
-    return p;
+    return true;
 }
 
 // §1.4 with the frame as given: g bounds ‖AᵀA − I‖₂ (max row sum of |G|). The computed Gram entries
 // are within γ3·|A_i||A_j| ≤ 3.0003ε of the exact ones (the diagonal's "− 1" is exact by Sterbenz's
 // lemma, as |A_i|² ∈ [0.5, 2]), a row sum of three rounds twice: so g ≤ row + 10ε, and
 // g = fl(row + 32ε) is an upper bound.
-inline std::optional<Problem> problem(const OrientedBox<double>& b, const Cylinder<double>& cyl) {
+inline bool problem(const OrientedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.center), largest(b.extents), largest(cyl.center), cyl.radius, cyl.height});
-    if (!in_range(l) || !usable_axis(cyl.axis)) return std::nullopt;
+    if (!in_range(l) || !usable_axis(cyl.axis)) return false;
     const std::array<Vec3<double>, 3>& a = b.axes;
-    double row_max = 0;
-    for (int i = 0; i < 3; ++i) {
-        double row = 0;
-        for (int j = 0; j < 3; ++j) row += std::fabs(dot(a[i], a[j]) - (i == j ? 1.0 : 0.0));
-        row_max = std::max(row_max, row);
-    }
+    // G is symmetric: six dot products; the rows summed in the same order as the three-term sum.
+    const double g00 = std::fabs(dot(a[0], a[0]) - 1), g11 = std::fabs(dot(a[1], a[1]) - 1),
+                 g22 = std::fabs(dot(a[2], a[2]) - 1);
+    const double g01 = std::fabs(dot(a[0], a[1])), g02 = std::fabs(dot(a[0], a[2])), g12 = std::fabs(dot(a[1], a[2]));
+    const double row_max = std::max(std::max(g00 + g01 + g02, g01 + g11 + g12), g02 + g12 + g22);
     const double g = row_max + 32 * eps;
-    if (!(g <= 0x1p-10)) return std::nullopt;  // also the validated bound on |G_ij| and a NaN
-    Problem p;
+    if (!(g <= 0x1p-10)) return false;  // also the validated bound on |G_ij| and a NaN
+    p = Problem{};
     const Vec3<double> delta = cyl.center - b.center;
     const Vec3<double> u = unit_axis(cyl.axis);
     for (int i = 0; i < 3; ++i) {
@@ -350,7 +359,7 @@ inline std::optional<Problem> problem(const OrientedBox<double>& b, const Cylind
     p.r_in = cyl.radius - p.gamma;
     p.h_in = h - p.gamma;
     set_units(p, l, g);
-    return p;
+    return true;
 }
 
 // The witness offsets v = Q − C (box frame) of the three witness box points Q, w = 0, 1, 2: the box
@@ -375,19 +384,19 @@ inline Vec3<double> witness_offset(const Problem& p, int w, const AlignedBox<dou
 // ---- Stage 0: the answer, or nullopt when undecided. ----
 
 inline std::optional<bool> filter(const CanonicalBox<double>& b, const Cylinder<double>& cyl, bool sound = true) {
-    const std::optional<Problem> p = problem(b, cyl);
-    if (!p) return std::nullopt;
-    return decide(*p, sound ? canonical_kappas : Kappas{}, [&](int w) { return witness_offset(*p, w); });
+    Problem p;
+    if (!problem(b, cyl, p)) return std::nullopt;
+    return decide(p, sound ? canonical_kappas : Kappas{}, [&p](int w) { return witness_offset(p, w); });
 }
 inline std::optional<bool> filter(const AlignedBox<double>& b, const Cylinder<double>& cyl, bool sound = true) {
-    const std::optional<Problem> p = problem(b, cyl);
-    if (!p) return std::nullopt;
-    return decide(*p, sound ? aligned_kappas : Kappas{}, [&](int w) { return witness_offset(*p, w, b, cyl); });
+    Problem p;
+    if (!problem(b, cyl, p)) return std::nullopt;
+    return decide(p, sound ? aligned_kappas : Kappas{}, [&](int w) { return witness_offset(p, w, b, cyl); });
 }
 inline std::optional<bool> filter(const OrientedBox<double>& b, const Cylinder<double>& cyl, bool sound = true) {
-    const std::optional<Problem> p = problem(b, cyl);
-    if (!p) return std::nullopt;
-    return decide(*p, sound ? oriented_kappas : Kappas{}, [&](int w) { return witness_offset(*p, w); });
+    Problem p;
+    if (!problem(b, cyl, p)) return std::nullopt;
+    return decide(p, sound ? oriented_kappas : Kappas{}, [&p](int w) { return witness_offset(p, w); });
 }
 
 }  // namespace boxcyl::filtered::semi_static

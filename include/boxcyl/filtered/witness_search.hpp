@@ -65,26 +65,26 @@ bool search(const Problem& p, const Kappas& k, Offset&& offset) {
 
 // The witness search for each box kind (false: no certificate found, the query stays undecided).
 inline bool certain_hit(const CanonicalBox<double>& b, const Cylinder<double>& cyl) {
-    const std::optional<semi_static::Problem> p = semi_static::problem(b, cyl);
-    if (!p) return false;
-    return detail::search(*p, semi_static::canonical_kappas, [&](const Vec3<double>& x) {
-        return detail::onto_box(x, p->e) - p->c;
+    semi_static::Problem p;
+    if (!semi_static::problem(b, cyl, p)) return false;
+    return detail::search(p, semi_static::canonical_kappas, [&](const Vec3<double>& x) {
+        return detail::onto_box(x, p.e) - p.c;
     });
 }
 inline bool certain_hit(const AlignedBox<double>& b, const Cylinder<double>& cyl) {
-    const std::optional<semi_static::Problem> p = semi_static::problem(b, cyl);
-    if (!p) return false;
-    return detail::search(*p, semi_static::aligned_kappas, [&](const Vec3<double>& x) {
+    semi_static::Problem p;
+    if (!semi_static::problem(b, cyl, p)) return false;
+    return detail::search(p, semi_static::aligned_kappas, [&](const Vec3<double>& x) {
         Vec3<double> v;  // Q = the world point K + x clamped to [min, max]: exactly in the box
-        for (int i = 0; i < 3; ++i) v[i] = std::clamp(p->k[i] + x[i], b.min[i], b.max[i]) - cyl.center[i];
+        for (int i = 0; i < 3; ++i) v[i] = std::clamp(p.k[i] + x[i], b.min[i], b.max[i]) - cyl.center[i];
         return v;
     });
 }
 inline bool certain_hit(const OrientedBox<double>& b, const Cylinder<double>& cyl) {
-    const std::optional<semi_static::Problem> p = semi_static::problem(b, cyl);
-    if (!p) return false;
-    return detail::search(*p, semi_static::oriented_kappas, [&](const Vec3<double>& x) {
-        return detail::onto_box(x, p->e) - p->c;  // box coordinates x with |x_m| ≤ e_m: exact
+    semi_static::Problem p;
+    if (!semi_static::problem(b, cyl, p)) return false;
+    return detail::search(p, semi_static::oriented_kappas, [&](const Vec3<double>& x) {
+        return detail::onto_box(x, p.e) - p.c;  // box coordinates x with |x_m| ≤ e_m: exact
     });
 }
 
