@@ -60,8 +60,8 @@ std::array<Vec3<Big>, 3> polar_columns(const std::array<Vec3<double>, 3>& axes) 
 
 // The ideal problem that stage 0's computed Problem stands for, in 512-bit floats.
 struct Ideal {
-    Vec3<Big> c, d, e;
-    Big r_out, h_out, r_in, h_in;
+    Vec3<Big> c, d, e, e_in;
+    Big r_out, h_out, r_in, h_in, r, h;
     Vec3<Big> v[3];  // the witness offsets
 };
 
@@ -77,7 +77,8 @@ Vec3<double> witness_point(const ss::Problem& p, int w) {
 
 void set_sizes(Ideal& q, const ss::Problem& p, const Cylinder<double>& cyl) {
     const Big gamma = big(p.gamma), r = big(cyl.radius), h = Big(big(cyl.height) / 2, kBits);
-    q.r_out = r + gamma, q.h_out = h + gamma, q.r_in = r - gamma, q.h_in = h - gamma;
+    q.r_out = r + gamma, q.h_out = h + gamma, q.r_in = r - gamma, q.h_in = h - gamma, q.r = r, q.h = h;
+    for (int i = 0; i < 3; ++i) q.e_in[i] = q.e[i] - gamma;
 }
 
 Ideal ideal(const ss::Problem& p, const CanonicalBox<double>& b, const Cylinder<double>& cyl) {
@@ -163,7 +164,6 @@ void check_bounds(BoundCheck& bc, const Box& box, const Cylinder<double>& cyl, c
                    p, where);
     }
     bc.compare("axis gap", ss::axis_gap(p.c, p.d, p.e, p.h_out), ss::axis_gap(q.c, q.d, q.e, q.h_out), k.axis, 1, p, where);
-    if (!p.has_inner) return;
     if (const std::optional<double> t = ss::axial_parameter(p)) {
         // The cylinder-side witnesses X = C + t·d + (z − (d·z)d): t and z are exact doubles.
         const Vec3<double> z = ss::towards_centre(p, *t);
@@ -175,14 +175,15 @@ void check_bounds(BoundCheck& bc, const Box& box, const Cylinder<double>& cyl, c
                 const double dz = dot(p.d, zz);
                 const Big DZ = dot(q.d, ZZ);
                 for (int i = 0; i < 3; ++i)
-                    bc.compare("cylinder point box margin", ss::chord_box_margin(p.c[i], p.e[i], at, p.d[i], zz[i], dz),
-                               ss::chord_box_margin(q.c[i], q.e[i], big(at), q.d[i], ZZ[i], DZ), k.chord_box, 1, p,
+                    bc.compare("cylinder point box margin", ss::chord_box_margin(p.c[i], p.e_in[i], at, p.d[i], zz[i], dz),
+                               ss::chord_box_margin(q.c[i], q.e_in[i], big(at), q.d[i], ZZ[i], DZ), k.chord_box, 1, p,
                                where);
             }
         }
-        bc.compare("cylinder point radial margin", ss::witness_radial_margin(z, p.d, p.r_in),
-                   ss::witness_radial_margin(Z, q.d, q.r_in), k.chord_radial, 2, p, where);
+        bc.compare("cylinder point radial margin", ss::witness_radial_margin(z, p.d, p.r),
+                   ss::witness_radial_margin(Z, q.d, q.r), k.chord_radial, 2, p, where);
     }
+    if (!p.has_inner) return;
     for (int w = 0; w < 3; ++w) {
         Vec3<double> v;
         if constexpr (std::is_same_v<Box, AlignedBox<double>>) {

@@ -3,6 +3,9 @@
 // cylinder axis is axis/|axis| exactly, an oriented box is the parallelepiped its axes span exactly as
 // given, both solids are closed (touching intersects).
 //
+//   Stage 0, the semi-static filter (filtered/semi_static.hpp): a dozen separating-axis and witness
+//   tests in plain double, each decided only beyond an error bound computed at compile time; about
+//   93% of random queries end here. Then a quick witness search (filtered/witness_search.hpp).
 //   Stage 1, the certified filter: the canonical problem (§1.3/§1.4) is built in an enclosure type N
 //   so that it encloses the exact one — first Bounded (number/bounded.hpp: a double and a running
 //   error bound, cheap), then Interval (number/interval.hpp: tighter) if that could not decide — and
@@ -13,6 +16,7 @@
 //   Where §4 stays undecided on degenerate shapes (disks, flat boxes, segments), hit certificates
 //   (certain_hit, frame_hit: a witness point solved exactly in real arithmetic, only inequalities
 //   checked on enclosures) and thickened sizes (misses) decide most of the rest (docs/robustness.md §5).
+//   Before stage 2, a thorough witness search tries once more to certify a hit.
 //   Stage 2, the exact fallback (only when stage 1 could not decide): §4 in Q(√d) for aligned and
 //   canonical boxes and for exactly orthonormal frames (signed permutations: the only exactly
 //   orthonormal frames of doubles), §3 on the exact parallelepiped otherwise (exact_paths.hpp). The
@@ -730,8 +734,9 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
     return {exact_answer(box, cyl), true};
 #else
     std::optional<bool> fast = semi_static::filter(box, cyl);  // stage 0
-    if (!fast) fast = filter(box, cyl);                         // stage 1
-    if (!fast && witness_search::certain_hit(box, cyl)) fast = true;
+    if (!fast && witness_search::certain_hit(box, cyl, witness_search::Mode::quick)) fast = true;
+    if (!fast) fast = filter(box, cyl);  // stage 1
+    if (!fast && witness_search::certain_hit(box, cyl, witness_search::Mode::thorough)) fast = true;
     if (!fast) return {exact_answer(box, cyl), true};
 #if defined(BOXCYL_CHECK_FILTER) && BOXCYL_CHECK_FILTER
     if (exact_answer(box, cyl) != *fast)

@@ -105,7 +105,7 @@ constexpr T chord_box_margin(const T& ci, const T& ei, const T& t, const T& di, 
 //   oriented:  δ = fl(C − K) (|δ_j| ≤ L, error ≤ εL); c = fl(A_i·δ) against the ideal Q_A,iᵀδ:
 //              |c_i| ≤ |δ|₂ ≤ √3·L, error ≤ |A_i|·√3εL + γ3·|A_i||δ| + g·√3L ≤ 7εL + 1.7321gL
 //              (|A_i| ≤ 1.0005); d_i = fl(A_i·u): error ≤ |A_i|·3.6ε + γ3·|A_i| + g ≤ 7ε + g;
-//              r ± γ, H ± γ with γ ≤ 2^-10·1.5L the double used, one rounding each; v = fl(x − c) with
+//              r ± γ, H ± γ, e − γ with γ ≤ 2^-10·1.5L the double used, one rounding each; v = fl(x − c) with
 //              x exact box coordinates: |v| ≤ (0.5 + √3)L, error c's + one rounding.
 // The cylinder-side witnesses' t and z are doubles chosen by the filter, exact by definition:
 // |t| ≤ H ≤ 0.26L, and z = s·(−c − t·d) with s ≤ 1, |z_i| ≤ |c_i| + |t| ≤ 2L.
@@ -115,7 +115,7 @@ struct InputModel {
 };
 inline constexpr InputModel canonical_model{{0.5, 0}, {1, 4}, {0.5, 0}, {0.5, 0}, {0.25, 0}, {1, 1}};
 inline constexpr InputModel aligned_model{{1, 2}, {1, 4}, {0.5, 1}, {0.5, 0}, {0.25, 0}, {1, 1}};
-inline constexpr InputModel oriented_model{{1.7321, 7, 1.7321}, {1, 7, 1},  {0.5, 0},
+inline constexpr InputModel oriented_model{{1.7321, 7, 1.7321}, {1, 7, 1},  {0.5, 1},
                                            {0.51, 1},           {0.26, 1}, {2.2321, 10, 1.7321}};
 
 // κ of each test for a model: the StaticBound evaluation inflated by 1% (the constant evaluation's own
@@ -148,11 +148,15 @@ inline constexpr Kappas oriented_kappas = kappas_for(oriented_model);
 
 // ---- The computed problem and the decision. ----
 
-// The canonical problem as computed (box frame): miss tests use (r_out, h_out), hit tests (r_in, h_in)
-// when has_inner (they differ by γ for rounded oriented frames only).
+// The canonical problem as computed (box frame): miss tests use (r_out, h_out), hit tests with box
+// points (r_in, h_in) when has_inner, hit tests with cylinder points the cylinder as given (r, h) and
+// the box shrunk to e_in (they all differ by γ for rounded oriented frames only: the ideal box shrunk
+// by γ lies inside the true parallelepiped, whose support function differs from the ideal one's by at
+// most γ in every direction).
 struct Problem {
     Vec3<double> c, d, e;
-    double r_out = 0, h_out = 0, r_in = 0, h_in = 0;
+    double r_out = 0, h_out = 0, r_in = 0, h_in = 0, r = 0, h = 0;
+    Vec3<double> e_in;
     bool has_inner = true;
     bool exact_inside = false;  // aligned and canonical boxes: "C in the box" decided exactly
     double l = 0;               // the length scale L
@@ -186,22 +190,22 @@ inline bool usable_axis(const Vec3<double>& a) {
 // The decision on a computed problem; `witness(k)` returns the offset v = Q_k − C of the k-th witness
 // box point (k = 0, 1, 2) in the box frame.
 // The cylinder-side witnesses' axial parameter t: the axis point nearest to the box centre, clamped to
-// |t| ≤ H' where H' < H_in for sure (H_in·(1 − 2^-40) with H_in normal, or 0 for a disk); nullopt when
-// H_in is subnormal (no safe H').
+// |t| ≤ H' where H' < H for sure (H·(1 − 2^-40) with H = fl(h/2) normal, or 0 for a disk); nullopt
+// when H is subnormal (no safe H').
 inline std::optional<double> axial_parameter(const Problem& p) {
-    if (p.h_in != 0 && !(p.h_in >= 0x1p-1000)) return std::nullopt;
-    const double h = p.h_in * (1 - 0x1p-40);
+    if (p.h != 0 && !(p.h >= 0x1p-1000)) return std::nullopt;
+    const double h = p.h * (1 - 0x1p-40);
     return std::clamp(-dot(p.d, p.c), -h, h);
 }
 // The middle of the axis segment's part inside the box (Liang–Barsky clipping of c + t·d, |t| ≤ H',
 // against |x_i| ≤ e_i), when that part is not empty; H' as in axial_parameter (call it first: it
-// rejects a subnormal H_in).
+// rejects a subnormal H).
 inline std::optional<double> chord_middle(const Problem& p) {
-    const double h = p.h_in * (1 - 0x1p-40);
+    const double h = p.h * (1 - 0x1p-40);
     double lo = -h, hi = h;
     for (int i = 0; i < 3; ++i) {
         if (p.d[i] == 0) continue;
-        double a = (-p.e[i] - p.c[i]) / p.d[i], b = (p.e[i] - p.c[i]) / p.d[i];
+        double a = (-p.e_in[i] - p.c[i]) / p.d[i], b = (p.e_in[i] - p.c[i]) / p.d[i];
         if (a > b) std::swap(a, b);
         lo = std::max(lo, a);
         hi = std::min(hi, b);
@@ -210,12 +214,12 @@ inline std::optional<double> chord_middle(const Problem& p) {
     return std::clamp(lo * 0.5 + hi * 0.5, -h, h);
 }
 // z = s·y, y = −c − t·d (from the axis point to the box centre), s ≤ 1 such that the radial part of z
-// is about 0.9·r_in: any double vector would do, the radial margin is checked.
+// is about 0.9·r: any double vector would do, the radial margin is checked.
 inline Vec3<double> towards_centre(const Problem& p, double t) {
     const Vec3<double> y = -(p.c + t * p.d);
     const double a = dot(p.d, y);
     const double perp = std::sqrt(std::max(0.0, dot(y, y) - a * a));
-    const double s = perp > 0.9 * p.r_in ? 0.9 * p.r_in / perp : 1.0;
+    const double s = perp > 0.9 * p.r ? 0.9 * p.r / perp : 1.0;
     return s * y;
 }
 
@@ -249,20 +253,21 @@ std::optional<bool> decide(const Problem& p, const Kappas& k, Witness&& witness)
                 witness_radial_margin(v, d, p.r_in) > bound2(k.radial))
                 return true;
         }
-        if (const std::optional<double> t = axial_parameter(p)) {
-            auto chord_hit = [&](double at, const Vec3<double>& z) {
-                const double dz = dot(d, z), b = bound1(k.chord_box);
-                for (int i = 0; i < 3; ++i)
-                    if (!(chord_box_margin(c[i], e[i], at, d[i], z[i], dz) > b)) return false;
-                return true;
-            };
-            auto in_box = [&](const Vec3<double>& z) { return chord_hit(*t, z); };
-            const Vec3<double> zero{0, 0, 0};
-            if (in_box(zero)) return true;
-            if (const std::optional<double> mid = chord_middle(p); mid && chord_hit(*mid, zero)) return true;
-            const Vec3<double> z = towards_centre(p, *t);
-            if (witness_radial_margin(z, d, p.r_in) > bound2(k.chord_radial) && in_box(z)) return true;
-        }
+    }
+    // Cylinder points X of the cylinder as given, inside the box shrunk by γ (e_in = e − γ: for a
+    // rounded frame, the ideal box shrunk by γ lies inside the true one; see `Problem`).
+    if (const std::optional<double> t = axial_parameter(p)) {
+        auto chord_hit = [&](double at, const Vec3<double>& z) {
+            const double dz = dot(d, z), b = bound1(k.chord_box);
+            for (int i = 0; i < 3; ++i)
+                if (!(chord_box_margin(c[i], p.e_in[i], at, d[i], z[i], dz) > b)) return false;
+            return true;
+        };
+        const Vec3<double> zero{0, 0, 0};
+        if (chord_hit(*t, zero)) return true;
+        if (const std::optional<double> mid = chord_middle(p); mid && chord_hit(*mid, zero)) return true;
+        const Vec3<double> z = towards_centre(p, *t);
+        if (witness_radial_margin(z, d, p.r) > bound2(k.chord_radial) && chord_hit(*t, z)) return true;
     }
     for (int i = 0; i < 3; ++i) {
         const int j = (i + 1) % 3, l = (i + 2) % 3;
@@ -300,8 +305,9 @@ inline bool problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl, 
     p.c = cyl.center;
     p.d = unit_axis(cyl.axis);
     p.e = b.extents;
-    p.r_out = p.r_in = cyl.radius;
-    p.h_out = p.h_in = cyl.height * 0.5;
+    p.r_out = p.r_in = p.r = cyl.radius;
+    p.h_out = p.h_in = p.h = cyl.height * 0.5;
+    p.e_in = p.e;
     p.exact_inside = std::fabs(p.c[0]) <= p.e[0] && std::fabs(p.c[1]) <= p.e[1] && std::fabs(p.c[2]) <= p.e[2];
     set_units(p, l, 0);
     return true;
@@ -318,8 +324,9 @@ inline bool problem(const AlignedBox<double>& b, const Cylinder<double>& cyl, Pr
         p.e[i] = b.max[i] * 0.5 - b.min[i] * 0.5;
     }
     p.d = unit_axis(cyl.axis);
-    p.r_out = p.r_in = cyl.radius;
-    p.h_out = p.h_in = cyl.height * 0.5;
+    p.r_out = p.r_in = p.r = cyl.radius;
+    p.h_out = p.h_in = p.h = cyl.height * 0.5;
+    p.e_in = p.e;
     p.exact_inside = true;
     for (int i = 0; i < 3; ++i) p.exact_inside &= b.min[i] <= cyl.center[i] && cyl.center[i] <= b.max[i];
     set_units(p, l, 0);
@@ -358,6 +365,9 @@ inline bool problem(const OrientedBox<double>& b, const Cylinder<double>& cyl, P
     p.has_inner = cyl.radius >= p.gamma && cyl.height >= 2 * p.gamma;
     p.r_in = cyl.radius - p.gamma;
     p.h_in = h - p.gamma;
+    p.r = cyl.radius;
+    p.h = h;
+    for (int i = 0; i < 3; ++i) p.e_in[i] = b.extents[i] - p.gamma;
     set_units(p, l, g);
     return true;
 }

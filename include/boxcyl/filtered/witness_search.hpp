@@ -42,18 +42,27 @@ inline Vec3<double> onto_box(const Vec3<double>& x, const Vec3<double>& e) {
 
 // True when a searched box point certainly lies in the cylinder. `offset(x)` turns the box-frame
 // iterate x into the witness offset v = Q − C of an exact box point Q (the clamp that makes it exact).
+// The effort of a search: the shrink fractions tried, and the steps per fraction.
+struct Effort {
+    const double* shrinks;
+    int shrink_count;
+    int steps;
+};
+inline constexpr double quick_shrinks[] = {0.75};
+inline constexpr double thorough_shrinks[] = {0.75, 0.97, 0.999};
+
 template <class Offset>
-bool search(const Problem& p, const Kappas& k, Offset&& offset) {
+bool search(const Problem& p, const Kappas& k, Effort effort, Offset&& offset) {
     if (!p.has_inner || !(p.r_in > 0) || !(p.h_in > 0)) return false;  // no room for a margin
     auto certain = [&](const Vec3<double>& x) {
         const Vec3<double> v = offset(x);
         return semi_static::witness_height_margin(v, p.d, p.h_in) > k.height.eps * p.e1 + k.height.g * p.g1 &&
                semi_static::witness_radial_margin(v, p.d, p.r_in) > k.radial.eps * p.e2 + k.radial.g * p.g2;
     };
-    for (const double shrink : {0.75, 0.97, 0.999}) {
-        const double h = p.h_in * shrink, r = p.r_in * shrink;
+    for (int n = 0; n < effort.shrink_count; ++n) {
+        const double h = p.h_in * effort.shrinks[n], r = p.r_in * effort.shrinks[n];
         Vec3<double> x = onto_box(p.c, p.e);
-        for (int step = 1; step <= 256; ++step) {
+        for (int step = 1; step <= effort.steps; ++step) {
             x = onto_box(onto_cylinder(x, p, h, r), p.e);
             if ((step & (step - 1)) == 0 && certain(x)) return true;  // after steps 1, 2, 4, …, 256
         }
@@ -64,26 +73,33 @@ bool search(const Problem& p, const Kappas& k, Offset&& offset) {
 }  // namespace detail
 
 // The witness search for each box kind (false: no certificate found, the query stays undecided).
-inline bool certain_hit(const CanonicalBox<double>& b, const Cylinder<double>& cyl) {
+// quick: 8 steps at one shrink (0.75), for the queries stage 0 leaves undecided, before stage 1;
+// thorough: 256 steps at each of three shrinks, the last try before exact arithmetic.
+enum class Mode { quick, thorough };
+inline detail::Effort effort(Mode m) {
+    return m == Mode::quick ? detail::Effort{detail::quick_shrinks, 1, 8} : detail::Effort{detail::thorough_shrinks, 3, 256};
+}
+
+inline bool certain_hit(const CanonicalBox<double>& b, const Cylinder<double>& cyl, Mode mode = Mode::thorough) {
     semi_static::Problem p;
     if (!semi_static::problem(b, cyl, p)) return false;
-    return detail::search(p, semi_static::canonical_kappas, [&](const Vec3<double>& x) {
+    return detail::search(p, semi_static::canonical_kappas, effort(mode), [&](const Vec3<double>& x) {
         return detail::onto_box(x, p.e) - p.c;
     });
 }
-inline bool certain_hit(const AlignedBox<double>& b, const Cylinder<double>& cyl) {
+inline bool certain_hit(const AlignedBox<double>& b, const Cylinder<double>& cyl, Mode mode = Mode::thorough) {
     semi_static::Problem p;
     if (!semi_static::problem(b, cyl, p)) return false;
-    return detail::search(p, semi_static::aligned_kappas, [&](const Vec3<double>& x) {
+    return detail::search(p, semi_static::aligned_kappas, effort(mode), [&](const Vec3<double>& x) {
         Vec3<double> v;  // Q = the world point K + x clamped to [min, max]: exactly in the box
         for (int i = 0; i < 3; ++i) v[i] = std::clamp(p.k[i] + x[i], b.min[i], b.max[i]) - cyl.center[i];
         return v;
     });
 }
-inline bool certain_hit(const OrientedBox<double>& b, const Cylinder<double>& cyl) {
+inline bool certain_hit(const OrientedBox<double>& b, const Cylinder<double>& cyl, Mode mode = Mode::thorough) {
     semi_static::Problem p;
     if (!semi_static::problem(b, cyl, p)) return false;
-    return detail::search(p, semi_static::oriented_kappas, [&](const Vec3<double>& x) {
+    return detail::search(p, semi_static::oriented_kappas, effort(mode), [&](const Vec3<double>& x) {
         return detail::onto_box(x, p.e) - p.c;  // box coordinates x with |x_m| ≤ e_m: exact
     });
 }
