@@ -134,19 +134,7 @@ LineAnswer answer_grid_line(std::string_view text, std::size_t line_number) {
 }
 
 std::size_t process_grid_stream(std::istream& in, std::ostream& out) {
-    std::size_t line_number = 0;
-    std::size_t bad = 0;
-    std::string line;
-    for (;;) {
-        // Flush before a read could block, so a caller feeding lines one by one sees each answer.
-        if (in.rdbuf() == nullptr || in.rdbuf()->in_avail() <= 0) out.flush();
-        if (!std::getline(in, line)) break;
-        const LineAnswer a = answer_grid_line(line, ++line_number);
-        out << a.text << '\n';
-        if (!a.good) ++bad;
-    }
-    out.flush();
-    return bad;
+    return process_lines(in, out, [](std::string_view line, std::size_t n) { return answer_grid_line(line, n); });
 }
 
 void add_grid_command(CLI::App& app, GridCommand& cmd) {

@@ -362,19 +362,7 @@ LineAnswer answer_line(std::string_view text, std::size_t line_number, const Run
 namespace {
 
 std::size_t process_stream_serial(std::istream& in, std::ostream& out, const RunOptions& opt) {
-    std::size_t line_number = 0;
-    std::size_t bad = 0;
-    std::string line;
-    for (;;) {
-        // Flush before a read could block, so a caller feeding lines one by one sees each answer.
-        if (in.rdbuf() == nullptr || in.rdbuf()->in_avail() <= 0) out.flush();
-        if (!std::getline(in, line)) break;
-        const LineAnswer a = answer_line(line, ++line_number, opt);
-        out << a.text << '\n';
-        if (!a.good) ++bad;
-    }
-    out.flush();
-    return bad;
+    return process_lines(in, out, [&opt](std::string_view line, std::size_t n) { return answer_line(line, n, opt); });
 }
 
 // Consecutive input lines and, once a worker has answered them, their output lines.

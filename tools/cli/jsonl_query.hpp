@@ -6,7 +6,8 @@
 
 #include <cstddef>      // std::size_t
 #include <functional>   // parse_object_line's field reader
-#include <iosfwd>       // std::istream, std::ostream
+#include <istream>      // std::istream, std::getline (process_lines)
+#include <ostream>      // std::ostream
 #include <optional>     // a line may not yield a query
 #include <string>       // JSON text, messages
 #include <string_view>  // input lines
@@ -72,6 +73,25 @@ struct LineAnswer {
     bool good;
 };
 LineAnswer answer_line(std::string_view text, std::size_t line_number, const RunOptions& opt);
+
+// The serial line loop shared by the subcommands: answer(line, line_number) → LineAnswer for each
+// input line, in order; flushes `out` before a read could block, so that a caller feeding lines one by
+// one sees each answer. Returns the number of bad lines.
+template <class Answer>
+std::size_t process_lines(std::istream& in, std::ostream& out, Answer&& answer) {
+    std::size_t line_number = 0;
+    std::size_t bad = 0;
+    std::string line;
+    for (;;) {
+        if (in.rdbuf() == nullptr || in.rdbuf()->in_avail() <= 0) out.flush();
+        if (!std::getline(in, line)) break;
+        const LineAnswer a = answer(std::string_view(line), ++line_number);
+        out << a.text << '\n';
+        if (!a.good) ++bad;
+    }
+    out.flush();
+    return bad;
+}
 
 // Reads `in` line by line, writes one output line per input line in input order. Returns the number
 // of bad lines. Flushes `out` whenever no more input is buffered (threads == 1) or no further answer
