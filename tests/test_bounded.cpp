@@ -18,6 +18,7 @@
 #include "boxcyl/number/qfield.hpp"
 #include "boxcyl/number/rational.hpp"
 #include "support/cases.hpp"  // hex()
+#include "support/enclosure.hpp"
 #include "support/fp.hpp"
 #include "support/runner.hpp"
 
@@ -109,12 +110,7 @@ void check_sqrt(Count& n, const Bounded& a) {
     points_of(a, pa);
     for (const Rational& x : pa) {
         if (x < 0) continue;  // √ of the negative points is not asked for
-        const QuadraticField<Rational> field(x);
-        const QFRational root = QFRational::root(field);
-        EXPECT_TRUE(QFRational(q(std::max(0.0, r.lo()))) <= root) << "sqrt of " << show(a) << " = " << show(r);
-        if (r.hi() != inf) {
-            EXPECT_TRUE(root <= QFRational(q(r.hi()))) << "sqrt of " << show(a) << " = " << show(r);
-        }
+        EXPECT_TRUE(sqrt_enclosed(x, std::max(0.0, r.lo()), r.hi())) << "sqrt of " << show(a) << " = " << show(r);
     }
 }
 
