@@ -13,6 +13,7 @@
 #include <cstdint>  // std::uint64_t
 #include <cstdio>   // std::printf
 #include <memory>   // std::unique_ptr<bool[]>
+#include <random>   // voxel placement
 #include <string>   // labels
 #include <vector>   // the sets
 
@@ -236,6 +237,55 @@ TEST(Batch, DegenerateAndTouching) {
         check_set(c, a, o, "degenerate cylinder " + std::to_string(ci), ca, co);
     }
     print("degenerate and touching", ca, co);
+}
+
+// Small cubes (voxels) whose bounding ball just touches the cylinder's lateral surface from outside
+// or inside — the threshold of the aligned filter's ball test — and a regular voxel grid around thin
+// cylinders: every answer must equal the scalar one.
+TEST(Batch, VoxelsNearTheSurface) {
+    Count ca, co;
+    const std::array<Vec3<double>, 3> id{Vec3<double>{1, 0, 0}, Vec3<double>{0, 1, 0}, Vec3<double>{0, 0, 1}};
+    const std::vector<Cylinder<double>> cyls{
+        {{0.3, -0.2, 0.1}, {0.8, 0.5, 0.33}, 2, 40},
+        {{0, 0, 0}, {1, 1, 1}, 0.5, 10},
+        {{1, 2, 3}, {0, 0, 1}, 3, 5},
+    };
+    std::mt19937_64 rng(7101);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (std::size_t ci = 0; ci < cyls.size(); ++ci) {
+        const Cylinder<double>& c = cyls[ci];
+        const double len = std::sqrt(dot(c.axis, c.axis));
+        const Vec3<double> u{c.axis[0] / len, c.axis[1] / len, c.axis[2] / len};
+        std::vector<AlignedBox<double>> a;
+        std::vector<OrientedBox<double>> o;
+        for (double half : {0.0625, 0.25}) {
+            const double delta = half * std::sqrt(3.0);
+            for (int n = 0; n < 60; ++n) {
+                // w: a random unit vector perpendicular to the axis.
+                Vec3<double> w{unit(rng), unit(rng), unit(rng)};
+                const double along = dot(w, u);
+                w = w - along * u;
+                const double wl = std::sqrt(dot(w, w));
+                w = Vec3<double>{w[0] / wl, w[1] / wl, w[2] / wl};
+                const double t = unit(rng) * 0.6 * c.height;
+                for (double f : {-1e-3, -1e-9, -1e-15, 0.0, 1e-15, 1e-9, 1e-3, -1.0, 1.0}) {
+                    const double rho = c.radius + delta * (1 + f);
+                    const Vec3<double> p = c.center + t * u + rho * w;
+                    a.push_back({{p[0] - half, p[1] - half, p[2] - half}, {p[0] + half, p[1] + half, p[2] + half}});
+                    o.push_back({p, id, {half, half, half}});
+                }
+            }
+        }
+        // A voxel grid over the cylinder's neighbourhood (cells of side 1/8).
+        for (int i = -24; i <= 24; ++i)
+            for (int j = -24; j <= 24; j += 3)
+                for (int k = -24; k <= 24; k += 3) {
+                    const Vec3<double> p{c.center[0] + i * 0.125, c.center[1] + j * 0.125, c.center[2] + k * 0.125};
+                    a.push_back({p, {p[0] + 0.125, p[1] + 0.125, p[2] + 0.125}});
+                }
+        check_set(c, a, o, "voxels near cylinder " + std::to_string(ci), ca, co);
+    }
+    print("voxels near the surface", ca, co);
 }
 
 // Whole sets scaled by 2^k (exact in the normal range; the answers are the scalar's either way), and

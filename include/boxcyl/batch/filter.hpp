@@ -294,6 +294,36 @@ inline LaneResult aligned_lanes(const CylinderFilter& f, const Lanes lo[3], cons
     }
     if (stdx::all_of(miss)) return {miss, LaneMask(false)};
 
+    // The ball around the box, for the many small boxes inside the bounding box but away from the axis
+    // (voxels), ahead of the three point tests:
+    // the box lies in the ball around C + p̂, p̂ the computed centre (any double vector), of radius
+    // δ̂ ≥ the largest corner distance: per axis g_j = max|d̂_j − p̂_j| plus 2^-51(|d̂lo_j| + |d̂hi_j|) for
+    // the rounding of d̂ and g_j, then √ of the sum of squares (≤ 6 roundings) times (1 + 2^-48), plus
+    // 2^-500 for squares lost to underflow. The box misses if the ball's centre is further than r + δ
+    // from the axis line: with a = û·p̂ (error e_a as in point_tests) and R̂ = r_n + δ̂ (≥ r + δ for sure:
+    // r_n and δ̂ carry ≥ 2^-48 of slack against R̂'s rounding), miss if
+    // (q̂ − â²) − R̂² > K(q̂ + â² + R̂²) + e_a(2|â| + e_a) + τ, q̂ = |p̂|².
+    {
+        Lanes p[3], sq = 0, sa = 0, sv = 0;
+        for (int j = 0; j < 3; ++j) {
+            p[j] = (dlo[j] + dhi[j]) * 0.5;
+            const Lanes g = stdx::max(stdx::abs(dhi[j] - p[j]), stdx::abs(dlo[j] - p[j])) +
+                            0x1p-51 * (stdx::abs(dlo[j]) + stdx::abs(dhi[j]));
+            sq += g * g;
+            sa += std::fabs(f.u[j]) * stdx::abs(p[j]);
+            sv += stdx::abs(p[j]);
+        }
+        const Lanes delta = stdx::sqrt(sq) * (1 + 0x1p-48) + 0x1p-500;
+        const Lanes a = f.u[0] * p[0] + f.u[1] * p[1] + f.u[2] * p[2];
+        const Lanes ea = kRel * sa + f.du * sv + kAbs;
+        const Lanes q = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+        const Lanes rr = f.r_n + delta;
+        const Lanes a2 = a * a, r2 = rr * rr;
+        const Lanes bound = kRel * (q + a2 + r2) + ea * (2 * stdx::abs(a) + ea) + kAbs;
+        miss = miss || (ok && ((q - a2) - r2 > bound));
+    }
+    if (stdx::all_of(miss)) return {miss, LaneMask(false)};
+
     // Box points nearest to three axis points: the one nearest to the box centre (t_c), and t_c ± λ
     // with λ a quarter of the box's extent along û.
     Lanes t = 0;
