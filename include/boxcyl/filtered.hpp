@@ -733,10 +733,16 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
 #if defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT
     return {exact_answer(box, cyl), true};
 #else
-    std::optional<bool> fast = semi_static::filter(box, cyl);  // stage 0
-    if (!fast && witness_search::certain_hit(box, cyl, witness_search::Mode::quick)) fast = true;
+    // Stage 0 and both witness searches share one computed problem (false: out of stage 0's range).
+    semi_static::Problem p;
+    const bool in_range = semi_static::problem(box, cyl, p);
+    std::optional<bool> fast;
+    if (in_range) {
+        fast = semi_static::decide(p, box, cyl);  // stage 0
+        if (!fast && witness_search::certain_hit(p, box, cyl, witness_search::Mode::quick)) fast = true;
+    }
     if (!fast) fast = filter(box, cyl);  // stage 1
-    if (!fast && witness_search::certain_hit(box, cyl, witness_search::Mode::thorough)) fast = true;
+    if (!fast && in_range && witness_search::certain_hit(p, box, cyl, witness_search::Mode::thorough)) fast = true;
     if (!fast) return {exact_answer(box, cyl), true};
 #if defined(BOXCYL_CHECK_FILTER) && BOXCYL_CHECK_FILTER
     if (exact_answer(box, cyl) != *fast)

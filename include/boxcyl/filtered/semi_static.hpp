@@ -393,20 +393,23 @@ inline Vec3<double> witness_offset(const Problem& p, int w, const AlignedBox<dou
 
 // ---- Stage 0: the answer, or nullopt when undecided. ----
 
-inline std::optional<bool> filter(const CanonicalBox<double>& b, const Cylinder<double>& cyl, bool sound = true) {
-    Problem p;
-    if (!problem(b, cyl, p)) return std::nullopt;
+// On a problem computed by problem() for the same box and cylinder (the query builds it once and
+// hands it on to the witness search).
+inline std::optional<bool> decide(const Problem& p, const CanonicalBox<double>&, const Cylinder<double>&, bool sound = true) {
     return decide(p, sound ? canonical_kappas : Kappas{}, [&p](int w) { return witness_offset(p, w); });
 }
-inline std::optional<bool> filter(const AlignedBox<double>& b, const Cylinder<double>& cyl, bool sound = true) {
-    Problem p;
-    if (!problem(b, cyl, p)) return std::nullopt;
+inline std::optional<bool> decide(const Problem& p, const AlignedBox<double>& b, const Cylinder<double>& cyl, bool sound = true) {
     return decide(p, sound ? aligned_kappas : Kappas{}, [&](int w) { return witness_offset(p, w, b, cyl); });
 }
-inline std::optional<bool> filter(const OrientedBox<double>& b, const Cylinder<double>& cyl, bool sound = true) {
+inline std::optional<bool> decide(const Problem& p, const OrientedBox<double>&, const Cylinder<double>&, bool sound = true) {
+    return decide(p, sound ? oriented_kappas : Kappas{}, [&p](int w) { return witness_offset(p, w); });
+}
+
+template <class Box>
+std::optional<bool> filter(const Box& b, const Cylinder<double>& cyl, bool sound = true) {
     Problem p;
     if (!problem(b, cyl, p)) return std::nullopt;
-    return decide(p, sound ? oriented_kappas : Kappas{}, [&p](int w) { return witness_offset(p, w); });
+    return decide(p, b, cyl, sound);
 }
 
 }  // namespace boxcyl::filtered::semi_static

@@ -80,28 +80,29 @@ inline detail::Effort effort(Mode m) {
     return m == Mode::quick ? detail::Effort{detail::quick_shrinks, 1, 8} : detail::Effort{detail::thorough_shrinks, 3, 256};
 }
 
-inline bool certain_hit(const CanonicalBox<double>& b, const Cylinder<double>& cyl, Mode mode = Mode::thorough) {
-    semi_static::Problem p;
-    if (!semi_static::problem(b, cyl, p)) return false;
-    return detail::search(p, semi_static::canonical_kappas, effort(mode), [&](const Vec3<double>& x) {
+// On a problem computed by semi_static::problem() for the same box and cylinder.
+inline bool certain_hit(const semi_static::Problem& p, const CanonicalBox<double>&, const Cylinder<double>&, Mode mode) {
+    return detail::search(p, semi_static::canonical_kappas, effort(mode), [&p](const Vec3<double>& x) {
         return detail::onto_box(x, p.e) - p.c;
     });
 }
-inline bool certain_hit(const AlignedBox<double>& b, const Cylinder<double>& cyl, Mode mode = Mode::thorough) {
-    semi_static::Problem p;
-    if (!semi_static::problem(b, cyl, p)) return false;
+inline bool certain_hit(const semi_static::Problem& p, const AlignedBox<double>& b, const Cylinder<double>& cyl, Mode mode) {
     return detail::search(p, semi_static::aligned_kappas, effort(mode), [&](const Vec3<double>& x) {
         Vec3<double> v;  // Q = the world point K + x clamped to [min, max]: exactly in the box
         for (int i = 0; i < 3; ++i) v[i] = std::clamp(p.k[i] + x[i], b.min[i], b.max[i]) - cyl.center[i];
         return v;
     });
 }
-inline bool certain_hit(const OrientedBox<double>& b, const Cylinder<double>& cyl, Mode mode = Mode::thorough) {
-    semi_static::Problem p;
-    if (!semi_static::problem(b, cyl, p)) return false;
-    return detail::search(p, semi_static::oriented_kappas, effort(mode), [&](const Vec3<double>& x) {
+inline bool certain_hit(const semi_static::Problem& p, const OrientedBox<double>&, const Cylinder<double>&, Mode mode) {
+    return detail::search(p, semi_static::oriented_kappas, effort(mode), [&p](const Vec3<double>& x) {
         return detail::onto_box(x, p.e) - p.c;  // box coordinates x with |x_m| ≤ e_m: exact
     });
+}
+
+template <class Box>
+bool certain_hit(const Box& b, const Cylinder<double>& cyl, Mode mode = Mode::thorough) {
+    semi_static::Problem p;
+    return semi_static::problem(b, cyl, p) && certain_hit(p, b, cyl, mode);
 }
 
 }  // namespace boxcyl::filtered::witness_search
