@@ -24,7 +24,7 @@ cmake --build "$build" -j "${JOBS:-$(nproc)}" --target bench_query >/dev/null
 flags=$(sed -n 's/^CXX_FLAGS = //p' "$build/bench/CMakeFiles/bench_query.dir/flags.make")
 cxx=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-git diff --quiet HEAD 2>/dev/null || commit="$commit (with uncommitted changes)"
+git diff --quiet HEAD -- . ":(exclude)$out" 2>/dev/null || commit="$commit (with uncommitted changes)"  # the output itself does not count
 model=$(lscpu | sed -n 's/^Model name: *//p' | head -1)
 version() { dpkg-query -W -f='${Version}' "$1" 2>/dev/null || echo "(version unknown)"; }
 
