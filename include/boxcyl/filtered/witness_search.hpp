@@ -12,7 +12,7 @@
 // with margin, stage 0's witness test (semi_static.hpp: plain double, error bound computed at compile
 // time) certifies the hit. The search itself is plain double and need not be accurate: only the
 // final test has to be sound. Misses and near-touching hits stay undecided (the exact path answers);
-// they cost the search's 3 × 256 steps (≈10 µs), small beside the exact path's ≈500 µs.
+// they cost the search's 3 × 256 steps, small beside the exact path.
 #pragma once
 
 #include <algorithm>  // std::clamp
