@@ -575,18 +575,6 @@ TEST(Filtered, HugeTinyAndSubnormalInputs) {
 
 // ---- Oriented boxes whose axes are valid but not orthonormal ----
 
-// A rounded random rotation with one axis perturbed by ~1e-6 (still valid: |AᵢᵀAⱼ − δᵢⱼ| ≤ 1e-4).
-Case perturbed_frame(CaseGenerator& gen) {
-    for (;;) {
-        Case c = gen.next();
-        if (c.kind != BoxKind::oriented) continue;
-        c.oriented.axes = random_rotation(gen.rng());
-        const int axis = static_cast<int>(gen.uniform(0, 3)), comp = static_cast<int>(gen.uniform(0, 3));
-        c.oriented.axes[axis][comp] += gen.uniform(-2e-6, 2e-6);
-        if (!validate(c.oriented).ok()) continue;
-        return c;
-    }
-}
 
 // Stage 1 as the query runs it (Bounded, then Interval), optionally without the η widening.
 std::optional<bool> stage1(const Case& c, bool apply_eta) {

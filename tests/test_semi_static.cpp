@@ -224,16 +224,6 @@ std::optional<bool> stage0(const Case& c, bool sound = true) {
     return std::nullopt;
 }
 
-// A rounded random rotation with one axis perturbed by ~1e-6 (valid: |AᵢᵀAⱼ − δᵢⱼ| ≤ 1e-4).
-Case perturbed_frame(CaseGenerator& gen) {
-    for (;;) {
-        Case c = gen.next();
-        if (c.kind != BoxKind::oriented) continue;
-        c.oriented.axes = random_rotation(gen.rng());
-        c.oriented.axes[static_cast<int>(gen.uniform(0, 3))][static_cast<int>(gen.uniform(0, 3))] += gen.uniform(-2e-6, 2e-6);
-        if (validate(c.oriented).ok()) return c;
-    }
-}
 
 TEST(SemiStatic, KappasAreSmall) {
     // Printed for docs/robustness.md §9; the filter is useless if they blow up (they are all < 2^11).

@@ -14,6 +14,7 @@
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/validate.hpp"
 #include "boxcyl/oracle/oracle.hpp"
 
 namespace boxcyl::testing {
@@ -180,6 +181,20 @@ private:
     std::mt19937_64 rng_;
     Profile profile_;
 };
+
+// An oriented case whose frame is a rounded random rotation with one component perturbed by up to 2e-6
+// (still valid: |AᵢᵀAⱼ − δᵢⱼ| ≤ 1e-4): far from orthonormal compared with rounding, so the filters
+// must widen for it (η).
+inline Case perturbed_frame(CaseGenerator& gen) {
+    for (;;) {
+        Case c = gen.next();
+        if (c.kind != BoxKind::oriented) continue;
+        c.oriented.axes = random_rotation(gen.rng());
+        const int axis = static_cast<int>(gen.uniform(0, 3)), comp = static_cast<int>(gen.uniform(0, 3));
+        c.oriented.axes[axis][comp] += gen.uniform(-2e-6, 2e-6);
+        if (validate(c.oriented).ok()) return c;
+    }
+}
 
 // ---- Boundary (one-ulp) generation ----
 
