@@ -19,7 +19,9 @@
 //
 // How: batch/filter.hpp decides each lane that it can prove (certain miss by a separating direction,
 // certain hit by a box point inside the cylinder, with proven error bounds: docs/robustness.md §8);
-// every undecided lane is answered by the scalar exact default (filtered::query). SIMD width: that of
+// every undecided lane is answered by the scalar exact default (filtered::query). Aligned boxes take
+// two passes: a cheap one over every box (bounding boxes, then the box's centre and a ball around it:
+// §8a), then the whole filter on the few lanes it left, gathered into full vectors. SIMD width: that of
 // std::experimental::simd's native ABI under the compile flags (2 doubles with the default x86-64
 // flags; -mavx2 gives 4, -march=native on an AVX-512 machine 8). Threads: contiguous ranges of 64-box
 // blocks (batch/split.hpp); Options::threads = 0 uses std::thread::hardware_concurrency(), and a
@@ -35,6 +37,7 @@
 #endif
 
 #include <algorithm>  // std::min
+#include <bit>        // std::countr_zero, std::popcount
 #include <cassert>    // debug-build precondition checks
 #include <cstddef>    // std::size_t
 #include <cstdint>    // std::uint64_t
@@ -66,20 +69,13 @@ struct Options {
 struct Stats {
     std::size_t boxes = 0;        // N
     std::size_t exact_lanes = 0;  // boxes the SIMD filter could not decide: answered by the scalar query
+    std::size_t second_pass = 0;  // aligned boxes that the first pass left to the whole filter (diagnostic)
 };
 
 // Words of a bit mask for n boxes.
 constexpr std::size_t mask_words(std::size_t n) { return (n + 63) / 64; }
 
 namespace detail {
-
-// A few instructions, called six times per vector of boxes: GCC at -O2 kept it out of line (7% of the
-// 10M-box benchmark's profile in calls).
-#if defined(__GNUC__) || defined(__clang__)
-#define BOXCYL_BATCH_INLINE [[gnu::always_inline]] inline
-#else
-#define BOXCYL_BATCH_INLINE inline
-#endif
 
 // Loads lanes [i, i + valid) into full vectors; a short tail repeats its last box (its lanes are
 // computed and ignored).
@@ -98,7 +94,8 @@ template <class T>
 struct AlignedSource {
     const AlignedBoxes<T>& b;
 
-    LaneResult lanes(const CylinderFilter& f, std::size_t i, std::size_t valid) const {
+    // First pass: lanes [i, i + valid), the centre-and-ball tests.
+    BOXCYL_BATCH_INLINE LaneResult lanes(const CylinderFilter& f, std::size_t i, std::size_t valid) const {
         Lanes lo[3], hi[3];
         load(b.min_x.data(), i, valid, lo[0]);
         load(b.min_y.data(), i, valid, lo[1]);
@@ -106,6 +103,20 @@ struct AlignedSource {
         load(b.max_x.data(), i, valid, hi[0]);
         load(b.max_y.data(), i, valid, hi[1]);
         load(b.max_z.data(), i, valid, hi[2]);
+        return aligned_ball_lanes(f, lo, hi);
+    }
+    // Second pass: the boxes idx[0, count) (count ≤ lane_count) that the first left, gathered, through
+    // the whole filter.
+    LaneResult gathered(const CylinderFilter& f, const std::size_t* idx, std::size_t count) const {
+        const std::span<const T>* arrays[6] = {&b.min_x, &b.min_y, &b.min_z, &b.max_x, &b.max_y, &b.max_z};
+        alignas(64) double buf[6][lane_count];
+        for (int a = 0; a < 6; ++a)
+            for (std::size_t k = 0; k < lane_count; ++k) buf[a][k] = static_cast<double>((*arrays[a])[idx[std::min(k, count - 1)]]);
+        Lanes lo[3], hi[3];
+        for (int j = 0; j < 3; ++j) {
+            lo[j].copy_from(buf[j], stdx::element_aligned);
+            hi[j].copy_from(buf[3 + j], stdx::element_aligned);
+        }
         return aligned_lanes(f, lo, hi);
     }
     AlignedBox<double> box(std::size_t i) const {
@@ -118,6 +129,7 @@ template <class T>
 struct OrientedSource {
     std::span<const OrientedBox<T>> b;
 
+    // One pass: the whole filter.
     LaneResult lanes(const CylinderFilter& f, std::size_t i, std::size_t valid) const {
         // Gather the array of structures into 15 lane vectors.
         alignas(64) double buf[15][lane_count];
@@ -144,25 +156,65 @@ struct OrientedSource {
     }
 };
 
-// Answers for boxes [begin, begin + count), count ≤ 64, as bits 0..count−1.
+// The lanes of two masks as bits 0..lane_count−1 of two words: through a sum of powers of two over
+// the lanes (exact), which compiles to a few vector instructions, where testing lane by lane took a
+// quarter of the first pass.
+struct LaneBits {
+    std::uint64_t hit, open;
+};
+BOXCYL_BATCH_INLINE LaneBits to_bits(const LaneResult& r) {
+    static_assert(lane_count <= 16, "the weights below must stay exact sums");
+    const Lanes weight([](auto l) { return static_cast<double>(1u << l); });
+    Lanes z = 0;
+    stdx::where(r.hit, z) = weight;
+    stdx::where(!r.decided, z) = weight * 65536.0;  // hit ⊂ decided: no lane gets both
+    const auto sum = static_cast<std::uint64_t>(stdx::reduce(z));
+    return {sum & 0xFFFF, sum >> 16};
+}
+
+// Answers for boxes [begin, begin + count), count ≤ 64, as bits 0..count−1: the first pass over every
+// vector of boxes without a branch per lane; a source with a second pass (aligned boxes) sends the
+// lanes the first left undecided through it, gathered into full vectors; what is still undecided goes
+// to the scalar exact default, one box at a time.
 template <class Source>
 std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, const Source& s, std::size_t begin,
-                         std::size_t count, std::size_t& exact_lanes) {
-    std::uint64_t bits = 0;
+                         std::size_t count, Stats& st) {
+#ifndef NDEBUG
+    for (std::size_t i = begin; i < begin + count; ++i)
+        assert(validate(s.box(i)).ok() && "boxcyl::batch::intersects: invalid box (see boxcyl::validate)");
+#endif
+    std::uint64_t bits = 0, open = 0;
     for (std::size_t k = 0; k < count; k += lane_count) {
         const std::size_t valid = std::min(lane_count, count - k);
         const LaneResult r = s.lanes(f, begin + k, valid);
-        for (std::size_t l = 0; l < valid; ++l) {
-            assert(validate(s.box(begin + k + l)).ok() && "boxcyl::batch::intersects: invalid box (see boxcyl::validate)");
-            bool hit;
-            if (r.decided[l]) {
-                hit = r.hit[l];
-            } else {
-                hit = filtered::query(s.box(begin + k + l), cyl).intersect;
-                ++exact_lanes;
+        if (stdx::all_of(r.decided) && stdx::none_of(r.hit)) continue;  // certain misses: the common case
+        static_assert(lane_count < 64);
+        const std::uint64_t in_range = (std::uint64_t{1} << valid) - 1;
+        const LaneBits b = to_bits(r);
+        bits |= (b.hit & in_range) << k;
+        open |= (b.open & in_range) << k;
+    }
+    if constexpr (requires(const std::size_t* p) { s.gathered(f, p, std::size_t{1}); }) {
+        if (open != 0) {
+            st.second_pass += static_cast<std::size_t>(std::popcount(open));
+            std::size_t idx[64], n = 0;
+            for (std::uint64_t o = open; o != 0; o &= o - 1) idx[n++] = begin + static_cast<std::size_t>(std::countr_zero(o));
+            for (std::size_t g = 0; g < n; g += lane_count) {
+                const std::size_t m = std::min(lane_count, n - g);
+                const LaneResult r = s.gathered(f, idx + g, m);
+                for (std::size_t l = 0; l < m; ++l)
+                    if (r.decided[l]) {
+                        const std::uint64_t bit = std::uint64_t{1} << (idx[g + l] - begin);
+                        open &= ~bit;
+                        if (r.hit[l]) bits |= bit;
+                    }
             }
-            bits |= std::uint64_t{hit} << (k + l);
         }
+    }
+    for (std::uint64_t o = open; o != 0; o &= o - 1) {
+        const std::size_t i = begin + static_cast<std::size_t>(std::countr_zero(o));
+        if (filtered::query(s.box(i), cyl).intersect) bits |= std::uint64_t{1} << (i - begin);
+        ++st.exact_lanes;
     }
     return bits;
 }
@@ -174,17 +226,18 @@ Stats run(const Cylinder<double>& cyl, const Source& s, std::size_t n, const Opt
     const CylinderFilter f = prepare(cyl);
     const std::size_t blocks = mask_words(n);
     const unsigned threads = thread_count(opt.threads, n);
-    std::vector<std::size_t> exact(threads, 0);
+    std::vector<Stats> per_thread(threads);
     for_each_range(blocks, threads, [&](std::size_t first, std::size_t last, unsigned t) {
-        std::size_t x = 0;
+        Stats x;
         for (std::size_t blk = first; blk < last; ++blk) {
             const std::size_t begin = blk * 64, count = std::min<std::size_t>(64, n - begin);
             emit(blk, block_bits(f, cyl, s, begin, count, x), count);
         }
-        exact[t] = x;
+        per_thread[t] = x;
     });
-    Stats st{n, 0};
-    for (std::size_t x : exact) st.exact_lanes += x;
+    Stats st;
+    st.boxes = n;
+    for (const Stats& x : per_thread) st.exact_lanes += x.exact_lanes, st.second_pass += x.second_pass;
     return st;
 }
 
