@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (fuzz/) with clang and ASan + UBSan and runs each for SECONDS (default 30).
-# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   targets: jsonl query (default both); SECONDS 0: build only
+# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   targets: jsonl query batch (default all); SECONDS 0: build only
 # The seed corpora (fuzz/corpus/<t>) and kept findings (fuzz/regressions/<t>) are read, never written;
 # inputs libFuzzer finds new coverage with go to $BUILD_DIR/corpus/<t>, crashes to $BUILD_DIR/findings/<t>.
 # Exits non-zero on any finding (crash, sanitizer report, wrong answer, timeout, out of memory):
@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-30}"
 shift || true
 targets=("$@")
-((${#targets[@]})) || targets=(jsonl query)
+((${#targets[@]})) || targets=(jsonl query batch)
 bash scripts/deps.sh clang-14 libclang-rt-14-dev
 build="${BUILD_DIR:-build-fuzz}"
 jobs="${JOBS:-$(nproc)}"
@@ -37,6 +37,7 @@ for t in "${targets[@]}"; do
     mkdir -p "$corpus" "$findings"
     max_len=8192  # several JSON lines
     [[ $t == query ]] && max_len=256  # a whole query is < 150 bytes in the decoder's format
+    [[ $t == batch ]] && max_len=2048  # a cylinder and up to 40 boxes
     echo "== fuzz_$t for ${seconds}s" >&2
     if ! "$build/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 -max_len="$max_len" \
             -print_final_stats=1 -artifact_prefix="$findings/" \
