@@ -157,8 +157,8 @@ struct OrientedSource {
 };
 
 // The lanes of two masks as bits 0..lane_count−1 of two words: through a sum of powers of two over
-// the lanes (exact), which compiles to a few vector instructions, where testing lane by lane took a
-// quarter of the first pass.
+// the lanes (exact), a few vector instructions; testing lane by lane made the 10M random-box run about
+// a tenth slower (voxels, whose vectors mostly skip this, the same).
 struct LaneBits {
     std::uint64_t hit, open;
 };
