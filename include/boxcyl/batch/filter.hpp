@@ -91,12 +91,8 @@ struct CylinderFilter {
     double r2 = 0;                  // ≤ r²
     double w[3]{};                  // ≥ the cylinder's half-width along e_j: H|u_j| + r√(1 − u_j²)
     double box_lo[3]{}, box_hi[3]{};  // the cylinder's bounding box, outward (±∞: test off)
-    // The centre-and-ball tests (aligned_ball_lanes), in doubled coordinates:
-    double two_h = 0;               // 2H = h, exact
-    double two_r = 0;               // 2r, exact
-    double four_r2 = 0;             // 4·R2 ≤ 4r², exact
-    double kappa = 0;               // κ = 2^-44 + 2δ_u: their relative error allowance
-    BallConstants ball{};           // the above as vectors
+    double kappa = 0;               // κ = 2^-44 + 2δ_u: the first pass's relative error allowance
+    BallConstants ball{};           // the first pass's constants as vectors (2H, 2r, 4·R2: exact)
 };
 
 inline bool eligible(double x) { return std::fabs(x) <= kLimit; }  // false for NaN and ±∞
@@ -148,7 +144,7 @@ inline CylinderFilter prepare_scalars(const Cylinder<double>& cyl) {
         f.u[j] = u[j].lo() * 0.5 + u[j].hi() * 0.5;  // any double: δ_u measures it
         // A tiny component (an axis like (1e-322, −0.66, 0)) becomes 0, which δ_u then covers: a
         // subnormal û_j would make every product with it subnormal, and subnormal arithmetic is
-        // microcoded on x86 (≈100 cycles): it made the filter 3× slower on such a cylinder.
+        // microcoded on x86 (≈100 cycles): it made the filter about twice as slow on such a cylinder.
         if (std::fabs(f.u[j]) < 0x1p-400) f.u[j] = 0;
         f.u_nonneg[j] = f.u[j] >= 0;
         du = std::max({du, (Interval(u[j].hi()) - Interval(f.u[j])).hi(), (Interval(f.u[j]) - Interval(u[j].lo())).hi()});
@@ -175,9 +171,6 @@ inline CylinderFilter prepare_scalars(const Cylinder<double>& cyl) {
     f.r_n = (r * Interval(kSlack)).hi();
     f.r = cyl.radius;
     f.r2 = std::max(0.0, (r * r).lo());
-    f.two_h = cyl.height;
-    f.two_r = 2 * cyl.radius;
-    f.four_r2 = 4 * f.r2;
     f.kappa = 0x1p-44 + 2 * f.du;
     f.usable = eligible(f.rho_u) && eligible(f.r_n) && eligible(f.w[0]) && eligible(f.w[1]) && eligible(f.w[2]);
     return f;
@@ -191,7 +184,7 @@ inline CylinderFilter prepare(const Cylinder<double>& cyl) {
         f.ball.c[j] = f.c[j], f.ball.u[j] = f.u[j];
         f.ball.box_lo[j] = f.box_lo[j], f.ball.box_hi[j] = f.box_hi[j];
     }
-    f.ball.two_h = f.two_h, f.ball.two_r = f.two_r, f.ball.four_r2 = f.four_r2, f.ball.kappa = f.kappa;
+    f.ball.two_h = 2 * f.h, f.ball.two_r = 2 * f.r, f.ball.four_r2 = 4 * f.r2, f.ball.kappa = f.kappa;
     return f;
 }
 
