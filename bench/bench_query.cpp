@@ -65,7 +65,7 @@ struct MethodInfo {
 };
 
 constexpr MethodInfo kMethods[] = {
-    {Method::default_query, "default", "default exact query (filtered::intersects)", false},
+    {Method::default_query, "default", "default exact query (boxcyl::intersects)", false},
     {Method::double_s4, "double_s4", "§4 linear inequalities, double", false},
     {Method::double_s3, "double_s3", "§3 convex hull, double", false},
     {Method::double_s2, "double_s2", "§2 LCP, double", false},
@@ -94,7 +94,7 @@ bool signed_permutation(const std::array<Vec3<double>, 3>& axes) {
 template <Method M, class Box>
 bool query(const Box& box, const Cylinder<double>& cyl) {
     if constexpr (M == Method::default_query) {
-        return filtered::intersects(box, cyl);
+        return intersects(box, cyl);  // the front door, as users call it (query.hpp → filtered.hpp)
     } else if constexpr (M == Method::double_s4) {
         return intersects(box, cyl, {Algorithm::inequalities, Arithmetic::float64});
     } else if constexpr (M == Method::double_s3) {

@@ -59,8 +59,9 @@ coefficient of variation over the repetitions. Timings on a busy machine are noi
 machine is 2 cores shared by several concurrent builds and test runs): expect several percent between
 runs, more where *cv* is large; ratios from the same run are steadier than absolute times.
 
-- **default exact query**: \`boxcyl::filtered::intersects\` — the certified interval filter (§4 in
-  interval arithmetic) and, where it cannot decide, the exact fallback. It must answer exactly: its
+- **default exact query**: \`boxcyl::intersects(box, cyl)\`, the front door with no options, which is
+  the filtered exact query (filtered.hpp: the semi-static filter, the certified interval filter — §4
+  in interval arithmetic — and, where they cannot decide, the exact fallback). It must answer exactly: its
   *wrong vs oracle* column must be 0.
 - **§4 / §3 / §2, double / float**: \`boxcyl::intersects(box, cyl, {algorithm, arithmetic})\`; rounded,
   wrong near touching (the boundary set is made of such inputs). §2 in double answers with exact §2

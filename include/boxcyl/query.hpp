@@ -119,11 +119,17 @@ bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
         // Only §2 can fail (its Lemke solver in floating point); answer exactly rather than guess.
     }
 #if defined(BOXCYL_HAS_EXACT)
+    // The default first, before any rational is built: the filter decides most queries in plain double,
+    // and converting the inputs to GMP rationals alone costs ten times the filter.
+    if (opt.arithmetic == Arithmetic::filtered && opt.algorithm == Algorithm::inequalities) {
+        if constexpr (std::is_same_v<T, double>)
+            return filtered::query(box, cyl).intersect;
+        else
+            return filtered::query(cast<double>(box), cast<double>(cyl)).intersect;
+    }
     const auto ebox = to_exact(cast<double>(box));
     const auto ecyl = to_exact(cast<double>(cyl));
     if (opt.algorithm == Algorithm::oracle) return oracle::intersects(ebox, ecyl);
-    if (opt.arithmetic == Arithmetic::filtered && opt.algorithm == Algorithm::inequalities)
-        return filtered::query(cast<double>(box), cast<double>(cyl)).intersect;
     if (opt.arithmetic != Arithmetic::exact) {
         // A rounded §2 failed, or §2/§3 were asked for an exact answer (filtered). Answer with the exact
         // algorithm where its canonical frame is exact, else with exact §3 (any parallelepiped): only an
