@@ -98,7 +98,7 @@ constexpr T chord_box_margin(const T& ci, const T& ei, const T& t, const T& di, 
 //
 // L = 2·max|input length|: every input length is ≤ L/2. u = axis/|axis| computed after an exact
 // power-of-two scaling (|u_i| ≤ 1, error ≤ 3.6ε|u_i|: γ3 for the squared norm, half of it through the
-// sqrt, one rounding each for the sqrt and the quotient).
+// sqrt, one rounding each for the sqrt and the quotient; a dropped component's error is < 2^-250).
 //   canonical: c, e, r, H = h/2 exact; v = fl(clamp(c, ±e) − c): |v| ≤ L, one rounding.
 //   aligned:   K = fl(min/2 + max/2) (error ≤ εL/2), c = fl(C − K) (|c| ≤ L, error ≤ 1.5ε·L + ε²),
 //              e = fl(max/2 − min/2) (error ≤ εL/2); v = fl(Q − C) with Q exactly in the box.
@@ -166,18 +166,29 @@ struct Problem {
     Vec3<double> k;             // aligned boxes: the computed centre (min + max)/2, a box point
 };
 
-// The unit axis. When the largest component m is within 2^±500, a·a neither overflows nor loses more
-// than 3·2^-1074 to underflow (≤ 2^-73 of a·a ≥ 2^-1000, inside the model's 3.6ε), so no scaling is
-// needed; otherwise the largest component is first scaled to [1, 2) by a power of two (a libm call).
+// The unit axis. When the largest component m is within 2^±250, nothing below overflows or
+// underflows; otherwise the axis is first scaled by a power of two to m ∈ [1, 2) (a libm call).
+// A component below 2^-250·m is dropped (set to 0): then |u_j| < 2^-250, far inside the model's error
+// of u_j, and |a|² changes by a relative 3·2^-500, far inside the model's error of the others. Kept
+// tiny, such a component (an axis like (1e-300, 0.6, 0.8), or a subnormal one) makes every product
+// with it subnormal, which x86 runs in microcode: it made stage 0 about half again as slow on the
+// benchmark's random set, where a third of the axes have one.
 inline Vec3<double> unit_axis(const Vec3<double>& a) {
-    const double m = std::max(std::max(std::fabs(a[0]), std::fabs(a[1])), std::fabs(a[2]));
-    Vec3<double> s = a;
-    if (!(m >= 0x1p-500 && m <= 0x1p500)) {
+    double x = a[0], y = a[1], z = a[2];
+    double m = std::max(std::max(std::fabs(x), std::fabs(y)), std::fabs(z));
+    if (!(m >= 0x1p-250 && m <= 0x1p250)) {
         const int k = std::ilogb(m);  // m > 0: the caller checked
-        s = {std::scalbn(a[0], -k), std::scalbn(a[1], -k), std::scalbn(a[2], -k)};
+        x = std::scalbn(x, -k), y = std::scalbn(y, -k), z = std::scalbn(z, -k);
+        m = std::scalbn(m, -k);
     }
-    const double len = std::sqrt(dot(s, s));
-    return {s[0] / len, s[1] / len, s[2] / len};
+    // Scalars, not a loop over a Vec3: the loop went through memory, and reloading the three stores as
+    // one vector stalled store forwarding.
+    const double floor = m * 0x1p-250;  // exact: m·2^-250 ≥ 2^-500 is normal
+    x = std::fabs(x) < floor ? 0.0 : x;
+    y = std::fabs(y) < floor ? 0.0 : y;
+    z = std::fabs(z) < floor ? 0.0 : z;
+    const double len = std::sqrt(x * x + y * y + z * z);
+    return {x / len, y / len, z / len};
 }
 
 inline bool in_range(double l) { return l >= min_scale && l <= max_scale; }
@@ -279,14 +290,6 @@ std::optional<bool> decide(const Problem& p, const Kappas& k, Witness&& witness)
 
 // `sound = false` (the filter() overloads below) sets every κ to 0: decisions on the computed values
 // alone, unsound, for the tests that show the bounds are needed.
-// The error units of degree 1 and 2 for the scale l and an oriented frame's g (0 otherwise).
-inline void set_units(Problem& p, double l, double g) {
-    p.l = l;
-    p.e1 = eps * l;
-    p.e2 = p.e1 * l;
-    p.g1 = g * l;
-    p.g2 = p.g1 * l;
-}
 
 // The axis point nearest to the box centre (canonical origin), clamped to the slab: c + t·d with
 // t = clamp(−d·c, −H, H). Any point will do for a witness; this one is often deep inside.
@@ -297,18 +300,35 @@ inline Vec3<double> axis_point_near_centre(const Vec3<double>& c, const Vec3<dou
 
 // ---- The computed problem of each box kind (false: out of range, stage 1 decides). ----
 
+// Each fills in every field of p (false: out of range, stage 1 decides). Assigned field by field into
+// the caller's Problem: value-initialising it again first (`p = Problem{}`, which GCC does with
+// `rep stos`) was a third of problem()'s time on random data, and building it as a returned
+// std::optional<Problem> costs a copy of the whole struct.
+
+// The error units of degree 1 and 2 for the scale l and an oriented frame's g (0 otherwise).
+inline void set_units(Problem& p, double l, double g) {
+    p.l = l;
+    p.e1 = eps * l;
+    p.e2 = p.e1 * l;
+    p.g1 = g * l;
+    p.g2 = p.g1 * l;
+    p.g = g;
+}
+
 // §1.2: the box is canonical, the cylinder already in its frame: nothing rounds but the unit axis.
 inline bool problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.extents), largest(cyl.center), cyl.radius, cyl.height});
     if (!in_range(l) || !usable_axis(cyl.axis)) return false;
-    p = Problem{};
     p.c = cyl.center;
     p.d = unit_axis(cyl.axis);
     p.e = b.extents;
     p.r_out = p.r_in = p.r = cyl.radius;
     p.h_out = p.h_in = p.h = cyl.height * 0.5;
     p.e_in = p.e;
+    p.has_inner = true;
     p.exact_inside = std::fabs(p.c[0]) <= p.e[0] && std::fabs(p.c[1]) <= p.e[1] && std::fabs(p.c[2]) <= p.e[2];
+    p.gamma = 0;
+    p.k = {0, 0, 0};
     set_units(p, l, 0);
     return true;
 }
@@ -317,18 +337,20 @@ inline bool problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl, 
 inline bool problem(const AlignedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.min), largest(b.max), largest(cyl.center), cyl.radius, cyl.height});
     if (!in_range(l) || !usable_axis(cyl.axis)) return false;
-    p = Problem{};
+    bool inside = true;
     for (int i = 0; i < 3; ++i) {
         p.k[i] = b.min[i] * 0.5 + b.max[i] * 0.5;  // in [min, max]: rounding is monotone
         p.c[i] = cyl.center[i] - p.k[i];
         p.e[i] = b.max[i] * 0.5 - b.min[i] * 0.5;
+        inside &= b.min[i] <= cyl.center[i] && cyl.center[i] <= b.max[i];
     }
     p.d = unit_axis(cyl.axis);
     p.r_out = p.r_in = p.r = cyl.radius;
     p.h_out = p.h_in = p.h = cyl.height * 0.5;
     p.e_in = p.e;
-    p.exact_inside = true;
-    for (int i = 0; i < 3; ++i) p.exact_inside &= b.min[i] <= cyl.center[i] && cyl.center[i] <= b.max[i];
+    p.has_inner = true;
+    p.exact_inside = inside;
+    p.gamma = 0;
     set_units(p, l, 0);
     return true;
 }
@@ -348,7 +370,6 @@ inline bool problem(const OrientedBox<double>& b, const Cylinder<double>& cyl, P
     const double row_max = std::max(std::max(g00 + g01 + g02, g01 + g11 + g12), g02 + g12 + g22);
     const double g = row_max + 32 * eps;
     if (!(g <= 0x1p-10)) return false;  // also the validated bound on |G_ij| and a NaN
-    p = Problem{};
     const Vec3<double> delta = cyl.center - b.center;
     const Vec3<double> u = unit_axis(cyl.axis);
     for (int i = 0; i < 3; ++i) {
@@ -358,16 +379,17 @@ inline bool problem(const OrientedBox<double>& b, const Cylinder<double>& cyl, P
     p.e = b.extents;
     // γ ≥ g·|e|₁ as a double (the product rounded, then inflated by 8ε: ≥ the exact product).
     p.gamma = g * (b.extents[0] + b.extents[1] + b.extents[2]) * (1 + 0x1p-49);
-    p.g = g;
     const double h = cyl.height * 0.5;
     p.r_out = cyl.radius + p.gamma;
     p.h_out = h + p.gamma;
     p.has_inner = cyl.radius >= p.gamma && cyl.height >= 2 * p.gamma;
+    p.exact_inside = false;
     p.r_in = cyl.radius - p.gamma;
     p.h_in = h - p.gamma;
     p.r = cyl.radius;
     p.h = h;
     for (int i = 0; i < 3; ++i) p.e_in[i] = b.extents[i] - p.gamma;
+    p.k = {0, 0, 0};
     set_units(p, l, g);
     return true;
 }
