@@ -11,7 +11,9 @@
 //   10M:     10,000,000 aligned boxes (structure of arrays, 480 MB) around one regular cylinder:
 //            `voxels` (sides 1/64 of the cylinder's reach, uniform in its bounding box grown by half)
 //            and `random` (the batch_cases distribution: boxes up to the cylinder's size).
-// Counters: ns_per_box (CPU time per box; Google Benchmark prints it as seconds: "108.5s" is 108.5 ns),
+// large_scalar: the scalar default on the first million boxes of each 10M set (the per-box ratio).
+// Counters: ns_per_box (time per box — CPU time, real time for the 10M runs; Google Benchmark prints
+// it as seconds: "108.5s" is 108.5 ns),
 // exact_pct (% of lanes answered by the scalar path), second_pass_pct (10M runs: % of the aligned
 // boxes that the first pass left to the whole filter), hit_pct, boxes_per_s and GB_per_s of box data
 // (48 bytes per box) on real time, and for `stream_sum` the bandwidth of summing the same six arrays
@@ -210,12 +212,26 @@ void large_batch(benchmark::State& state, bool voxels, unsigned threads) {
     for (std::uint64_t w : mask) hits += static_cast<std::size_t>(__builtin_popcountll(w));
     const double n = static_cast<double>(state.iterations()) * kLarge;
     state.counters["boxes_per_s"] = benchmark::Counter(n, benchmark::Counter::kIsRate);
+    state.counters["ns_per_box"] = benchmark::Counter(n * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
     state.counters["GB_per_s"] = benchmark::Counter(n * kBytesPerBox * 1e-9, benchmark::Counter::kIsRate);
     state.counters["stream_GB_per_s"] = kLarge * kBytesPerBox * 1e-9 / stream_s;
     state.counters["bandwidth_share_pct"] = 100.0 * stream_s / batch_s;  // issue #5's goal: ≥ 50
     state.counters["exact_pct"] = 100.0 * static_cast<double>(exact) / n;
     state.counters["second_pass_pct"] = 100.0 * static_cast<double>(second) / n;
     state.counters["hit_pct"] = 100.0 * static_cast<double>(hits) / kLarge;
+}
+
+// The scalar exact default on the first million boxes of the same 10M set, one thread: issue #5's
+// "batch ≤ 1/4 of the scalar per box" on these data, against large_batch/.../threads_1's ns_per_box.
+void large_scalar(benchmark::State& state, bool voxels) {
+    const Large& l = large(voxels);
+    constexpr std::size_t n = 1'000'000;
+    for (auto _ : state)
+        for (std::size_t i = 0; i < n; ++i) {
+            const AlignedBox<double> b{{l.soa.v[0][i], l.soa.v[1][i], l.soa.v[2][i]}, {l.soa.v[3][i], l.soa.v[4][i], l.soa.v[5][i]}};
+            benchmark::DoNotOptimize(boxcyl::intersects(b, l.cylinder));
+        }
+    report(state, n, 0);
 }
 
 // The memory bandwidth on the same arrays alone, timed by the benchmark library.
@@ -240,6 +256,8 @@ BENCHMARK_CAPTURE(large_batch, voxels/threads_1, true, 1u)->Unit(benchmark::kMil
 BENCHMARK_CAPTURE(large_batch, voxels/threads_all, true, 0u)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(stream_sum, voxels/threads_1, true, 1u)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(stream_sum, voxels/threads_all, true, 0u)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_scalar, voxels/first_1M, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(large_scalar, random/first_1M, false)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(large_batch, random/threads_1, false, 1u)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(large_batch, random/threads_all, false, 0u)->Unit(benchmark::kMillisecond)->UseRealTime();
 

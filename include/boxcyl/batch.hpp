@@ -90,6 +90,14 @@ BOXCYL_BATCH_INLINE void load(const T* p, std::size_t i, std::size_t valid, Lane
     out.copy_from(buf, stdx::element_aligned);
 }
 
+// Lanes p[idx[0]], …, p[idx[count − 1]], the last repeated to fill the vector. Built from the scalars
+// (the simd generator constructor): written to a buffer lane by lane and loaded as one vector, they
+// stalled store forwarding, a tenth of the 10M random-box run.
+template <class T>
+BOXCYL_BATCH_INLINE Lanes gather(const T* p, const std::size_t* idx, std::size_t count) {
+    return Lanes([&](auto l) { return static_cast<double>(p[idx[std::min<std::size_t>(l, count - 1)]]); });
+}
+
 template <class T>
 struct AlignedSource {
     const AlignedBoxes<T>& b;
@@ -108,14 +116,11 @@ struct AlignedSource {
     // Second pass: the boxes idx[0, count) (count ≤ lane_count) that the first left, gathered, through
     // the whole filter.
     LaneResult gathered(const CylinderFilter& f, const std::size_t* idx, std::size_t count) const {
-        const std::span<const T>* arrays[6] = {&b.min_x, &b.min_y, &b.min_z, &b.max_x, &b.max_y, &b.max_z};
-        alignas(64) double buf[6][lane_count];
-        for (int a = 0; a < 6; ++a)
-            for (std::size_t k = 0; k < lane_count; ++k) buf[a][k] = static_cast<double>((*arrays[a])[idx[std::min(k, count - 1)]]);
+        const T* arrays[6] = {b.min_x.data(), b.min_y.data(), b.min_z.data(), b.max_x.data(), b.max_y.data(), b.max_z.data()};
         Lanes lo[3], hi[3];
         for (int j = 0; j < 3; ++j) {
-            lo[j].copy_from(buf[j], stdx::element_aligned);
-            hi[j].copy_from(buf[3 + j], stdx::element_aligned);
+            lo[j] = gather(arrays[j], idx, count);
+            hi[j] = gather(arrays[3 + j], idx, count);
         }
         return aligned_lanes(f, lo, hi);
     }
@@ -131,21 +136,14 @@ struct OrientedSource {
 
     // One pass: the whole filter.
     LaneResult lanes(const CylinderFilter& f, std::size_t i, std::size_t valid) const {
-        // Gather the array of structures into 15 lane vectors.
-        alignas(64) double buf[15][lane_count];
-        for (std::size_t k = 0; k < lane_count; ++k) {
-            const OrientedBox<T>& x = b[i + std::min(k, valid - 1)];
-            for (int j = 0; j < 3; ++j) {
-                buf[j][k] = double(x.center[j]);
-                buf[12 + j][k] = double(x.extents[j]);
-                for (int a = 0; a < 3; ++a) buf[3 + 3 * a + j][k] = double(x.axes[a][j]);
-            }
-        }
+        // The array of structures as 15 lane vectors, each built from its lanes' scalars.
+        const OrientedBox<T>* x = b.data() + i;
+        auto lane = [x, valid](std::size_t l) -> const OrientedBox<T>& { return x[std::min(l, valid - 1)]; };
         Lanes k[3], A[3][3], e[3];
         for (int j = 0; j < 3; ++j) {
-            k[j].copy_from(buf[j], stdx::element_aligned);
-            e[j].copy_from(buf[12 + j], stdx::element_aligned);
-            for (int a = 0; a < 3; ++a) A[a][j].copy_from(buf[3 + 3 * a + j], stdx::element_aligned);
+            k[j] = Lanes([&](auto l) { return static_cast<double>(lane(l).center[j]); });
+            e[j] = Lanes([&](auto l) { return static_cast<double>(lane(l).extents[j]); });
+            for (int a = 0; a < 3; ++a) A[a][j] = Lanes([&](auto l) { return static_cast<double>(lane(l).axes[a][j]); });
         }
         return oriented_lanes(f, k, A, e);
     }
