@@ -11,6 +11,7 @@
 //   10M:     10,000,000 aligned boxes (structure of arrays, 480 MB) around one regular cylinder:
 //            `voxels` (sides 1/64 of the cylinder's reach, uniform in its bounding box grown by half)
 //            and `random` (the batch_cases distribution: boxes up to the cylinder's size).
+// small_batch: the first 8 or 64 boxes of each mixed aligned set per call (the per-call cost shows).
 // large_scalar: the scalar default on the first million boxes of each 10M set (the per-box ratio).
 // Counters: ns_per_box (time per box — CPU time, real time for the 10M runs; Google Benchmark prints
 // it as seconds: "108.5s" is 108.5 ns),
@@ -120,6 +121,23 @@ void batched(benchmark::State& state, bool only_regular, bool oriented, unsigned
         }
     }
     report(state, per_pass, exact);
+}
+
+// Small batches: the first n aligned boxes of each mixed set per call, so the per-batch cost (the
+// cylinder's constants, certified once per call) counts n times less than in a big batch.
+void small_batch(benchmark::State& state, std::size_t n) {
+    const std::vector<Set>& sets = data(false);
+    std::vector<std::uint64_t> mask(batch::mask_words(n));
+    std::size_t exact = 0;
+    for (auto _ : state)
+        for (const Set& s : sets) {
+            const batch::AlignedBoxes<double> all = s.soa.view();
+            const batch::AlignedBoxes<double> first{all.min_x.first(n), all.min_y.first(n), all.min_z.first(n),
+                                                    all.max_x.first(n), all.max_y.first(n), all.max_z.first(n)};
+            exact += batch::intersects(s.boxes.cylinder, first, std::span<std::uint64_t>(mask)).exact_lanes;
+            benchmark::DoNotOptimize(mask.data());
+        }
+    report(state, n * sets.size(), exact);
 }
 
 // ---- 10 million aligned boxes. ----
@@ -252,6 +270,8 @@ BENCHMARK_CAPTURE(scalar, regular/aligned, true, false)->Unit(benchmark::kMillis
 BENCHMARK_CAPTURE(batched, regular/aligned, true, false, 1u)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(scalar, regular/oriented, true, true)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(batched, regular/oriented, true, true, 1u)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(small_batch, mixed/aligned/n_8, std::size_t{8})->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(small_batch, mixed/aligned/n_64, std::size_t{64})->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(large_batch, voxels/threads_1, true, 1u)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(large_batch, voxels/threads_all, true, 0u)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(stream_sum, voxels/threads_1, true, 1u)->Unit(benchmark::kMillisecond)->UseRealTime();

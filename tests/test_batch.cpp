@@ -18,6 +18,8 @@
 #include <vector>   // the sets
 
 #include "boxcyl/batch.hpp"
+#include "boxcyl/number/qfield.hpp"
+#include "boxcyl/number/rational.hpp"
 #include "boxcyl/query.hpp"
 #include "support/batch_cases.hpp"
 #include "support/fp.hpp"
@@ -390,6 +392,45 @@ TEST(Batch, HugeAndTinyMagnitudes) {
     s.aligned.push_back({{denorm, 0, -denorm}, {2 * denorm, denorm, 0}});
     check_set(s.cylinder, s.aligned, s.oriented, "mixed huge and tiny boxes", ca, co);
     print("huge and tiny magnitudes", ca, co);
+}
+
+// The cylinder side of the filter (prepare): the exact unit axis u = a/|a| lies within δ_u of û, checked
+// exactly in Q(√|a|²) for random axes of every kind — zero, tiny (1e-300, subnormal) and ordinary
+// components, magnitudes 2^-1074 … 2^1000 (the scaled and unscaled paths), one or more non-zero
+// components — and the half-height and radius constants are the inputs' (H exact, R2 ≤ r²).
+TEST(Batch, CylinderConstantsEncloseTheExactAxis) {
+    constexpr std::uint64_t seed = 0xBA7C7300;
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const double pick[] = {0.0, 1e-300, -1e-300, 3 * denorm, -3 * denorm, 1e-12, 0.5, -1.0, 1.0};
+    long checked = 0;
+    for (int n = 0; n < 3000; ++n) {
+        Vec3<double> a;
+        for (int j = 0; j < 3; ++j) a[j] = (rng() % 3 == 0) ? pick[rng() % std::size(pick)] : unit(rng);
+        if (a[0] == 0 && a[1] == 0 && a[2] == 0) continue;
+        const int k = static_cast<int>(rng() % 2100) - 1074;  // 2^-1074 … 2^1025 before the range check
+        for (int j = 0; j < 3; ++j) a[j] = std::ldexp(a[j], k);
+        const Cylinder<double> cyl{{1, 2, 3}, a, 0.75, 2.5};
+        if (!validate(cyl).ok()) continue;
+        const batch::detail::CylinderFilter f = batch::detail::prepare(cyl);
+        if (!f.usable) continue;  // the filter then decides nothing: the scalar path answers
+        const Rational s2 = to_rational(a[0]) * to_rational(a[0]) + to_rational(a[1]) * to_rational(a[1]) +
+                            to_rational(a[2]) * to_rational(a[2]);
+        const QuadraticField<Rational> field(s2);
+        const QFRational len = QFRational::root(field);
+        for (int j = 0; j < 3; ++j) {
+            const Rational lo = to_rational(f.u[j]) - to_rational(f.du), hi = to_rational(f.u[j]) + to_rational(f.du);
+            const QFRational aj(to_rational(a[j]));
+            ASSERT_TRUE(QFRational(lo) * len <= aj && aj <= QFRational(hi) * len)
+                << "seed " << std::hex << seed << std::dec << " case " << n << ": axis " << hex(a) << ", component " << j
+                << ": u_j not within du = " << hex(f.du) << " of " << hex(f.u[j]);
+        }
+        ASSERT_EQ(f.h, cyl.height * 0.5);
+        ASSERT_LE(to_rational(f.r2), to_rational(cyl.radius) * to_rational(cyl.radius));
+        ++checked;
+    }
+    std::printf("[ info ] %ld axes checked exactly\n", checked);
+    EXPECT_GT(checked, 1000);
 }
 
 // 140,000 boxes with 1, 2 and 4 threads: the same answers as the scalar query, bit for bit.

@@ -4,7 +4,7 @@
 // undecided; batch.hpp sends undecided lanes to the scalar exact default (filtered.hpp). It never
 // decides wrongly; docs/robustness.md §8 derives every bound below, in short:
 //
-//  * Cylinder side, once per batch, in outward-rounded intervals (number/interval.hpp, sound in every
+//  * Cylinder side, once per batch, in a certified enclosure type (number/bounded.hpp, sound in every
 //    rounding mode): a double vector û with δ_u ≥ max_j |u_j − û_j|, the cylinder's bounding box,
 //    ρ_u ≥ the cylinder's support radius along û, r_N ≥ r(1 + 2^-40), R2 ≤ r². H = h/2 must be exact.
 //  * Lane side, in plain double: a margin m̂ that would be > 0 for a certain answer, and a bound β̂ on
@@ -41,7 +41,7 @@
 #include <cstddef>    // std::size_t
 
 #include "boxcyl/geometry/cylinder.hpp"
-#include "boxcyl/number/interval.hpp"
+#include "boxcyl/number/bounded.hpp"
 
 // Small steps called per vector of boxes: GCC at -O2 keeps some out of line (7% of the 10M-box
 // benchmark's profile in calls).
@@ -77,7 +77,7 @@ struct BallConstants {
     Lanes two_h, two_r, four_r2, kappa;
 };
 
-// The cylinder's quantities, computed once (certified in intervals) and broadcast to every lane.
+// The cylinder's quantities, computed once (certified enclosures) and broadcast to every lane.
 struct CylinderFilter {
     bool usable = false;            // false: every lane is left undecided (and the bounding-box test off)
     double c[3]{};                  // C
@@ -97,14 +97,26 @@ struct CylinderFilter {
 
 inline bool eligible(double x) { return std::fabs(x) <= kLimit; }  // false for NaN and ±∞
 
+// The cylinder's quantities are certified in an enclosure type N (number/bounded.hpp's Bounded: a
+// double and a running error bound, branch-free; Interval gives the same guarantees and was five
+// times slower here, ≈550 ns per batch, because its products branch on the signs of their bounds).
+// N provides N(x) (exact), N::range(lo, hi), + − × ÷, sqrt, enclosure_abs and certain bounds lo(), hi().
+
 // √x for an enclosure of a quantity known to be ≥ 0 (a sum of squares may get a lower bound just
 // below 0 from outward rounding).
-inline Interval sqrt_nonneg(const Interval& x) { return sqrt(Interval(std::max(0.0, x.lo()), std::max(0.0, x.hi()))); }
+template <class N>
+N sqrt_nonneg(const N& x) {
+    return sqrt(N::range(std::max(0.0, x.lo()), std::max(0.0, x.hi())));
+}
 
-// An enclosure of u = a/|a|: exact ±1 for a single non-zero component, else a prescaled by a power of
-// two (exact unless a component lands below the normal range: then widened by one double each way)
-// and normalised in intervals.
-inline void unit_axis(const Vec3<double>& a, Interval out[3]) {
+// An enclosure of u = a/|a|: exact ±1 for a single non-zero component; otherwise a itself when its
+// largest component m is within 2^±250, else a prescaled to m ∈ [1, 2) by a power of two (exact
+// unless a component lands below the normal range: then widened by one double each way), normalised
+// in N. A component below 2^-250 of the largest is left out of |a| and enclosed as ±2^-250 (then
+// |u_j| < 2^-250, and |a| is enclosed once widened by one double up): kept, its square would be
+// subnormal, which x86 runs in microcode (a third of prepare's time on such an axis).
+template <class N>
+void unit_axis(const Vec3<double>& a, N out[3]) {
     int nonzero = 0, which = 0;
     double m = 0;
     for (int j = 0; j < 3; ++j) {
@@ -112,20 +124,36 @@ inline void unit_axis(const Vec3<double>& a, Interval out[3]) {
         m = std::max(m, std::fabs(a[j]));
     }
     if (nonzero == 1) {
-        for (int j = 0; j < 3; ++j) out[j] = Interval(j == which ? (a[j] > 0 ? 1.0 : -1.0) : 0.0);
+        for (int j = 0; j < 3; ++j) out[j] = N(j == which ? (a[j] > 0 ? 1.0 : -1.0) : 0.0);
         return;
     }
-    const int e = m > 0 ? std::ilogb(m) : 0;
-    Interval v[3];
-    for (int j = 0; j < 3; ++j) {
-        const double y = std::ldexp(a[j], -e);
-        v[j] = std::ldexp(y, e) == a[j] ? Interval(y) : Interval(boxcyl::detail::next_down(y), boxcyl::detail::next_up(y));
+    double y[3] = {a[0], a[1], a[2]};
+    bool inexact[3] = {false, false, false};
+    if (!(m >= 0x1p-250 && m <= 0x1p250)) {
+        const int e = std::ilogb(m);  // m > 0: two non-zero components
+        for (int j = 0; j < 3; ++j) {
+            y[j] = std::ldexp(a[j], -e);
+            inexact[j] = std::ldexp(y[j], e) != a[j];
+        }
+        m = std::ldexp(m, -e);
     }
-    const Interval len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    for (int j = 0; j < 3; ++j) out[j] = v[j] / len;
+    const double floor = m * 0x1p-250;  // exact: m·2^-250 ≥ 2^-500 is normal
+    N v[3];
+    bool dropped[3], any_dropped = false;
+    for (int j = 0; j < 3; ++j) {
+        dropped[j] = std::fabs(y[j]) < floor;
+        any_dropped |= dropped[j];
+        v[j] = dropped[j] ? N(0.0)
+               : inexact[j] ? N::range(boxcyl::detail::next_down(y[j]), boxcyl::detail::next_up(y[j]))
+                            : N(y[j]);
+    }
+    N len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (any_dropped) len = N::range(len.lo(), boxcyl::detail::next_up(len.hi()));  // + ≤ 3·2^-500 relative in |a|²
+    for (int j = 0; j < 3; ++j) out[j] = dropped[j] ? N::range(-0x1p-250, 0x1p-250) : v[j] / len;
 }
 
-inline CylinderFilter prepare_scalars(const Cylinder<double>& cyl) {
+template <class N>
+CylinderFilter prepare_scalars(const Cylinder<double>& cyl) {
     CylinderFilter f;
     const double inf = std::numeric_limits<double>::infinity();
     for (int j = 0; j < 3; ++j) f.box_lo[j] = -inf, f.box_hi[j] = inf;
@@ -135,9 +163,9 @@ inline CylinderFilter prepare_scalars(const Cylinder<double>& cyl) {
     if (!(cyl.axis[0] != 0 || cyl.axis[1] != 0 || cyl.axis[2] != 0)) return f;
     const double half = cyl.height * 0.5;
     if (half * 2 != cyl.height) return f;  // h/2 rounded (h subnormal): leave it to the scalar path
-    Interval u[3];
+    N u[3];
     unit_axis(cyl.axis, u);
-    const Interval H(half), r(cyl.radius);
+    const N H(half), r(cyl.radius);
     double du = 0;
     for (int j = 0; j < 3; ++j) {
         f.c[j] = cyl.center[j];
@@ -147,28 +175,27 @@ inline CylinderFilter prepare_scalars(const Cylinder<double>& cyl) {
         // microcoded on x86 (≈100 cycles): it made the filter about twice as slow on such a cylinder.
         if (std::fabs(f.u[j]) < 0x1p-400) f.u[j] = 0;
         f.u_nonneg[j] = f.u[j] >= 0;
-        du = std::max({du, (Interval(u[j].hi()) - Interval(f.u[j])).hi(), (Interval(f.u[j]) - Interval(u[j].lo())).hi()});
+        du = std::max({du, (N(u[j].hi()) - N(f.u[j])).hi(), (N(f.u[j]) - N(u[j].lo())).hi()});
     }
     if (!(du <= 0x1p-20)) return f;  // the oriented bounds use δ_u ≤ 1/4; a sane axis gives ~2^-52
-    f.du = (Interval(du) * Interval(kSlack)).hi();
+    f.du = (N(du) * N(kSlack)).hi();
     f.h = half;
     // Half-widths along e_j: H|u_j| + r√(u_k² + u_l²) (√(1 − u_j²) without cancellation).
     for (int j = 0; j < 3; ++j) {
-        const Interval& uk = u[(j + 1) % 3];
-        const Interval& ul = u[(j + 2) % 3];
-        const Interval w = H * enclosure_abs(u[j]) + r * sqrt_nonneg(uk * uk + ul * ul);
+        const N& uk = u[(j + 1) % 3];
+        const N& ul = u[(j + 2) % 3];
+        const N w = H * enclosure_abs(u[j]) + r * sqrt_nonneg(uk * uk + ul * ul);
         f.w[j] = w.hi();
-        f.box_lo[j] = (Interval(cyl.center[j]) - w).lo();
-        f.box_hi[j] = (Interval(cyl.center[j]) + w).hi();
+        f.box_lo[j] = (N(cyl.center[j]) - w).lo();
+        f.box_hi[j] = (N(cyl.center[j]) + w).hi();
     }
     // Support radius along û: H|u·û| + r√(|û|² − (u·û)²).
-    const Interval uu = u[0] * Interval(f.u[0]) + u[1] * Interval(f.u[1]) + u[2] * Interval(f.u[2]);
-    const Interval nn = Interval(f.u[0]) * Interval(f.u[0]) + Interval(f.u[1]) * Interval(f.u[1]) +
-                        Interval(f.u[2]) * Interval(f.u[2]);
-    const Interval perp2 = nn - uu * uu;
-    const Interval perp = sqrt_nonneg(perp2);
+    const N uu = u[0] * N(f.u[0]) + u[1] * N(f.u[1]) + u[2] * N(f.u[2]);
+    const N nn = N(f.u[0]) * N(f.u[0]) + N(f.u[1]) * N(f.u[1]) + N(f.u[2]) * N(f.u[2]);
+    const N perp2 = nn - uu * uu;
+    const N perp = sqrt_nonneg(perp2);
     f.rho_u = (H * enclosure_abs(uu) + r * perp).hi();
-    f.r_n = (r * Interval(kSlack)).hi();
+    f.r_n = (r * N(kSlack)).hi();
     f.r = cyl.radius;
     f.r2 = std::max(0.0, (r * r).lo());
     f.kappa = 0x1p-44 + 2 * f.du;
@@ -179,7 +206,7 @@ inline CylinderFilter prepare_scalars(const Cylinder<double>& cyl) {
 // prepare_scalars, and its vectors for the first pass — on every path, the early returns included (an
 // unusable cylinder keeps its bounding box at ±∞, so that nothing is decided from it).
 inline CylinderFilter prepare(const Cylinder<double>& cyl) {
-    CylinderFilter f = prepare_scalars(cyl);
+    CylinderFilter f = prepare_scalars<Bounded>(cyl);
     for (int j = 0; j < 3; ++j) {
         f.ball.c[j] = f.c[j], f.ball.u[j] = f.u[j];
         f.ball.box_lo[j] = f.box_lo[j], f.ball.box_hi[j] = f.box_hi[j];
