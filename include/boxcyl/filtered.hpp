@@ -319,20 +319,23 @@ bool certain_hit(const CanonicalQuery<N>& q) {
 template <class N>
 std::optional<bool> decide(const CanonicalQuery<N>& outer, const CanonicalQuery<N>* inner, double scale) {
     if (apart_along_box_axes(outer)) return false;
-    const std::optional<bool> o = run_li(outer);
-    if (o && (!*o || inner == &outer)) return o;
-    if (o) {  // outer meets: ask the inner problem
-        if (inner == nullptr) return std::nullopt;
-        const std::optional<bool> i = run_li(*inner);
-        if (i && *i) return true;
-        if (certain_hit(*inner)) return true;
-        return std::nullopt;
-    }
+    std::optional<bool> o;
     if (inner != nullptr && inner != &outer) {
+        // Two problems (a rounded frame): most queries that get here are hits (about 70% on random
+        // data), which only the inner problem certifies, so it goes first; a miss then costs the
+        // second run that a hit used to cost. Inner ⊂ exact ⊂ outer, so the two cannot contradict.
         const std::optional<bool> i = run_li(*inner);
         if (i && *i) return true;
+        o = run_li(outer);
+        if (o && !*o) return false;
+        if (certain_hit(*inner)) return true;
+        if (o) return std::nullopt;  // outer meets, nothing certifies a hit
+    } else {
+        o = run_li(outer);
+        if (o && (!*o || inner == &outer)) return o;
+        if (o) return std::nullopt;  // outer meets, no inner problem
+        if (inner != nullptr && certain_hit(*inner)) return true;
     }
-    if (inner != nullptr && certain_hit(*inner)) return true;
     const double delta = std::ldexp(scale, -30);
     if (!(delta > 0)) return std::nullopt;
     CanonicalQuery<N> thick = outer;
