@@ -307,12 +307,7 @@ TEST(Interval, EnvironmentIsTheAssumedOne) { EXPECT_TRUE(fp_environment_ok()); }
 // ======================================================================================
 
 filtered::Result run(const Case& c) {
-    switch (c.kind) {
-        case BoxKind::aligned: return filtered::query(c.aligned, c.cylinder);
-        case BoxKind::oriented: return filtered::query(c.oriented, c.cylinder);
-        case BoxKind::canonical: return filtered::query(c.canonical, c.cylinder);
-    }
-    return {false, true};
+    return with_box(c, [](const auto& box, const Cylinder<double>& cyl) { return filtered::query(box, cyl); });
 }
 
 // What makes a case degenerate for stage 1 (docs/robustness.md, "fallbacks"): a disk (h = 0), a flat

@@ -47,20 +47,10 @@ long gmp_allocations(F&& f) {
 }
 
 bool front_door(const Case& c) {
-    switch (c.kind) {
-        case BoxKind::aligned: return intersects(c.aligned, c.cylinder);
-        case BoxKind::oriented: return intersects(c.oriented, c.cylinder);
-        case BoxKind::canonical: return intersects(c.canonical, c.cylinder);
-    }
-    return false;
+    return with_box(c, [](const auto& box, const Cylinder<double>& cyl) { return intersects(box, cyl); });
 }
 filtered::Result filtered_query(const Case& c) {
-    switch (c.kind) {
-        case BoxKind::aligned: return filtered::query(c.aligned, c.cylinder);
-        case BoxKind::oriented: return filtered::query(c.oriented, c.cylinder);
-        case BoxKind::canonical: return filtered::query(c.canonical, c.cylinder);
-    }
-    return {false, false};
+    return with_box(c, [](const auto& box, const Cylinder<double>& cyl) { return filtered::query(box, cyl); });
 }
 
 TEST(FrontDoor, DefaultIsTheFilteredQueryWithoutExactArithmetic) {

@@ -57,14 +57,20 @@ inline std::string describe(const Case& c) {
     return s;
 }
 
+// f(box, cylinder) with the case's box of its kind (any query: f is called with each box type).
+template <class F>
+auto with_box(const Case& c, F&& f) {
+    switch (c.kind) {
+        case BoxKind::aligned: return f(c.aligned, c.cylinder);
+        case BoxKind::oriented: return f(c.oriented, c.cylinder);
+        case BoxKind::canonical: break;
+    }
+    return f(c.canonical, c.cylinder);
+}
+
 // The exact answer for the inputs as given.
 inline bool oracle_answer(const Case& c) {
-    switch (c.kind) {
-        case BoxKind::aligned: return oracle::intersects(c.aligned, c.cylinder);
-        case BoxKind::oriented: return oracle::intersects(c.oriented, c.cylinder);
-        case BoxKind::canonical: return oracle::intersects(c.canonical, c.cylinder);
-    }
-    return false;
+    return with_box(c, [](const auto& box, const Cylinder<double>& cyl) { return oracle::intersects(box, cyl); });
 }
 
 // A right-handed orthonormal frame (rounded) from a random unit quaternion.
