@@ -407,8 +407,26 @@ inline LaneResult aligned_lanes(const CylinderFilter& f, const Lanes lo[3], cons
     }
     if (stdx::all_of(miss)) return {miss, LaneMask(false)};
 
-    // The ball around the box, for the many small boxes inside the bounding box but away from the axis
-    // (voxels), ahead of the three point tests:
+    // Box points nearest to three axis points: the one nearest to the box centre (t_c), and t_c ± λ
+    // with λ a quarter of the box's extent along û.
+    Lanes t = 0;
+    for (int j = 0; j < 3; ++j) t += f.u[j] * ((dlo[j] + dhi[j]) * 0.5);
+    t = clamp(t, -f.h, f.h);
+    const Lanes lambda = (smax_c - smin_c) * 0.25;
+    Lanes v[3], y[3], w[3];
+    PointTests pt[4];
+    for (int k = 1; k < 3; ++k) {
+        const Lanes tk = k == 1 ? t - lambda : t + lambda;
+        for (int j = 0; j < 3; ++j) w[j] = clamp(tk * f.u[j], dlo[j], dhi[j]);
+        pt[k] = point_tests(f, w, Lanes(0));
+    }
+    for (int j = 0; j < 3; ++j) y[j] = t * f.u[j], v[j] = clamp(y[j], dlo[j], dhi[j]);
+    pt[0] = point_tests(f, v, Lanes(0));
+    LaneMask hit = ok && !miss && certain_hit(pt, 3);
+    if (stdx::all_of(miss || hit)) return {miss || hit, hit};
+    // The ball around the box, for the small boxes inside the bounding box but away from the axis,
+    // after the three point tests (they decide most lanes that reach this pass: 92% on the benchmark's
+    // random boxes, where the ball decides 2%; ahead of them it cost 8% of that run):
     // the box lies in the ball around C + p̂, p̂ the computed centre (any double vector), of radius
     // δ̂ ≥ the largest corner distance: per axis g_j = max|d̂_j − p̂_j| plus 2^-51(|d̂lo_j| + |d̂hi_j|) for
     // the rounding of d̂ and g_j, then √ of the sum of squares (≤ 6 roundings) times (1 + 2^-48), plus
@@ -435,25 +453,9 @@ inline LaneResult aligned_lanes(const CylinderFilter& f, const Lanes lo[3], cons
         const Lanes bound = kRel * (q + a2 + r2) + ea * (2 * stdx::abs(a) + ea) + kAbs;
         miss = miss || (ok && ((q - a2) - r2 > bound));
     }
-    if (stdx::all_of(miss)) return {miss, LaneMask(false)};
-
-    // Box points nearest to three axis points: the one nearest to the box centre (t_c), and t_c ± λ
-    // with λ a quarter of the box's extent along û.
-    Lanes t = 0;
-    for (int j = 0; j < 3; ++j) t += f.u[j] * ((dlo[j] + dhi[j]) * 0.5);
-    t = clamp(t, -f.h, f.h);
-    const Lanes lambda = (smax_c - smin_c) * 0.25;
-    Lanes v[3], y[3], w[3];
-    PointTests pt[4];
-    for (int k = 1; k < 3; ++k) {
-        const Lanes tk = k == 1 ? t - lambda : t + lambda;
-        for (int j = 0; j < 3; ++j) w[j] = clamp(tk * f.u[j], dlo[j], dhi[j]);
-        pt[k] = point_tests(f, w, Lanes(0));
-    }
-    for (int j = 0; j < 3; ++j) y[j] = t * f.u[j], v[j] = clamp(y[j], dlo[j], dhi[j]);
-    pt[0] = point_tests(f, v, Lanes(0));
-    LaneMask hit = ok && !miss && certain_hit(pt, 3);
+    hit = hit && !miss;
     if (stdx::all_of(miss || hit)) return {miss || hit, hit};
+
     // Radial separation along the direction from the box point nearest to an axis point to that
     // axis point, after one more step of alternating projection (v, then the axis point nearest to it).
     t = clamp(f.u[0] * v[0] + f.u[1] * v[1] + f.u[2] * v[2], -f.h, f.h);
