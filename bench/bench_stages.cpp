@@ -1,0 +1,105 @@
+// Where the default query's time goes, stage by stage (docs/performance.md, *Analysis*): on
+// bench_query's random set (the same 4096 queries, CaseGenerator seed 0xb0c5c701, all box kinds),
+//   problem:           semi_static::problem() alone (the canonical problem, with the unit axis)
+//   stage0:            semi_static::filter() (problem and decision), on every query
+//   default:           boxcyl::intersects (the front door), on every query
+//   default_on_left:   boxcyl::intersects on the queries stage 0 leaves undecided only
+// Counters: ns_per_query (CPU time per query of the set timed; Google Benchmark prints it as seconds:
+// "55.1s" is 55.1 ns), left_pct (the share of the set that stage 0 leaves) and, for default_on_left,
+// ns_per_random_query: what those queries add to the mean over the whole set.
+//
+// Each pass sums the answers and hands only the sum to DoNotOptimize (per query, it forced every
+// std::optional answer through memory: stage 0 read 97 instead of 67 ns).
+//
+// Run: bench_stages --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <cstdint>   // seeds
+#include <optional>  // stage 0's answer
+#include <vector>    // the set
+
+#include "boxcyl/query.hpp"
+#include "support/cases.hpp"
+
+namespace {
+
+using namespace boxcyl;
+using boxcyl::testing::Case;
+using boxcyl::testing::with_box;
+
+constexpr std::uint64_t kRandomSeed = 0xb0c5c701;  // bench_query's random set
+constexpr std::size_t kQueries = 4096;
+
+struct Sets {
+    std::vector<Case> all, left;  // left: the queries stage 0 does not decide
+};
+
+const Sets& sets() {
+    static const Sets s = [] {
+        Sets r;
+        boxcyl::testing::CaseGenerator gen(kRandomSeed);
+        for (std::size_t i = 0; i < kQueries; ++i) r.all.push_back(gen.next());
+        for (const Case& c : r.all)
+            if (!with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::semi_static::filter(b, cyl); }))
+                r.left.push_back(c);
+        return r;
+    }();
+    return s;
+}
+
+void counters(benchmark::State& state, std::size_t per_pass) {
+    const double n = static_cast<double>(state.iterations()) * static_cast<double>(per_pass);
+    state.counters["ns_per_query"] = benchmark::Counter(n * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["left_pct"] = 100.0 * static_cast<double>(sets().left.size()) / static_cast<double>(kQueries);
+}
+
+void problem(benchmark::State& state) {
+    const std::vector<Case>& all = sets().all;
+    for (auto _ : state) {
+        double sum = 0;
+        for (const Case& c : all) {
+            filtered::semi_static::Problem p;
+            if (with_box(c, [&p](const auto& b, const Cylinder<double>& cyl) { return filtered::semi_static::problem(b, cyl, p); }))
+                sum += p.d[0];
+        }
+        benchmark::DoNotOptimize(sum);
+    }
+    counters(state, all.size());
+}
+
+void stage0(benchmark::State& state) {
+    const std::vector<Case>& all = sets().all;
+    for (auto _ : state) {
+        long decided = 0;
+        for (const Case& c : all)
+            decided += with_box(c, [](const auto& b, const Cylinder<double>& cyl) {
+                           return filtered::semi_static::filter(b, cyl);
+                       }).has_value();
+        benchmark::DoNotOptimize(decided);
+    }
+    counters(state, all.size());
+}
+
+void default_query(benchmark::State& state, bool left_only) {
+    const std::vector<Case>& set = left_only ? sets().left : sets().all;
+    for (auto _ : state) {
+        long hits = 0;
+        for (const Case& c : set) hits += with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return intersects(b, cyl); });
+        benchmark::DoNotOptimize(hits);
+    }
+    counters(state, set.size());
+    if (left_only) {
+        const double n = static_cast<double>(state.iterations()) * static_cast<double>(kQueries);
+        state.counters["ns_per_random_query"] =
+            benchmark::Counter(n * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    }
+}
+
+}  // namespace
+
+BENCHMARK(problem);
+BENCHMARK(stage0);
+BENCHMARK_CAPTURE(default_query, default, false);
+BENCHMARK_CAPTURE(default_query, default_on_left, true);
+
+BENCHMARK_MAIN();
