@@ -11,6 +11,7 @@
 //   10M:     10,000,000 aligned boxes (structure of arrays, 480 MB) around one regular cylinder:
 //            `voxels` (sides 1/64 of the cylinder's reach, uniform in its bounding box grown by half)
 //            and `random` (the batch_cases distribution: boxes up to the cylinder's size).
+// prepare: the per-call cylinder constants alone (ns_per_box is per cylinder there).
 // small_batch: the first 8 or 64 boxes of each mixed aligned set per call (the per-call cost shows).
 // large_scalar: the scalar default on the first million boxes of each 10M set (the per-box ratio).
 // Counters: ns_per_box (time per box — CPU time, real time for the 10M runs; Google Benchmark prints
@@ -121,6 +122,23 @@ void batched(benchmark::State& state, bool only_regular, bool oriented, unsigned
         }
     }
     report(state, per_pass, exact);
+}
+
+// The per-call cost alone: the cylinder's certified constants (batch::detail::prepare) for the 4096
+// cylinders of bench_query's random set (segments, disks, tiny axis components included).
+void prepare(benchmark::State& state) {
+    static const std::vector<Cylinder<double>> cylinders = [] {
+        std::vector<Cylinder<double>> v;
+        testing::CaseGenerator gen(0xb0c5c701);
+        for (int i = 0; i < 4096; ++i) v.push_back(gen.next().cylinder);
+        return v;
+    }();
+    for (auto _ : state) {
+        double sum = 0;
+        for (const Cylinder<double>& c : cylinders) sum += batch::detail::prepare(c).rho_u;
+        benchmark::DoNotOptimize(sum);
+    }
+    report(state, cylinders.size(), 0);  // ns_per_box: per cylinder here
 }
 
 // Small batches: the first n aligned boxes of each mixed set per call, so the per-batch cost (the
@@ -270,6 +288,7 @@ BENCHMARK_CAPTURE(scalar, regular/aligned, true, false)->Unit(benchmark::kMillis
 BENCHMARK_CAPTURE(batched, regular/aligned, true, false, 1u)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(scalar, regular/oriented, true, true)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(batched, regular/oriented, true, true, 1u)->Unit(benchmark::kMillisecond);
+BENCHMARK(prepare)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(small_batch, mixed/aligned/n_8, std::size_t{8})->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(small_batch, mixed/aligned/n_64, std::size_t{64})->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(large_batch, voxels/threads_1, true, 1u)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -1,7 +1,8 @@
 // Where the default query's time goes, stage by stage (docs/performance.md, *Analysis*): on
 // bench_query's random set (the same 4096 queries, CaseGenerator seed 0xb0c5c701, all box kinds),
 //   problem:           semi_static::problem() alone (the canonical problem, with the unit axis)
-//   stage0:            semi_static::filter() (problem and decision), on every query
+//   stage0/all:        semi_static::filter() (problem and decision), on every query
+//   stage0/tiny_axis:  the same on the queries whose axis has a component below 1e-200 (a third)
 //   default:           boxcyl::intersects (the front door), on every query
 //   default_on_left:   boxcyl::intersects on the queries stage 0 leaves undecided only
 // Counters: ns_per_query (CPU time per query of the set timed; Google Benchmark prints it as seconds:
@@ -14,6 +15,7 @@
 // Run: bench_stages --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include <cmath>     // std::fabs
 #include <cstdint>   // seeds
 #include <optional>  // stage 0's answer
 #include <vector>    // the set
@@ -32,6 +34,7 @@ constexpr std::size_t kQueries = 4096;
 
 struct Sets {
     std::vector<Case> all, left;  // left: the queries stage 0 does not decide
+    std::vector<Case> tiny;       // the queries whose axis has a non-zero component below 1e-200
 };
 
 const Sets& sets() {
@@ -42,6 +45,12 @@ const Sets& sets() {
         for (const Case& c : r.all)
             if (!with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::semi_static::filter(b, cyl); }))
                 r.left.push_back(c);
+        for (const Case& c : r.all)
+            for (int j = 0; j < 3; ++j)
+                if (c.cylinder.axis[j] != 0 && std::fabs(c.cylinder.axis[j]) < 1e-200) {
+                    r.tiny.push_back(c);
+                    break;
+                }
         return r;
     }();
     return s;
@@ -67,8 +76,8 @@ void problem(benchmark::State& state) {
     counters(state, all.size());
 }
 
-void stage0(benchmark::State& state) {
-    const std::vector<Case>& all = sets().all;
+void stage0(benchmark::State& state, bool tiny_only) {
+    const std::vector<Case>& all = tiny_only ? sets().tiny : sets().all;
     for (auto _ : state) {
         long decided = 0;
         for (const Case& c : all)
@@ -98,7 +107,8 @@ void default_query(benchmark::State& state, bool left_only) {
 }  // namespace
 
 BENCHMARK(problem);
-BENCHMARK(stage0);
+BENCHMARK_CAPTURE(stage0, all, false);
+BENCHMARK_CAPTURE(stage0, tiny_axis, true);
 BENCHMARK_CAPTURE(default_query, default, false);
 BENCHMARK_CAPTURE(default_query, default_on_left, true);
 
