@@ -34,6 +34,7 @@
 #include <algorithm>  // std::max, std::clamp
 #include <array>      // the oriented frame
 #include <cmath>      // std::fabs, std::ilogb, std::scalbn, std::sqrt
+#include <limits>     // infinity
 #include <optional>   // undecided
 #include <utility>    // std::swap
 
@@ -70,6 +71,20 @@ constexpr T axis_gap(const Vec3<T>& c, const Vec3<T>& d, const Vec3<T>& e, const
 template <class T>
 constexpr T edge_gap(const T& cj, const T& ck, const T& dj, const T& dk, const T& ej, const T& ek) {
     return abs_value(T(dk * cj - dj * ck)) - (ej * abs_value(dk) + ek * abs_value(dj));
+}
+// Any direction n (a double vector with |n_i| ≤ 1, exact as given; stage 0b takes it from a nearest-
+// point search, filtered/witness_search.hpp): the cylinder's extent along n is H|n·d| + r·|n × d|, the
+// box's Σ e_k|n_k|, so n separates when s = |n·c| − H|n·d| − Σ e_k|n_k| > 0 and
+// s² > r²|n × d|² = r²(n·n − (n·d)²) (|d| = 1). The face and edge tests are its special cases.
+template <class T>
+constexpr T direction_gap(const Vec3<T>& n, const Vec3<T>& c, const Vec3<T>& d, const Vec3<T>& e, const T& h) {
+    return abs_value(dot(n, c)) - h * abs_value(dot(n, d)) -
+           (e[0] * abs_value(n[0]) + e[1] * abs_value(n[1]) + e[2] * abs_value(n[2]));
+}
+template <class T>
+constexpr T direction_gap_squared(const T& s, const Vec3<T>& n, const Vec3<T>& d, const T& r) {
+    const T nd = dot(n, d);
+    return s * s - r * r * (dot(n, n) - nd * nd);
 }
 // The cylinder centre inside the box: e_i − |c_i| ≥ 0 for every i.
 template <class T>
@@ -108,10 +123,11 @@ constexpr T chord_box_margin(const T& ci, const T& ei, const T& t, const T& di, 
 //              r ± γ, H ± γ, e − γ with γ ≤ 2^-10·1.5L the double used, one rounding each; v = fl(x − c) with
 //              x exact box coordinates: |v| ≤ (0.5 + √3)L, error c's + one rounding.
 // The cylinder-side witnesses' t and z are doubles chosen by the filter, exact by definition:
-// |t| ≤ H ≤ 0.26L, and z = s·(−c − t·d) with s ≤ 1, |z_i| ≤ |c_i| + |t| ≤ 2L.
+// |t| ≤ H ≤ 0.26L, and |z_i| ≤ 2L (z = s·(−c − t·d) with s ≤ 1, |z_i| ≤ |c_i| + |t| ≤ 2L, or a searched
+// offset checked against 2L). A separating direction n is exact too, scaled to |n_i| ≤ 1 (degree 0).
 struct InputModel {
     StaticBound c, d, e, r, h, v;
-    StaticBound t{0.26, 0}, z{2, 0};
+    StaticBound t{0.26, 0}, z{2, 0}, n{1, 0};
 };
 inline constexpr InputModel canonical_model{{0.5, 0}, {1, 4}, {0.5, 0}, {0.5, 0}, {0.25, 0}, {1, 1}};
 inline constexpr InputModel aligned_model{{1, 2}, {1, 4}, {0.5, 1}, {0.5, 0}, {0.25, 0}, {1, 1}};
@@ -124,13 +140,15 @@ struct Kappa {
     double eps = 0, g = 0;
 };
 struct Kappas {
-    Kappa face, face_sq, axis, edge, edge_sq, inside, height, radial, chord_box, chord_radial;
+    Kappa face, face_sq, axis, edge, edge_sq, inside, height, radial, chord_box, chord_radial, direction, direction_sq;
 };
 constexpr Kappa kappa(const StaticBound& b) { return {b.eps * 1.01 + 1, b.g * 1.01}; }
 constexpr Kappas kappas_for(const InputModel& m) {
-    const Vec3<StaticBound> c{m.c, m.c, m.c}, d{m.d, m.d, m.d}, e{m.e, m.e, m.e}, v{m.v, m.v, m.v}, z{m.z, m.z, m.z};
+    const Vec3<StaticBound> c{m.c, m.c, m.c}, d{m.d, m.d, m.d}, e{m.e, m.e, m.e}, v{m.v, m.v, m.v}, z{m.z, m.z, m.z},
+        n{m.n, m.n, m.n};
     const StaticBound face = face_gap(m.c, m.e, m.h, m.d);
     const StaticBound edge = edge_gap(m.c, m.c, m.d, m.d, m.e, m.e);
+    const StaticBound direction = direction_gap(n, c, d, e, m.h);
     return {kappa(face),
             kappa(face_gap_squared(face, m.r, m.d, m.d)),
             kappa(axis_gap(c, d, e, m.h)),
@@ -140,7 +158,9 @@ constexpr Kappas kappas_for(const InputModel& m) {
             kappa(witness_height_margin(v, d, m.h)),
             kappa(witness_radial_margin(v, d, m.r)),
             kappa(chord_box_margin(m.c, m.e, m.t, m.d, m.z, dot(d, z))),
-            kappa(witness_radial_margin(z, d, m.r))};
+            kappa(witness_radial_margin(z, d, m.r)),
+            kappa(direction),
+            kappa(direction_gap_squared(direction, n, d, m.r))};
 }
 inline constexpr Kappas canonical_kappas = kappas_for(canonical_model);
 inline constexpr Kappas aligned_kappas = kappas_for(aligned_model);
@@ -234,18 +254,46 @@ inline Vec3<double> towards_centre(const Problem& p, double t) {
     return s * y;
 }
 
+// ---- Certificates on a computed problem, shared by stage 0 and the searches of stage 0b. ----
+
+inline double bound1(const Problem& p, const Kappa& k) { return k.eps * p.e1 + k.g * p.g1; }
+inline double bound2(const Problem& p, const Kappa& k) { return k.eps * p.e2 + k.g * p.g2; }
+
+// A miss: the direction n (any double vector; scaled here to |n_i| ≤ 1, which keeps it a double
+// vector, now exact as given) separates the outer problem.
+inline bool separated_along(const Problem& p, const Kappas& k, Vec3<double> n) {
+    const double m = largest(n);
+    if (!(m > 0) || !(m < std::numeric_limits<double>::infinity())) return false;  // also NaN
+    n = {n[0] / m, n[1] / m, n[2] / m};  // |n_i / m| ≤ 1 survives rounding (monotone)
+    const double s = direction_gap(n, p.c, p.d, p.e, p.h_out);
+    return s > bound1(p, k.direction) && direction_gap_squared(s, n, p.d, p.r_out) > bound2(p, k.direction_sq);
+}
+// A hit: the box point Q = C + v (exactly a box point: the caller's clamp) lies in the inner cylinder.
+inline bool box_point_inside(const Problem& p, const Kappas& k, const Vec3<double>& v) {
+    return p.has_inner && witness_height_margin(v, p.d, p.h_in) > bound1(p, k.height) &&
+           witness_radial_margin(v, p.d, p.r_in) > bound2(p, k.radial);
+}
+// A hit: the cylinder point X = C + t·d + (z − (d·z)d) lies in the box shrunk to e_in. The caller
+// guarantees |t| ≤ H exactly (axial_parameter's H'), |t| ≤ 0.26L and |z_i| ≤ 2L (the model); z = 0
+// needs no radial check.
+inline bool cylinder_point_inside(const Problem& p, const Kappas& k, double t, const Vec3<double>& z, bool radial = true) {
+    if (radial && !(witness_radial_margin(z, p.d, p.r) > bound2(p, k.chord_radial))) return false;
+    const double dz = dot(p.d, z), b = bound1(p, k.chord_box);
+    for (int i = 0; i < 3; ++i)
+        if (!(chord_box_margin(p.c[i], p.e_in[i], t, p.d[i], z[i], dz) > b)) return false;
+    return true;
+}
+
 template <class Witness>
 std::optional<bool> decide(const Problem& p, const Kappas& k, Witness&& witness) {
     const Vec3<double>& c = p.c;
     const Vec3<double>& d = p.d;
     const Vec3<double>& e = p.e;
-    auto bound1 = [&p](const Kappa& kk) { return kk.eps * p.e1 + kk.g * p.g1; };
-    auto bound2 = [&p](const Kappa& kk) { return kk.eps * p.e2 + kk.g * p.g2; };
     // Misses along the box faces' normals and the cylinder axis, the most common certificates: all
     // four evaluated and combined without branches (on random data a branch per test mispredicts).
     {
-        const double b_face = bound1(k.face), b_face_sq = bound2(k.face_sq);
-        bool apart = axis_gap(c, d, e, p.h_out) > bound1(k.axis);
+        const double b_face = bound1(p, k.face), b_face_sq = bound2(p, k.face_sq);
+        bool apart = axis_gap(c, d, e, p.h_out) > bound1(p, k.axis);
         for (int i = 0; i < 3; ++i) {
             const int j = (i + 1) % 3, l = (i + 2) % 3;
             const double s = face_gap(c[i], e[i], p.h_out, d[i]);
@@ -255,35 +303,25 @@ std::optional<bool> decide(const Problem& p, const Kappas& k, Witness&& witness)
     }
     if (p.has_inner) {
         if (p.exact_inside) return true;
-        const double inside = bound1(k.inside);
+        const double inside = bound1(p, k.inside);
         if (inside_margin(c[0], e[0]) > inside && inside_margin(c[1], e[1]) > inside && inside_margin(c[2], e[2]) > inside)
             return true;
-        for (int w = 0; w < 3; ++w) {
-            const Vec3<double> v = witness(w);
-            if (witness_height_margin(v, d, p.h_in) > bound1(k.height) &&
-                witness_radial_margin(v, d, p.r_in) > bound2(k.radial))
-                return true;
-        }
+        for (int w = 0; w < 3; ++w)
+            if (box_point_inside(p, k, witness(w))) return true;
     }
     // Cylinder points X of the cylinder as given, inside the box shrunk by γ (e_in = e − γ: for a
     // rounded frame, the ideal box shrunk by γ lies inside the true one; see `Problem`).
     if (const std::optional<double> t = axial_parameter(p)) {
-        auto chord_hit = [&](double at, const Vec3<double>& z) {
-            const double dz = dot(d, z), b = bound1(k.chord_box);
-            for (int i = 0; i < 3; ++i)
-                if (!(chord_box_margin(c[i], p.e_in[i], at, d[i], z[i], dz) > b)) return false;
-            return true;
-        };
         const Vec3<double> zero{0, 0, 0};
-        if (chord_hit(*t, zero)) return true;
-        if (const std::optional<double> mid = chord_middle(p); mid && chord_hit(*mid, zero)) return true;
-        const Vec3<double> z = towards_centre(p, *t);
-        if (witness_radial_margin(z, d, p.r) > bound2(k.chord_radial) && chord_hit(*t, z)) return true;
+        if (cylinder_point_inside(p, k, *t, zero, false)) return true;
+        if (const std::optional<double> mid = chord_middle(p); mid && cylinder_point_inside(p, k, *mid, zero, false))
+            return true;
+        if (cylinder_point_inside(p, k, *t, towards_centre(p, *t))) return true;
     }
     for (int i = 0; i < 3; ++i) {
         const int j = (i + 1) % 3, l = (i + 2) % 3;
         const double s = edge_gap(c[j], c[l], d[j], d[l], e[j], e[l]);
-        if (s > bound1(k.edge) && face_gap_squared(s, p.r_out, d[j], d[l]) > bound2(k.edge_sq)) return false;
+        if (s > bound1(p, k.edge) && face_gap_squared(s, p.r_out, d[j], d[l]) > bound2(p, k.edge_sq)) return false;
     }
     return std::nullopt;
 }
