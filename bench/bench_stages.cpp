@@ -6,7 +6,8 @@
 //   default:           boxcyl::intersects (the front door), on every query
 //   default_on_left:   boxcyl::intersects on the queries stage 0 leaves undecided only
 // Counters: ns_per_query (CPU time per query of the set timed; Google Benchmark prints it as seconds:
-// "55.1s" is 55.1 ns), left_pct (the share of the set that stage 0 leaves) and, for default_on_left,
+// "55.1s" is 55.1 ns), left_pct (the share of the set that stage 0 leaves), left and left_after_0b (how
+// many queries of the set stage 0 leaves, and how many of those stage 0b leaves too) and, for default_on_left,
 // ns_per_random_query: what those queries add to the mean over the whole set.
 //
 // Each pass sums the answers and hands only the sum to DoNotOptimize (per query, it forced every
@@ -34,6 +35,7 @@ constexpr std::size_t kQueries = 4096;
 
 struct Sets {
     std::vector<Case> all, left;  // left: the queries stage 0 does not decide
+    std::size_t left_0b = 0;      // of those, the queries stage 0b does not decide either
     std::vector<Case> tiny;       // the queries whose axis has a non-zero component below 1e-200
 };
 
@@ -45,6 +47,8 @@ const Sets& sets() {
         for (const Case& c : r.all)
             if (!with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::semi_static::filter(b, cyl); }))
                 r.left.push_back(c);
+        for (const Case& c : r.left)
+            r.left_0b += !with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::witness_search::decide(b, cyl); });
         for (const Case& c : r.all)
             for (int j = 0; j < 3; ++j)
                 if (c.cylinder.axis[j] != 0 && std::fabs(c.cylinder.axis[j]) < 1e-200) {
@@ -60,6 +64,8 @@ void counters(benchmark::State& state, std::size_t per_pass) {
     const double n = static_cast<double>(state.iterations()) * static_cast<double>(per_pass);
     state.counters["ns_per_query"] = benchmark::Counter(n * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
     state.counters["left_pct"] = 100.0 * static_cast<double>(sets().left.size()) / static_cast<double>(kQueries);
+    state.counters["left"] = static_cast<double>(sets().left.size());
+    state.counters["left_after_0b"] = static_cast<double>(sets().left_0b);
 }
 
 void problem(benchmark::State& state) {

@@ -101,6 +101,25 @@ constexpr T witness_radial_margin(const Vec3<T>& v, const Vec3<T>& d, const T& r
     const T t = dot(d, v);
     return r * r - (dot(v, v) - t * t);
 }
+// Signed forms for the two-point certificates below: d·v ≤ H (below the top), d·v ≥ −H (above the
+// bottom), and a cylinder point's box coordinate x_i ≤ e_i, x_i ≥ −e_i. Their κ come out equal to the
+// absolute forms' (|·| and a sign change round nothing), but are computed from these expressions.
+template <class T>
+constexpr T witness_top_margin(const Vec3<T>& v, const Vec3<T>& d, const T& h) {
+    return h - dot(d, v);
+}
+template <class T>
+constexpr T witness_bottom_margin(const Vec3<T>& v, const Vec3<T>& d, const T& h) {
+    return h + dot(d, v);
+}
+template <class T>
+constexpr T chord_upper_margin(const T& ci, const T& ei, const T& t, const T& di, const T& zi, const T& dz) {
+    return ei - T(ci + t * di + zi - dz * di);
+}
+template <class T>
+constexpr T chord_lower_margin(const T& ci, const T& ei, const T& t, const T& di, const T& zi, const T& dz) {
+    return ei + T(ci + t * di + zi - dz * di);
+}
 // A cylinder point X = C + t·d + (z − (d·z)·d) for doubles t, z with |t| ≤ H exactly and
 // |z − (d·z)d| ≤ r (that is witness_radial_margin(z, d, r) ≥ 0; nothing to check for z = 0) inside
 // the box: e_i − |c_i + t·d_i + z_i − (d·z)·d_i| ≥ 0 for every i (dz = d·z, computed once).
@@ -141,8 +160,12 @@ struct Kappa {
 };
 struct Kappas {
     Kappa face, face_sq, axis, edge, edge_sq, inside, height, radial, chord_box, chord_radial, direction, direction_sq;
+    Kappa height_signed, chord_signed;  // the two-point certificates' signed margins
 };
 constexpr Kappa kappa(const StaticBound& b) { return {b.eps * 1.01 + 1, b.g * 1.01}; }
+constexpr Kappa larger(const Kappa& a, const Kappa& b) {
+    return {a.eps > b.eps ? a.eps : b.eps, a.g > b.g ? a.g : b.g};
+}
 constexpr Kappas kappas_for(const InputModel& m) {
     const Vec3<StaticBound> c{m.c, m.c, m.c}, d{m.d, m.d, m.d}, e{m.e, m.e, m.e}, v{m.v, m.v, m.v}, z{m.z, m.z, m.z},
         n{m.n, m.n, m.n};
@@ -160,7 +183,10 @@ constexpr Kappas kappas_for(const InputModel& m) {
             kappa(chord_box_margin(m.c, m.e, m.t, m.d, m.z, dot(d, z))),
             kappa(witness_radial_margin(z, d, m.r)),
             kappa(direction),
-            kappa(direction_gap_squared(direction, n, d, m.r))};
+            kappa(direction_gap_squared(direction, n, d, m.r)),
+            larger(kappa(witness_top_margin(v, d, m.h)), kappa(witness_bottom_margin(v, d, m.h))),
+            larger(kappa(chord_upper_margin(m.c, m.e, m.t, m.d, m.z, dot(d, z))),
+                   kappa(chord_lower_margin(m.c, m.e, m.t, m.d, m.z, dot(d, z))))};
 }
 inline constexpr Kappas canonical_kappas = kappas_for(canonical_model);
 inline constexpr Kappas aligned_kappas = kappas_for(aligned_model);
@@ -281,6 +307,50 @@ inline bool cylinder_point_inside(const Problem& p, const Kappas& k, double t, c
     const double dz = dot(p.d, z), b = bound1(p, k.chord_box);
     for (int i = 0; i < 3; ++i)
         if (!(chord_box_margin(p.c[i], p.e_in[i], t, p.d[i], z[i], dz) > b)) return false;
+    return true;
+}
+
+// Two-point certificates: hits where no single point has a margin to spare — a disk (H = 0) crossing
+// a box, a segment (r = 0) or a cylinder crossing a flat box (a side 0), thin overlaps. A segment
+// between two points of a convex set lies in it; a distance to the axis line is convex along it, and
+// an axial or box coordinate is affine along it, so it takes every value between its ends.
+//
+// Box points Q1 = C + v1, Q2 = C + v2 (exactly in the box, as for box_point_inside), both radially
+// inside the inner cylinder, with d·v ≤ H at one of them and d·v ≥ −H at one of them: the segment
+// Q1Q2 is in the box and radially inside, and d·v takes a value in [−H, H] on it — that point is in
+// the inner cylinder.
+inline bool box_segment_inside(const Problem& p, const Kappas& k, const Vec3<double>& v1, const Vec3<double>& v2) {
+    if (!p.has_inner) return false;
+    const double b_radial = bound2(p, k.radial), b = bound1(p, k.height_signed);
+    if (!(witness_radial_margin(v1, p.d, p.r_in) > b_radial && witness_radial_margin(v2, p.d, p.r_in) > b_radial))
+        return false;
+    const bool below_top = witness_top_margin(v1, p.d, p.h_in) > b || witness_top_margin(v2, p.d, p.h_in) > b;
+    const bool above_bottom = witness_bottom_margin(v1, p.d, p.h_in) > b || witness_bottom_margin(v2, p.d, p.h_in) > b;
+    return below_top && above_bottom;
+}
+// Cylinder points X1 = (t1, z1), X2 = (t2, z2) (exactly in the cylinder, as for cylinder_point_inside,
+// whose conditions on t and z the caller guarantees for both): the segment X1X2 is in the cylinder.
+// If in every box coordinate but at most one both points are strictly inside the box shrunk to e_in,
+// and in that one (with e ≥ 0) x ≤ e at one of them and x ≥ −e at one of them, a point of the
+// segment is in it.
+inline bool cylinder_segment_inside(const Problem& p, const Kappas& k, double t1, const Vec3<double>& z1, double t2,
+                                    const Vec3<double>& z2, bool radial) {
+    if (radial) {
+        const double b_radial = bound2(p, k.chord_radial);
+        if (!(witness_radial_margin(z1, p.d, p.r) > b_radial && witness_radial_margin(z2, p.d, p.r) > b_radial))
+            return false;
+    }
+    const double dz1 = dot(p.d, z1), dz2 = dot(p.d, z2), b = bound1(p, k.chord_signed);
+    int crossing = 0;
+    for (int i = 0; i < 3; ++i) {
+        const bool upper1 = chord_upper_margin(p.c[i], p.e_in[i], t1, p.d[i], z1[i], dz1) > b;
+        const bool lower1 = chord_lower_margin(p.c[i], p.e_in[i], t1, p.d[i], z1[i], dz1) > b;
+        const bool upper2 = chord_upper_margin(p.c[i], p.e_in[i], t2, p.d[i], z2[i], dz2) > b;
+        const bool lower2 = chord_lower_margin(p.c[i], p.e_in[i], t2, p.d[i], z2[i], dz2) > b;
+        if (upper1 && lower1 && upper2 && lower2) continue;
+        // [−e, e] must not be empty: e_in = fl(e − γ) has the exact difference's sign (no FTZ).
+        if (++crossing > 1 || !(p.e_in[i] >= 0) || !((upper1 || upper2) && (lower1 || lower2))) return false;
+    }
     return true;
 }
 

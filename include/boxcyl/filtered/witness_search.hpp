@@ -11,15 +11,18 @@
 //      P − Q is the separating direction of most misses the face, axis and d × E_i tests leave (the
 //      closest pair lies on the side, P − Q is its normal), and Q a box point deep in most side hits;
 //   2. alternating projections (von Neumann) from Q between the box and the cylinder, both shrunk to
-//      0.97 of their sizes: for meeting sets the iterates approach their intersection, whose points
-//      then lie inside the full solids with margin — each box iterate (a box point exactly, by the
-//      clamp) and each cylinder iterate (a cylinder point X = C + t·d + (z − (d·z)d) with |t| ≤ H) is
-//      tested; for apart sets they approach a nearest pair, and y − x is tested as a separating
-//      direction. Certificates are tested after steps 1, 2, 4, 8 and 16.
-// Measured on bench_query's random set (bench_stages): of the 7.6% of queries stage 0 leaves, stage 0b
-// decides about three in four (every miss but about one in 60, two hits in three) at ≈0.2 µs each,
-// where stage 1 took 0.8–1.2 µs; what it leaves — disks against flat boxes, segments, near-touching
-// pairs — goes on to stage 1.
+//      0.97 of their sizes (16 steps), then to 0.9995 (4 steps: shallow overlaps): for meeting sets the
+//      iterates approach their intersection, whose points then lie inside the full solids with margin —
+//      each box iterate (a box point exactly, by the clamp) and each cylinder iterate (a cylinder point
+//      X = C + t·d + (z − (d·z)d) with |t| ≤ H) is tested; for apart sets they approach a nearest pair,
+//      and y − x is tested as a separating direction. Each iterate is also tested as the middle of a
+//      pair for the two-point certificates (semi_static::box_segment_inside, cylinder_segment_inside):
+//      the hits of disks, segments and flat boxes, whose intersection has no interior point, so that
+//      no single point has a margin. Certificates are tested after steps 1, 2, 4, 8, 16 of each phase.
+// Measured on bench_query's random set (docs/robustness.md §9): of the 310 queries (7.6%) that
+// stage 0 leaves, stage 0b decides 289; what it leaves — disks and segments against rotated boxes,
+// whose rounded frames leave no room for either certificate, and near-touching pairs — goes on to
+// stage 1.
 //
 // The thorough search, `certain_hit` (after stage 1, before exact arithmetic): alternating projections
 // from the box point nearest to C with the cylinder shrunk to s ∈ {0.75, 0.97, 0.999} (a deep point
@@ -78,6 +81,13 @@ inline double nearest_axis_parameter(const Problem& p, double h) {
     return t;
 }
 
+// The search's phases: the solids shrunk to `shrink`, `steps` alternating projections.
+struct Phase {
+    double shrink;
+    int steps;
+};
+inline constexpr Phase search_phases[] = {{0.97, 16}, {0.9995, 4}};
+
 // Stage 0b. `offset(x)` turns a box-frame point x into the witness offset v = Q − C of an exact box
 // point Q (the clamp that makes it exact).
 template <class Offset>
@@ -86,14 +96,52 @@ std::optional<bool> search_nearest(const Problem& p, const Kappas& k, Offset&& o
     // H is subnormal: then no cylinder points are tested).
     const std::optional<double> axial = semi_static::axial_parameter(p);
     const double h = axial ? p.h * (1 - 0x1p-40) : 0.0;
-    auto cylinder_point_inside = [&](const Vec3<double>& y) {
-        if (!axial) return false;
+    // A box-frame point y as a cylinder point's (t, z), |t| ≤ H' exactly; false when |z_i| > 2L (the
+    // model's bound). A segment's points are its axis points: z = 0 exactly, no radial check.
+    const bool radial = p.r != 0;
+    auto split = [&](const Vec3<double>& y, double& t, Vec3<double>& z) {
         const Vec3<double> yc = y - p.c;
-        const double t = std::clamp(dot(p.d, yc), -h, h);
-        const Vec3<double> z = yc - t * p.d;
-        const double reach = 2 * p.l;  // the model's |z_i| ≤ 2L
-        if (!(std::fabs(z[0]) <= reach && std::fabs(z[1]) <= reach && std::fabs(z[2]) <= reach)) return false;
-        return semi_static::cylinder_point_inside(p, k, t, z);
+        t = std::clamp(dot(p.d, yc), -h, h);
+        z = radial ? yc - t * p.d : Vec3<double>{0, 0, 0};
+        const double reach = 2 * p.l;
+        return std::fabs(z[0]) <= reach && std::fabs(z[1]) <= reach && std::fabs(z[2]) <= reach;
+    };
+    auto cylinder_witness = [&](const Vec3<double>& y) {
+        double t = 0;
+        Vec3<double> z;
+        return axial && split(y, t, z) && semi_static::cylinder_point_inside(p, k, t, z, radial);
+    };
+    // Two-point certificates around the iterates (semi_static::box_segment_inside and
+    // cylinder_segment_inside): the box iterate x moved both ways along the axis by half its radial
+    // room, then clamped (a projection: the axial coordinate moves monotonically, the point by ≤ δ);
+    // the cylinder iterate y moved both ways along the box axis E_m where it has the least room, by
+    // half the room of the other two, then projected onto the cylinder (r 0.97, |t| ≤ H': again the
+    // coordinate moves monotonically, the point by ≤ δ).
+    auto box_pair = [&](const Vec3<double>& x) {
+        if (!p.has_inner) return false;
+        const Vec3<double> w = x - p.c, across = w - dot(p.d, w) * p.d;
+        const double delta = 0.5 * (p.r_in - std::sqrt(dot(across, across)));
+        if (!(delta > 0)) return false;
+        return semi_static::box_segment_inside(p, k, offset(onto_box(x + delta * p.d, p.e)),
+                                               offset(onto_box(x - delta * p.d, p.e)));
+    };
+    auto cylinder_pair = [&](const Vec3<double>& y) {
+        if (!axial) return false;
+        double room[3];
+        int m = 0;
+        for (int i = 0; i < 3; ++i) {
+            room[i] = p.e_in[i] - std::fabs(y[i]);
+            if (room[i] < room[m]) m = i;
+        }
+        const double delta = 0.5 * std::min(room[(m + 1) % 3], room[(m + 2) % 3]);
+        if (!(delta > 0)) return false;
+        Vec3<double> step{0, 0, 0};
+        step[m] = delta;
+        const double r = radial ? p.r * search_phases[0].shrink : 0.0;
+        double t1 = 0, t2 = 0;
+        Vec3<double> z1, z2;
+        return split(onto_cylinder(y + step, p, h, r), t1, z1) && split(onto_cylinder(y - step, p, h, r), t2, z2) &&
+               semi_static::cylinder_segment_inside(p, k, t1, z1, t2, z2, radial);
     };
 
     const double t = nearest_axis_parameter(p, p.h);
@@ -101,18 +149,22 @@ std::optional<bool> search_nearest(const Problem& p, const Kappas& k, Offset&& o
     if (semi_static::separated_along(p, k, axis_point - q)) return false;
     if (semi_static::box_point_inside(p, k, offset(q))) return true;
 
-    constexpr double shrink = 0.97;
-    constexpr int steps = 16;
-    const Vec3<double> e{std::max(p.e_in[0], 0.0) * shrink, std::max(p.e_in[1], 0.0) * shrink,
-                         std::max(p.e_in[2], 0.0) * shrink};
-    const double hs = std::max(p.h_in, 0.0) * shrink, rs = std::max(p.r_in, 0.0) * shrink;
+    // Two phases: the sets shrunk to 0.97 (iterates deep inside the full solids), then, from where the
+    // first phase ended, to 0.9995 (shallow overlaps, a corner or an edge just inside: the solids
+    // shrunk to 0.97 no longer meet there).
     Vec3<double> x = q;
-    for (int step = 1; step <= steps; ++step) {
-        const Vec3<double> y = onto_cylinder(x, p, hs, rs);
-        x = onto_box(y, e);
-        if ((step & (step - 1)) != 0) continue;  // after steps 1, 2, 4, 8, 16
-        if (semi_static::box_point_inside(p, k, offset(x)) || cylinder_point_inside(y)) return true;
-        if (semi_static::separated_along(p, k, y - x)) return false;
+    for (const auto [shrink, steps] : search_phases) {
+        const Vec3<double> e{std::max(p.e_in[0], 0.0) * shrink, std::max(p.e_in[1], 0.0) * shrink,
+                             std::max(p.e_in[2], 0.0) * shrink};
+        const double hs = std::max(p.h_in, 0.0) * shrink, rs = std::max(p.r_in, 0.0) * shrink;
+        for (int step = 1; step <= steps; ++step) {
+            const Vec3<double> y = onto_cylinder(x, p, hs, rs);
+            x = onto_box(y, e);
+            if ((step & (step - 1)) != 0) continue;  // after steps 1, 2, 4, 8, 16
+            if (semi_static::box_point_inside(p, k, offset(x)) || cylinder_witness(y)) return true;
+            if (semi_static::separated_along(p, k, y - x)) return false;
+            if (box_pair(x) || cylinder_pair(y)) return true;
+        }
     }
     return std::nullopt;
 }
