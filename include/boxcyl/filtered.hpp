@@ -8,7 +8,7 @@
 //   93% of random queries end here.
 //   Stage 0b, searched certificates (filtered/witness_search.hpp): the axis point nearest to the box
 //   and a few alternating projections give a separating direction or a witness point, which stage
-//   0's tests (and two-point forms of them) certify; ≈93% of the queries stage 0 leaves end here.
+//   0's tests (and two-point forms of them) certify; ≈95% of the queries stage 0 leaves end here.
 //   Stage 1, the certified filter: the canonical problem (§1.3/§1.4) is built in an enclosure type N
 //   so that it encloses the exact one — first Bounded (number/bounded.hpp: a double and a running
 //   error bound, cheap), then Interval (number/interval.hpp: tighter) if that could not decide — and

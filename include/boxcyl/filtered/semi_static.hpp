@@ -120,6 +120,15 @@ template <class T>
 constexpr T chord_lower_margin(const T& ci, const T& ei, const T& t, const T& di, const T& zi, const T& dz) {
     return ei + T(ci + t * di + zi - dz * di);
 }
+// A point of an oriented box as given, P = K + Σ_m x_m·A_m for doubles x with |x_m| ≤ e_m (exactly a
+// point of the parallelepiped its axes span: no polar factor, no γ), relative to C in world
+// coordinates; kc = K − C. Stage 0b tests such points against the cylinder in world coordinates.
+template <class T>
+constexpr Vec3<T> world_offset(const Vec3<T>& kc, const std::array<Vec3<T>, 3>& a, const Vec3<T>& x) {
+    Vec3<T> v;
+    for (int j = 0; j < 3; ++j) v[j] = kc[j] + ((x[0] * a[0][j] + x[1] * a[1][j]) + x[2] * a[2][j]);
+    return v;
+}
 // A cylinder point X = C + t·d + (z − (d·z)·d) for doubles t, z with |t| ≤ H exactly and
 // |z − (d·z)d| ≤ r (that is witness_radial_margin(z, d, r) ≥ 0; nothing to check for z = 0) inside
 // the box: e_i − |c_i + t·d_i + z_i − (d·z)·d_i| ≥ 0 for every i (dz = d·z, computed once).
@@ -192,6 +201,23 @@ inline constexpr Kappas canonical_kappas = kappas_for(canonical_model);
 inline constexpr Kappas aligned_kappas = kappas_for(aligned_model);
 inline constexpr Kappas oriented_kappas = kappas_for(oriented_model);
 
+// World box points of an oriented box (world_offset): K, C exact with |K_j|, |C_j| ≤ L/2, x exact with
+// |x_m| ≤ e_m ≤ L/2, A exact with |A_mj| ≤ 1.0005 (g ≤ 2^-10), u the world unit axis (3.6ε, as d in
+// the canonical model), r and H exact. No input error but u's and no g: the point is the box's own.
+struct WorldKappas {
+    Kappa height, radial, height_signed;
+};
+constexpr WorldKappas world_kappas_for() {
+    const StaticBound k{0.5, 0}, c{0.5, 0}, a{1.0005, 0}, x{0.5, 0}, u{1, 4}, r{0.5, 0}, h{0.25, 0};
+    const Vec3<StaticBound> kc{k - c, k - c, k - c}, xs{x, x, x}, us{u, u, u};
+    const std::array<Vec3<StaticBound>, 3> axes{Vec3<StaticBound>{a, a, a}, Vec3<StaticBound>{a, a, a},
+                                                Vec3<StaticBound>{a, a, a}};
+    const Vec3<StaticBound> v = world_offset(kc, axes, xs);
+    return {kappa(witness_height_margin(v, us, h)), kappa(witness_radial_margin(v, us, r)),
+            larger(kappa(witness_top_margin(v, us, h)), kappa(witness_bottom_margin(v, us, h)))};
+}
+inline constexpr WorldKappas world_kappas = world_kappas_for();
+
 // ---- The computed problem and the decision. ----
 
 // The canonical problem as computed (box frame): miss tests use (r_out, h_out), hit tests with box
@@ -210,6 +236,7 @@ struct Problem {
     double g1 = 0, g2 = 0;      // g·L and g·L²
     double g = 0, gamma = 0;    // oriented boxes: g ≥ ‖AᵀA − I‖₂ and γ ≥ g·|e|₁
     Vec3<double> k;             // aligned boxes: the computed centre (min + max)/2, a box point
+    Vec3<double> u;             // oriented boxes: the world unit axis (for world box points)
 };
 
 // The unit axis. When the largest component m is within 2^±250, nothing below overflows or
@@ -326,6 +353,19 @@ inline bool box_segment_inside(const Problem& p, const Kappas& k, const Vec3<dou
         return false;
     const bool below_top = witness_top_margin(v1, p.d, p.h_in) > b || witness_top_margin(v2, p.d, p.h_in) > b;
     const bool above_bottom = witness_bottom_margin(v1, p.d, p.h_in) > b || witness_bottom_margin(v2, p.d, p.h_in) > b;
+    return below_top && above_bottom;
+}
+// The same two certificates for world box points of an oriented box (world_offset): tested against
+// the cylinder as given (u, r, H), so a rounded frame costs nothing — no inner cylinder, which a disk
+// or a segment does not have, and no g in the bounds.
+inline bool world_point_inside(const Problem& p, const WorldKappas& k, const Vec3<double>& v) {
+    return witness_height_margin(v, p.u, p.h) > bound1(p, k.height) && witness_radial_margin(v, p.u, p.r) > bound2(p, k.radial);
+}
+inline bool world_segment_inside(const Problem& p, const WorldKappas& k, const Vec3<double>& v1, const Vec3<double>& v2) {
+    const double b_radial = bound2(p, k.radial), b = bound1(p, k.height_signed);
+    if (!(witness_radial_margin(v1, p.u, p.r) > b_radial && witness_radial_margin(v2, p.u, p.r) > b_radial)) return false;
+    const bool below_top = witness_top_margin(v1, p.u, p.h) > b || witness_top_margin(v2, p.u, p.h) > b;
+    const bool above_bottom = witness_bottom_margin(v1, p.u, p.h) > b || witness_bottom_margin(v2, p.u, p.h) > b;
     return below_top && above_bottom;
 }
 // Cylinder points X1 = (t1, z1), X2 = (t2, z2) (exactly in the cylinder, as for cylinder_point_inside,
@@ -484,6 +524,7 @@ inline bool problem(const OrientedBox<double>& b, const Cylinder<double>& cyl, P
         p.c[i] = dot(a[i], delta);
         p.d[i] = dot(a[i], u);
     }
+    p.u = u;
     p.e = b.extents;
     // γ ≥ g·|e|₁ as a double (the product rounded, then inflated by 8ε: ≥ the exact product).
     p.gamma = g * (b.extents[0] + b.extents[1] + b.extents[2]) * (1 + 0x1p-49);
