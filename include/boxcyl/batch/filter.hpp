@@ -221,7 +221,7 @@ struct LaneResult {
     LaneMask hit;
 };
 
-inline Lanes clamp(const Lanes& x, const Lanes& lo, const Lanes& hi) { return stdx::min(stdx::max(x, lo), hi); }
+BOXCYL_BATCH_INLINE Lanes clamp(const Lanes& x, const Lanes& lo, const Lanes& hi) { return stdx::min(stdx::max(x, lo), hi); }
 
 // The certified tests at a box point w, given as v (relative to C) exact up to `ev` per component
 // (ev = 0 when v_j is within 2^-52|v_j| of w_j): with a = u·w,
@@ -233,7 +233,7 @@ inline Lanes clamp(const Lanes& x, const Lanes& lo, const Lanes& hi) { return st
 struct PointTests {
     LaneMask radial, below_top, above_bottom;
 };
-inline PointTests point_tests(const CylinderFilter& f, const Lanes v[3], const Lanes& ev) {
+BOXCYL_BATCH_INLINE PointTests point_tests(const CylinderFilter& f, const Lanes v[3], const Lanes& ev) {
     const Lanes a = f.u[0] * v[0] + f.u[1] * v[1] + f.u[2] * v[2];
     const Lanes sa = std::fabs(f.u[0]) * stdx::abs(v[0]) + std::fabs(f.u[1]) * stdx::abs(v[1]) +
                      std::fabs(f.u[2]) * stdx::abs(v[2]);
@@ -253,7 +253,7 @@ inline PointTests point_tests(const CylinderFilter& f, const Lanes v[3], const L
 // and radially inside (the distance to the axis line is convex), and a is affine along it, so one of
 // its points has |a| ≤ H: it lies in the cylinder. (One point with both is the plain case; two points
 // on either side of the end planes certify the hits of disks, h = 0, and of boxes over an end.)
-inline LaneMask certain_hit(const PointTests* p, int count) {
+BOXCYL_BATCH_INLINE LaneMask certain_hit(const PointTests* p, int count) {
     LaneMask low(false), high(false);
     for (int k = 0; k < count; ++k) {
         low = low || (p[k].radial && p[k].below_top);
@@ -265,7 +265,7 @@ inline LaneMask certain_hit(const PointTests* p, int count) {
 // Normalises n in place (n/|n|, rounded: any double vector is a valid direction) and reports the lanes
 // where that worked and |n| ≤ 1 + 2^-42 is certain: Σ n̂_j² computed ≤ 1 + 2^-42 gives
 // |n̂|² ≤ (1 + 2^-42)(1 + 2^-49) + 3·2^-1074 < (1 + 2^-42)² (r_n carries 1 + 2^-40).
-inline LaneMask normalise(Lanes n[3]) {
+BOXCYL_BATCH_INLINE LaneMask normalise(Lanes n[3]) {
     const Lanes nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
     LaneMask ok = nn >= 0x1p-600 && nn <= 0x1p600;
     Lanes s = 1;
@@ -281,7 +281,7 @@ inline LaneMask normalise(Lanes n[3]) {
 // (rounded down: (·)(1 − 2^-50)), √(|n̂|² − (u·n̂)²) ≤ √(1 + 2^-40 − p_lo²) ≤ s_up, computed with the
 // factors (1 − 2^-50) on p_lo² and (1 + 2^-50) on the root that cover its four roundings. Miss if
 // −(Ŝ⁺ + H(|p̂| + e_p) + r·s_up) > K(err_s + H(|p̂| + e_p) + r·s_up) + τ.
-inline LaneMask radial_miss(const CylinderFilter& f, const Lanes n[3], const Lanes& s_plus, const Lanes& err_s) {
+BOXCYL_BATCH_INLINE LaneMask radial_miss(const CylinderFilter& f, const Lanes n[3], const Lanes& s_plus, const Lanes& err_s) {
     Lanes p = 0, tpu = 0, sn = 0;
     for (int j = 0; j < 3; ++j) {
         p += f.u[j] * n[j];
@@ -300,7 +300,7 @@ inline LaneMask radial_miss(const CylinderFilter& f, const Lanes n[3], const Lan
 
 // Moves w (relative to C) to the nearest point of the cylinder shrunk to 7/8 (radius and half-height),
 // in plain double: only a choice of the next target, nothing is concluded from it.
-inline void into_cylinder(const CylinderFilter& f, const Lanes w[3], Lanes y[3]) {
+BOXCYL_BATCH_INLINE void into_cylinder(const CylinderFilter& f, const Lanes w[3], Lanes y[3]) {
     const Lanes a = f.u[0] * w[0] + f.u[1] * w[1] + f.u[2] * w[2];
     const Lanes ac = clamp(a, -0.875 * f.h, 0.875 * f.h);
     Lanes rho[3];
@@ -472,14 +472,17 @@ inline LaneResult aligned_lanes(const CylinderFilter& f, const Lanes lo[3], cons
     miss = miss || (ok && dir_ok && radial_miss(f, n, sp, tp));
     if (stdx::all_of(miss || hit)) return {miss || hit, hit};
     // Still undecided: alternate between the box and the shrunk cylinder, and test where it ends.
+    // Tested after steps 2, 4 and 8: a vector whose lanes are all decided stops early.
     for (int j = 0; j < 3; ++j) w[j] = v[j];
-    for (int it = 0; it < kSteps; ++it) {
+    for (int it = 1; it <= kSteps; ++it) {
         Lanes z[3];
         into_cylinder(f, w, z);
         for (int j = 0; j < 3; ++j) w[j] = clamp(z[j], dlo[j], dhi[j]);
+        if (it != 2 && it != 4 && it != kSteps) continue;
+        pt[3] = point_tests(f, w, Lanes(0));
+        hit = hit || (ok && !miss && certain_hit(pt, 4));
+        if (stdx::all_of(miss || hit)) break;
     }
-    pt[3] = point_tests(f, w, Lanes(0));
-    hit = ok && !miss && certain_hit(pt, 4);
     return {miss || hit, hit};
 }
 
@@ -565,13 +568,15 @@ inline LaneResult oriented_lanes(const CylinderFilter& f, const Lanes k[3], cons
     miss = miss || (ok && dir_ok && radial_miss(f, n, sp, tp + 4 * E));
     if (stdx::all_of(miss || hit)) return {miss || hit, hit};
     for (int j = 0; j < 3; ++j) w[j] = v[j];
-    for (int it = 0; it < kSteps; ++it) {
+    for (int it = 1; it <= kSteps; ++it) {  // as for aligned boxes: tested after steps 2, 4 and 8
         Lanes z[3];
         into_cylinder(f, w, z);
         box_point(z, w);
+        if (it != 2 && it != 4 && it != kSteps) continue;
+        pt[3] = point_tests(f, w, ev);
+        hit = hit || (ok && !miss && certain_hit(pt, 4));
+        if (stdx::all_of(miss || hit)) break;
     }
-    pt[3] = point_tests(f, w, ev);
-    hit = ok && !miss && certain_hit(pt, 4);
     return {miss || hit, hit};
 }
 
