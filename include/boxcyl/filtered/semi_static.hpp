@@ -322,9 +322,14 @@ inline bool separated_along(const Problem& p, const Kappas& k, Vec3<double> n) {
     return s > bound1(p, k.direction) && direction_gap_squared(s, n, p.d, p.r_out) > bound2(p, k.direction_sq);
 }
 // A hit: the box point Q = C + v (exactly a box point: the caller's clamp) lies in the inner cylinder.
+// The test on a cylinder given by axis a, radius r and half-height h in the offsets' frame (the inner
+// cylinder in the box frame here; the cylinder as given in world coordinates for world_point_inside).
+inline bool point_in_cylinder(const Problem& p, const Vec3<double>& a, double r, double h, const Kappa& k_height,
+                              const Kappa& k_radial, const Vec3<double>& v) {
+    return witness_height_margin(v, a, h) > bound1(p, k_height) && witness_radial_margin(v, a, r) > bound2(p, k_radial);
+}
 inline bool box_point_inside(const Problem& p, const Kappas& k, const Vec3<double>& v) {
-    return p.has_inner && witness_height_margin(v, p.d, p.h_in) > bound1(p, k.height) &&
-           witness_radial_margin(v, p.d, p.r_in) > bound2(p, k.radial);
+    return p.has_inner && point_in_cylinder(p, p.d, p.r_in, p.h_in, k.height, k.radial, v);
 }
 // A hit: the cylinder point X = C + t·d + (z − (d·z)d) lies in the box shrunk to e_in. The caller
 // guarantees |t| ≤ H exactly (axial_parameter's H'), |t| ≤ 0.26L and |z_i| ≤ 2L (the model); z = 0
@@ -346,27 +351,25 @@ inline bool cylinder_point_inside(const Problem& p, const Kappas& k, double t, c
 // inside the inner cylinder, with d·v ≤ H at one of them and d·v ≥ −H at one of them: the segment
 // Q1Q2 is in the box and radially inside, and d·v takes a value in [−H, H] on it — that point is in
 // the inner cylinder.
-inline bool box_segment_inside(const Problem& p, const Kappas& k, const Vec3<double>& v1, const Vec3<double>& v2) {
-    if (!p.has_inner) return false;
-    const double b_radial = bound2(p, k.radial), b = bound1(p, k.height_signed);
-    if (!(witness_radial_margin(v1, p.d, p.r_in) > b_radial && witness_radial_margin(v2, p.d, p.r_in) > b_radial))
-        return false;
-    const bool below_top = witness_top_margin(v1, p.d, p.h_in) > b || witness_top_margin(v2, p.d, p.h_in) > b;
-    const bool above_bottom = witness_bottom_margin(v1, p.d, p.h_in) > b || witness_bottom_margin(v2, p.d, p.h_in) > b;
+inline bool pair_in_cylinder(const Problem& p, const Vec3<double>& a, double r, double h, const Kappa& k_signed,
+                             const Kappa& k_radial, const Vec3<double>& v1, const Vec3<double>& v2) {
+    const double b_radial = bound2(p, k_radial), b = bound1(p, k_signed);
+    if (!(witness_radial_margin(v1, a, r) > b_radial && witness_radial_margin(v2, a, r) > b_radial)) return false;
+    const bool below_top = witness_top_margin(v1, a, h) > b || witness_top_margin(v2, a, h) > b;
+    const bool above_bottom = witness_bottom_margin(v1, a, h) > b || witness_bottom_margin(v2, a, h) > b;
     return below_top && above_bottom;
+}
+inline bool box_segment_inside(const Problem& p, const Kappas& k, const Vec3<double>& v1, const Vec3<double>& v2) {
+    return p.has_inner && pair_in_cylinder(p, p.d, p.r_in, p.h_in, k.height_signed, k.radial, v1, v2);
 }
 // The same two certificates for world box points of an oriented box (world_offset): tested against
 // the cylinder as given (u, r, H), so a rounded frame costs nothing — no inner cylinder, which a disk
 // or a segment does not have, and no g in the bounds.
 inline bool world_point_inside(const Problem& p, const WorldKappas& k, const Vec3<double>& v) {
-    return witness_height_margin(v, p.u, p.h) > bound1(p, k.height) && witness_radial_margin(v, p.u, p.r) > bound2(p, k.radial);
+    return point_in_cylinder(p, p.u, p.r, p.h, k.height, k.radial, v);
 }
 inline bool world_segment_inside(const Problem& p, const WorldKappas& k, const Vec3<double>& v1, const Vec3<double>& v2) {
-    const double b_radial = bound2(p, k.radial), b = bound1(p, k.height_signed);
-    if (!(witness_radial_margin(v1, p.u, p.r) > b_radial && witness_radial_margin(v2, p.u, p.r) > b_radial)) return false;
-    const bool below_top = witness_top_margin(v1, p.u, p.h) > b || witness_top_margin(v2, p.u, p.h) > b;
-    const bool above_bottom = witness_bottom_margin(v1, p.u, p.h) > b || witness_bottom_margin(v2, p.u, p.h) > b;
-    return below_top && above_bottom;
+    return pair_in_cylinder(p, p.u, p.r, p.h, k.height_signed, k.radial, v1, v2);
 }
 // Cylinder points X1 = (t1, z1), X2 = (t2, z2) (exactly in the cylinder, as for cylinder_point_inside,
 // whose conditions on t and z the caller guarantees for both): the segment X1X2 is in the cylinder.
