@@ -15,6 +15,9 @@
 #include <gmpxx.h>
 
 #include <algorithm>  // std::clamp, std::max
+#include <bit>        // std::bit_cast
+#include <cstdint>    // std::uint64_t
+#include <limits>     // infinity, NaN, denorm_min
 #include <cmath>      // std::fabs
 #include <type_traits>  // std::is_same_v
 #include <cfenv>      // rounding modes
@@ -277,6 +280,52 @@ std::optional<bool> stage0(const Case& c, bool sound = true) {
     return std::nullopt;
 }
 
+
+// The branch-free forms that stage 0 uses for speed (issue #5) give the same values as the plain
+// forms they replaced, bit for bit, on every kind of double: ±0, subnormals, ±∞, NaN.
+TEST(SemiStatic, BranchFreeHelpersKeepTheirValues) {
+    static_assert(abs_value(-2.5) == 2.5 && abs_value(0.0) == 0.0);  // still usable in constant expressions
+    const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+    const double tiny = std::numeric_limits<double>::denorm_min();
+    const std::vector<double> xs{0.0, -0.0, tiny, -tiny, 1e-300, -1.5, 2.0, 0x1p-250, -0x1p1000, inf, -inf, nan};
+    auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+    for (double x : xs) {
+        // abs_value on doubles is fabs now: −0 gives +0 (the comparison form kept −0); equal values either way.
+        EXPECT_EQ(bits(abs_value(x)), bits(std::fabs(x))) << x;
+        for (double lo : xs)
+            for (double hi : xs) {
+                if (std::isnan(lo) || std::isnan(hi) || hi < lo) continue;  // std::clamp's precondition
+                const double want = std::clamp(x, lo, hi), got = ss::clamp_to(x, lo, hi);
+                if (std::isnan(want))
+                    EXPECT_TRUE(std::isnan(got)) << x << " in [" << lo << ", " << hi << "]";
+                else
+                    EXPECT_EQ(bits(got), bits(want)) << x << " in [" << lo << ", " << hi << "]";
+            }
+    }
+}
+
+// The unit axis drops (to ±0) exactly the components below 2^-250 of the largest, kept by masks.
+TEST(SemiStatic, UnitAxisDropsOnlyTinyComponents) {
+    const Vec3<double> clean = ss::unit_axis({0, 0.6, 0.8});
+    for (double tiny : {1e-300, -1e-300, std::numeric_limits<double>::denorm_min(), std::nextafter(0x1p-250 * 0.8, 0.0)}) {
+        const Vec3<double> u = ss::unit_axis({tiny, 0.6, 0.8});
+        EXPECT_EQ(u[0], 0.0) << tiny;
+        EXPECT_EQ(u[1], clean[1]) << tiny;
+        EXPECT_EQ(u[2], clean[2]) << tiny;
+    }
+    // At the threshold (2^-250 times the largest, 0.8) the component stays, and so do ordinary ones.
+    EXPECT_GT(ss::unit_axis({0x1p-250 * 0.8, 0.6, 0.8})[0], 0.0);
+    EXPECT_LT(ss::unit_axis({0.6, -0x1p-250 * 0.8, 0.8})[1], 0.0);
+    const Vec3<double> u = ss::unit_axis({-3, 4, 0});
+    EXPECT_EQ(u[0], -0.6);
+    EXPECT_EQ(u[1], 0.8);
+    EXPECT_EQ(u[2], 0.0);
+    // Beyond 2^±250 the axis is scaled first; the same direction comes out.
+    const Vec3<double> big = ss::unit_axis({-0x1p900 * 3, 0x1p900 * 4, 1e-300});
+    EXPECT_EQ(big[0], -0.6);
+    EXPECT_EQ(big[1], 0.8);
+    EXPECT_EQ(big[2], 0.0);
+}
 
 TEST(SemiStatic, KappasAreSmall) {
     // Printed for docs/robustness.md §9; the filter is useless if they blow up (they are all < 2^11).

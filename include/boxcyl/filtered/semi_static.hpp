@@ -31,8 +31,10 @@
 // every κ_ε (one unit of ε·L^k) covers 2^214 of them.
 #pragma once
 
-#include <algorithm>  // std::max, std::clamp
+#include <algorithm>  // std::max, std::min
 #include <array>      // the oriented frame
+#include <bit>        // std::bit_cast: the unit axis's dropped components without a branch
+#include <cstdint>    // std::uint64_t
 #include <cmath>      // std::fabs, std::ilogb, std::scalbn, std::sqrt
 #include <limits>     // infinity
 #include <optional>   // undecided
@@ -47,6 +49,11 @@ namespace boxcyl::filtered::semi_static {
 
 inline constexpr double eps = 0x1p-52;  // one rounding, relative, in every rounding mode
 inline constexpr double min_scale = 0x1p-200, max_scale = 0x1p200;
+
+// x clamped to [lo, hi] (lo ≤ hi), as std::clamp but without a branch: max then min compile to
+// maxsd/minsd, where GCC 12 compiles std::clamp's nested comparison for double to branches, which
+// mispredict on random data. Same value for every input, NaN included.
+inline double clamp_to(double x, double lo, double hi) { return std::min(std::max(x, lo), hi); }
 
 // ---- The tests, written once over T: double evaluates them, StaticBound bounds their error. ----
 
@@ -200,6 +207,7 @@ constexpr Kappas kappas_for(const InputModel& m) {
 inline constexpr Kappas canonical_kappas = kappas_for(canonical_model);
 inline constexpr Kappas aligned_kappas = kappas_for(aligned_model);
 inline constexpr Kappas oriented_kappas = kappas_for(oriented_model);
+inline constexpr Kappas unsound_kappas{};  // every κ 0: `sound = false` below
 
 // World box points of an oriented box (world_offset): K, C exact with |K_j|, |C_j| ≤ L/2, x exact with
 // |x_m| ≤ e_m ≤ L/2, A exact with |A_mj| ≤ 1.0005 (g ≤ 2^-10), u the world unit axis (3.6ε, as d in
@@ -257,9 +265,15 @@ inline Vec3<double> unit_axis(const Vec3<double>& a) {
     // Scalars, not a loop over a Vec3: the loop went through memory, and reloading the three stores as
     // one vector stalled store forwarding.
     const double floor = m * 0x1p-250;  // exact: m·2^-250 ≥ 2^-500 is normal
-    x = std::fabs(x) < floor ? 0.0 : x;
-    y = std::fabs(y) < floor ? 0.0 : y;
-    z = std::fabs(z) < floor ? 0.0 : z;
+    // As masks, not `|x| < floor ? 0 : x`: GCC made those three branches, and a third of random axes
+    // have such a component (they mispredicted about once a query).
+    auto keep = [floor](double v) {
+        const std::uint64_t mask = 0 - static_cast<std::uint64_t>(std::fabs(v) >= floor);
+        return std::bit_cast<double>(std::bit_cast<std::uint64_t>(v) & mask);
+    };
+    x = keep(x);
+    y = keep(y);
+    z = keep(z);
     const double len = std::sqrt(x * x + y * y + z * z);
     return {x / len, y / len, z / len};
 }
@@ -279,7 +293,7 @@ inline bool usable_axis(const Vec3<double>& a) {
 inline std::optional<double> axial_parameter(const Problem& p) {
     if (p.h != 0 && !(p.h >= 0x1p-1000)) return std::nullopt;
     const double h = p.h * (1 - 0x1p-40);
-    return std::clamp(-dot(p.d, p.c), -h, h);
+    return clamp_to(-dot(p.d, p.c), -h, h);
 }
 // The middle of the axis segment's part inside the box (Liang–Barsky clipping of c + t·d, |t| ≤ H',
 // against |x_i| ≤ e_i), when that part is not empty; H' as in axial_parameter (call it first: it
@@ -295,7 +309,7 @@ inline std::optional<double> chord_middle(const Problem& p) {
         hi = std::min(hi, b);
     }
     if (!(lo <= hi)) return std::nullopt;
-    return std::clamp(lo * 0.5 + hi * 0.5, -h, h);
+    return clamp_to(lo * 0.5 + hi * 0.5, -h, h);
 }
 // z = s·y, y = −c − t·d (from the axis point to the box centre), s ≤ 1 such that the radial part of z
 // is about 0.9·r: any double vector would do, the radial margin is checked.
@@ -445,7 +459,7 @@ std::optional<bool> decide(const Problem& p, const Kappas& k, Witness&& witness)
 // The axis point nearest to the box centre (canonical origin), clamped to the slab: c + t·d with
 // t = clamp(−d·c, −H, H). Any point will do for a witness; this one is often deep inside.
 inline Vec3<double> axis_point_near_centre(const Vec3<double>& c, const Vec3<double>& d, double h) {
-    const double t = std::clamp(-dot(d, c), -h, h);
+    const double t = clamp_to(-dot(d, c), -h, h);
     return {c[0] + t * d[0], c[1] + t * d[1], c[2] + t * d[2]};
 }
 
@@ -477,7 +491,7 @@ inline bool problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl, 
     p.h_out = p.h_in = p.h = cyl.height * 0.5;
     p.e_in = p.e;
     p.has_inner = true;
-    p.exact_inside = std::fabs(p.c[0]) <= p.e[0] && std::fabs(p.c[1]) <= p.e[1] && std::fabs(p.c[2]) <= p.e[2];
+    p.exact_inside = (std::fabs(p.c[0]) <= p.e[0]) & (std::fabs(p.c[1]) <= p.e[1]) & (std::fabs(p.c[2]) <= p.e[2]);
     p.gamma = 0;
     p.k = {0, 0, 0};
     set_units(p, l, 0);
@@ -493,7 +507,7 @@ inline bool problem(const AlignedBox<double>& b, const Cylinder<double>& cyl, Pr
         p.k[i] = b.min[i] * 0.5 + b.max[i] * 0.5;  // in [min, max]: rounding is monotone
         p.c[i] = cyl.center[i] - p.k[i];
         p.e[i] = b.max[i] * 0.5 - b.min[i] * 0.5;
-        inside &= b.min[i] <= cyl.center[i] && cyl.center[i] <= b.max[i];
+        inside &= (b.min[i] <= cyl.center[i]) & (cyl.center[i] <= b.max[i]);  // &: no branch to mispredict
     }
     p.d = unit_axis(cyl.axis);
     p.r_out = p.r_in = p.r = cyl.radius;
@@ -553,7 +567,7 @@ inline bool problem(const OrientedBox<double>& b, const Cylinder<double>& cyl, P
 inline Vec3<double> witness_offset(const Problem& p, int w) {
     const Vec3<double> target = w == 0 ? p.c : w == 1 ? Vec3<double>{0, 0, 0} : axis_point_near_centre(p.c, p.d, p.h_in);
     Vec3<double> v;
-    for (int i = 0; i < 3; ++i) v[i] = std::clamp(target[i], -p.e[i], p.e[i]) - p.c[i];
+    for (int i = 0; i < 3; ++i) v[i] = clamp_to(target[i], -p.e[i], p.e[i]) - p.c[i];
     return v;
 }
 inline Vec3<double> witness_offset(const Problem& p, int w, const AlignedBox<double>& b, const Cylinder<double>& cyl) {
@@ -561,7 +575,7 @@ inline Vec3<double> witness_offset(const Problem& p, int w, const AlignedBox<dou
     if (w == 1) target = p.k;
     if (w == 2) target = p.k + axis_point_near_centre(p.c, p.d, p.h_in);
     Vec3<double> v;
-    for (int i = 0; i < 3; ++i) v[i] = std::clamp(target[i], b.min[i], b.max[i]) - cyl.center[i];
+    for (int i = 0; i < 3; ++i) v[i] = clamp_to(target[i], b.min[i], b.max[i]) - cyl.center[i];
     return v;
 }
 
@@ -570,13 +584,13 @@ inline Vec3<double> witness_offset(const Problem& p, int w, const AlignedBox<dou
 // On a problem computed by problem() for the same box and cylinder (the query builds it once and
 // hands it on to the witness search).
 inline std::optional<bool> decide(const Problem& p, const CanonicalBox<double>&, const Cylinder<double>&, bool sound = true) {
-    return decide(p, sound ? canonical_kappas : Kappas{}, [&p](int w) { return witness_offset(p, w); });
+    return decide(p, sound ? canonical_kappas : unsound_kappas, [&p](int w) { return witness_offset(p, w); });
 }
 inline std::optional<bool> decide(const Problem& p, const AlignedBox<double>& b, const Cylinder<double>& cyl, bool sound = true) {
-    return decide(p, sound ? aligned_kappas : Kappas{}, [&](int w) { return witness_offset(p, w, b, cyl); });
+    return decide(p, sound ? aligned_kappas : unsound_kappas, [&](int w) { return witness_offset(p, w, b, cyl); });
 }
 inline std::optional<bool> decide(const Problem& p, const OrientedBox<double>&, const Cylinder<double>&, bool sound = true) {
-    return decide(p, sound ? oriented_kappas : Kappas{}, [&p](int w) { return witness_offset(p, w); });
+    return decide(p, sound ? oriented_kappas : unsound_kappas, [&p](int w) { return witness_offset(p, w); });
 }
 
 template <class Box>
