@@ -8,11 +8,17 @@
 
 namespace boxcyl {
 
+// Tag for a Vec3 whose components are left uninitialised (trivial T only: others are default-constructed),
+// for hot structs that are filled field by field right away (filtered/semi_static.hpp's Problem).
+struct Uninitialized {};
+inline constexpr Uninitialized uninitialized{};
+
 template <class T>
 struct Vec3 {
-    std::array<T, 3> c{};
+    std::array<T, 3> c;
 
-    constexpr Vec3() = default;
+    constexpr Vec3() : c{} {}  // zero for arithmetic T
+    explicit Vec3(Uninitialized) noexcept {}
     constexpr Vec3(T x, T y, T z) : c{std::move(x), std::move(y), std::move(z)} {}
 
     constexpr T& operator[](std::size_t i) { return c[i]; }
