@@ -499,20 +499,25 @@ void print_summary(std::FILE* out, const std::vector<DataSet>& sets, long sample
                          fmt("%.0f", x->ns_median / b->ns_median).c_str(), fmt("%.0f", x->ns_median / b->ns_median).c_str(),
                          fmt("%.1e", 0.25 * b->ns_median / x->ns_median).c_str());
     }
-    // Issue #5's goal, on the random queries: FCL's GJK box–cylinder test (its default solver) / the
-    // default query ≥ 50.
-    const Entry* fcl = find("random", "fcl_libccd");
-    if (d && fcl) {
-        const Entry* indep = find("random", "fcl_indep");
+    // Issue #5's goal, on the random queries: FCL's GJK box–cylinder test / the default query ≥ 50.
+    // FCL's GJK is GST_INDEP: for a yes/no query (no contact data) FCL's default solver GST_LIBCCD
+    // does not run GJK at all but libccd's MPR (fcl/narrowphase/detail/convexity_based_algorithm/
+    // gjk_libccd-inl.h, GJKCollide: `if (!contact_points) return ccdMPRIntersect(...)`). Both are
+    // reported; the goal is judged on GST_INDEP.
+    const Entry* gjk = find("random", "fcl_indep");
+    if (d && gjk) {
+        const Entry* mpr = find("random", "fcl_libccd");
         const Entry* bd = find("boundary", "default");
-        const Entry* bf = find("boundary", "fcl_libccd");
-        const double r = fcl->ns_median / d->ns_median;
+        const Entry* bg = find("boundary", "fcl_indep");
+        const double r = gjk->ns_median / d->ns_median;
         std::fprintf(out, "\nIssue #5's goal, default query ≥ 50× faster than FCL's GJK box–cylinder test on random queries: "
-                          "**%s** (FCL / default = %s with FCL's default solver GST_LIBCCD%s; on the boundary set, where "
+                          "**%s** (FCL's GJK, solver GST_INDEP / default = %s%s; on the boundary set, where "
                           "the default query falls back to exact arithmetic, %s).\n",
                      r >= 50 ? "met" : "not met", ratio_text(r).c_str(),
-                     indep ? (", " + ratio_text(indep->ns_median / d->ns_median) + " with GST_INDEP").c_str() : "",
-                     bd && bf ? ratio_text(bf->ns_median / bd->ns_median).c_str() : "—");
+                     mpr ? ("; FCL's default solver GST_LIBCCD, whose yes/no test is libccd's MPR, not GJK: " +
+                            ratio_text(mpr->ns_median / d->ns_median)).c_str()
+                         : "",
+                     bd && bg ? ratio_text(bg->ns_median / bd->ns_median).c_str() : "—");
     }
 }
 
