@@ -45,6 +45,14 @@
 #include "boxcyl/number/static_bound.hpp"
 #include "boxcyl/number/traits.hpp"  // abs_value
 
+// problem() and the unit axis inlined into the query: GCC at -O2 kept them as calls, whose results went
+// through memory to the tests that wait for them (3–5% of the default query on bench_stages' random set).
+#if defined(__GNUC__) || defined(__clang__)
+#define BOXCYL_STAGE0_INLINE [[gnu::always_inline]] inline
+#else
+#define BOXCYL_STAGE0_INLINE inline
+#endif
+
 namespace boxcyl::filtered::semi_static {
 
 inline constexpr double eps = 0x1p-52;  // one rounding, relative, in every rounding mode
@@ -258,7 +266,7 @@ struct Problem {
 // tiny, such a component (an axis like (1e-300, 0.6, 0.8), or a subnormal one) makes every product
 // with it subnormal, which x86 runs in microcode: stage 0 took twice as long on such queries (100 vs
 // 52 ns; a third of the benchmark's random axes have one).
-inline Vec3<double> unit_axis(const Vec3<double>& a) {
+BOXCYL_STAGE0_INLINE Vec3<double> unit_axis(const Vec3<double>& a) {
     double x = a[0], y = a[1], z = a[2];
     double m = std::max(std::max(std::fabs(x), std::fabs(y)), std::fabs(z));
     if (!(m >= 0x1p-250 && m <= 0x1p250)) {
@@ -485,7 +493,7 @@ inline void set_units(Problem& p, double l, double g) {
 }
 
 // §1.2: the box is canonical, the cylinder already in its frame: nothing rounds but the unit axis.
-inline bool problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
+BOXCYL_STAGE0_INLINE bool problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.extents), largest(cyl.center), cyl.radius, cyl.height});
     if (!in_range(l) || !usable_axis(cyl.axis)) return false;
     p.c = cyl.center;
@@ -504,7 +512,7 @@ inline bool problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl, 
 }
 
 // §1.3: centre K and extents E rounded (in the model); "C in the box" is decided exactly.
-inline bool problem(const AlignedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
+BOXCYL_STAGE0_INLINE bool problem(const AlignedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.min), largest(b.max), largest(cyl.center), cyl.radius, cyl.height});
     if (!in_range(l) || !usable_axis(cyl.axis)) return false;
     bool inside = true;
@@ -530,7 +538,7 @@ inline bool problem(const AlignedBox<double>& b, const Cylinder<double>& cyl, Pr
 // are within γ3·|A_i||A_j| ≤ 3.0003ε of the exact ones (the diagonal's "− 1" is exact by Sterbenz's
 // lemma, as |A_i|² ∈ [0.5, 2]), a row sum of three rounds twice: so g ≤ row + 10ε, and
 // g = fl(row + 32ε) is an upper bound.
-inline bool problem(const OrientedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
+BOXCYL_STAGE0_INLINE bool problem(const OrientedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.center), largest(b.extents), largest(cyl.center), cyl.radius, cyl.height});
     if (!in_range(l) || !usable_axis(cyl.axis)) return false;
     const std::array<Vec3<double>, 3>& a = b.axes;
