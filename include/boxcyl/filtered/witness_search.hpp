@@ -43,6 +43,7 @@ namespace detail {
 
 using semi_static::Kappas;
 using semi_static::Problem;
+using semi_static::clamp_to;  // branch-free std::clamp
 
 // One projection onto the cylinder (centre c, unit axis d, half-height h, radius r; h, r ≥ 0) in the
 // box frame.
@@ -52,11 +53,11 @@ inline Vec3<double> onto_cylinder(const Vec3<double>& x, const Problem& p, doubl
     Vec3<double> w = y - t * p.d;
     const double rho = std::sqrt(dot(w, w));
     if (rho > r) w = (rho > 0 ? r / rho : 0.0) * w;
-    return p.c + semi_static::clamp_to(t, -h, h) * p.d + w;
+    return p.c + clamp_to(t, -h, h) * p.d + w;
 }
 // Onto the box of extents e ≥ 0.
 inline Vec3<double> onto_box(const Vec3<double>& x, const Vec3<double>& e) {
-    return {semi_static::clamp_to(x[0], -e[0], e[0]), semi_static::clamp_to(x[1], -e[1], e[1]), semi_static::clamp_to(x[2], -e[2], e[2])};
+    return {clamp_to(x[0], -e[0], e[0]), clamp_to(x[1], -e[1], e[1]), clamp_to(x[2], -e[2], e[2])};
 }
 
 // The axial parameter t ∈ [−h, h] of the axis point c + t·d nearest to the box: the root of
@@ -64,11 +65,11 @@ inline Vec3<double> onto_box(const Vec3<double>& x, const Vec3<double>& e) {
 // the six parameters where x crosses a face plane. Newton's step is exact on the current piece, so
 // a few steps (safeguarded by bisection of the bracket) reach it; any t is sound, this one is good.
 inline double nearest_axis_parameter(const Problem& p, double h) {
-    double lo = -h, hi = h, t = semi_static::clamp_to(-dot(p.d, p.c), -h, h);
+    double lo = -h, hi = h, t = clamp_to(-dot(p.d, p.c), -h, h);
     for (int it = 0; it < 8; ++it) {
         double slope = 0, curvature = 0;
         for (int i = 0; i < 3; ++i) {
-            const double x = p.c[i] + t * p.d[i], outside = x - semi_static::clamp_to(x, -p.e[i], p.e[i]);
+            const double x = p.c[i] + t * p.d[i], outside = x - clamp_to(x, -p.e[i], p.e[i]);
             slope += p.d[i] * outside;
             curvature += outside != 0 ? p.d[i] * p.d[i] : 0.0;
         }
@@ -122,7 +123,7 @@ std::optional<bool> search_nearest(const Problem& p, const Kappas& k, Offset&& o
     const bool radial = p.r != 0;
     auto split = [&](const Vec3<double>& y, double& t, Vec3<double>& z) {
         const Vec3<double> yc = y - p.c;
-        t = semi_static::clamp_to(dot(p.d, yc), -h, h);
+        t = clamp_to(dot(p.d, yc), -h, h);
         z = radial ? yc - t * p.d : Vec3<double>{0, 0, 0};
         const double reach = 2 * p.l;
         return std::fabs(z[0]) <= reach && std::fabs(z[1]) <= reach && std::fabs(z[2]) <= reach;
@@ -222,7 +223,7 @@ inline auto offset_in(const Problem& p) {
 inline auto offset_in(const Problem& p, const AlignedBox<double>& b, const Cylinder<double>& cyl) {
     return [&p, &b, &cyl](const Vec3<double>& x) {
         Vec3<double> v;
-        for (int i = 0; i < 3; ++i) v[i] = semi_static::clamp_to(p.k[i] + x[i], b.min[i], b.max[i]) - cyl.center[i];
+        for (int i = 0; i < 3; ++i) v[i] = clamp_to(p.k[i] + x[i], b.min[i], b.max[i]) - cyl.center[i];
         return v;
     };
 }
