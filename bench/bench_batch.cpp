@@ -23,6 +23,9 @@
 // themselves (stream_GB_per_s, the fastest of five passes with the same threads) and report
 // bandwidth_share_pct: the batch's throughput as a share of it, issue #5's goal being ≥ 50.
 //
+// Kernels: each batch run twice, `automatic` (boxcyl::batch_dispatch's choice for this CPU, named in
+// the label) and `compiled` (the header's portable kernel).
+//
 // Run: build-batch/bench/bench_batch --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
@@ -105,23 +108,27 @@ void scalar(benchmark::State& state, bool only_regular, bool oriented) {
 }
 
 // The batch, one call per cylinder.
-void batched(benchmark::State& state, bool only_regular, bool oriented, unsigned threads) {
+void batched(benchmark::State& state, bool only_regular, bool oriented, unsigned threads, batch::Kernel kernel) {
+    if (!batch::available(kernel)) return state.SkipWithError("kernel not available on this machine");
     const std::vector<Set>& sets = data(only_regular);
     std::vector<std::uint64_t> mask(batch::mask_words(kBoxesPerSet));
     std::size_t per_pass = 0, exact = 0;
+    batch::Kernel ran = kernel;
     for (auto _ : state) {
         per_pass = 0;
         for (const Set& s : sets) {
             const batch::Stats st =
                 oriented ? batch::intersects(s.boxes.cylinder, std::span<const OrientedBox<double>>(s.boxes.oriented),
-                                             std::span<std::uint64_t>(mask), {threads})
-                         : batch::intersects(s.boxes.cylinder, s.soa.view(), std::span<std::uint64_t>(mask), {threads});
+                                             std::span<std::uint64_t>(mask), {threads, kernel})
+                         : batch::intersects(s.boxes.cylinder, s.soa.view(), std::span<std::uint64_t>(mask), {threads, kernel});
             benchmark::DoNotOptimize(mask.data());
             per_pass += st.boxes;
             exact += st.exact_lanes;
+            ran = st.kernel;
         }
     }
     report(state, per_pass, exact);
+    state.SetLabel(batch::name(ran));
 }
 
 // The per-call cost alone: the cylinder's certified constants (batch::detail::prepare) for the 4096
@@ -129,6 +136,7 @@ void batched(benchmark::State& state, bool only_regular, bool oriented, unsigned
 void prepare(benchmark::State& state) {
     static const std::vector<Cylinder<double>> cylinders = [] {
         std::vector<Cylinder<double>> v;
+        v.reserve(4096);
         testing::CaseGenerator gen(0xb0c5c701);
         for (int i = 0; i < 4096; ++i) v.push_back(gen.next().cylinder);
         return v;
@@ -208,7 +216,7 @@ constexpr double kBytesPerBox = 6 * sizeof(double);
 double stream_pass(const Large& l, unsigned threads) {
     const unsigned t = threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
     std::vector<double> partial(std::size_t{t} * 8);  // a cache line apart
-    batch::detail::for_each_range(kLarge / 64, t, [&](std::size_t b, std::size_t e, unsigned k) {
+    batch::split::for_each_range(kLarge / 64, t, [&](std::size_t b, std::size_t e, unsigned k) {
         double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
         for (int a = 0; a < 6; ++a) {
             const double* p = l.soa.v[a].data();
@@ -225,7 +233,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-void large_batch(benchmark::State& state, bool voxels, unsigned threads) {
+void large_batch(benchmark::State& state, bool voxels, unsigned threads, batch::Kernel kernel) {
+    if (!batch::available(kernel)) return state.SkipWithError("kernel not available on this machine");
     const Large& l = large(voxels);
     // The bandwidth, in this run, with the same threads: the fastest of five streaming passes (so the
     // share below errs low).
@@ -237,10 +246,12 @@ void large_batch(benchmark::State& state, bool voxels, unsigned threads) {
     }
     std::vector<std::uint64_t> mask(batch::mask_words(kLarge));
     std::size_t exact = 0, hits = 0, second = 0;
+    batch::Kernel ran = kernel;
     const auto t0 = std::chrono::steady_clock::now();
     for (auto _ : state) {
-        const batch::Stats st = batch::intersects(l.cylinder, l.soa.view(), std::span<std::uint64_t>(mask), {threads});
+        const batch::Stats st = batch::intersects(l.cylinder, l.soa.view(), std::span<std::uint64_t>(mask), {threads, kernel});
         benchmark::DoNotOptimize(mask.data());
+        ran = st.kernel;
         exact += st.exact_lanes;
         second += st.second_pass;
     }
@@ -255,6 +266,7 @@ void large_batch(benchmark::State& state, bool voxels, unsigned threads) {
     state.counters["exact_pct"] = 100.0 * static_cast<double>(exact) / n;
     state.counters["second_pass_pct"] = 100.0 * static_cast<double>(second) / n;
     state.counters["hit_pct"] = 100.0 * static_cast<double>(hits) / kLarge;
+    state.SetLabel(batch::name(ran));
 }
 
 // The scalar exact default on the first million boxes of the same 10M set, one thread: issue #5's
@@ -280,24 +292,36 @@ void stream_sum(benchmark::State& state, bool voxels, unsigned threads) {
 
 }  // namespace
 
+// Batch runs name their kernel: `automatic` (what a program linked with boxcyl::batch_dispatch gets:
+// the widest this CPU runs, printed as the label) and `compiled` (the header's own, at this build's
+// flags: 2 doubles on plain x86-64).
+constexpr batch::Kernel kAuto = batch::Kernel::automatic, kPortable = batch::Kernel::compiled;
 BENCHMARK_CAPTURE(scalar, mixed/aligned, false, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(batched, mixed/aligned, false, false, 1u)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, mixed/aligned/automatic, false, false, 1u, kAuto)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, mixed/aligned/compiled, false, false, 1u, kPortable)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(scalar, mixed/oriented, false, true)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(batched, mixed/oriented, false, true, 1u)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, mixed/oriented/automatic, false, true, 1u, kAuto)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, mixed/oriented/compiled, false, true, 1u, kPortable)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(scalar, regular/aligned, true, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(batched, regular/aligned, true, false, 1u)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, regular/aligned/automatic, true, false, 1u, kAuto)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, regular/aligned/compiled, true, false, 1u, kPortable)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(scalar, regular/oriented, true, true)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(batched, regular/oriented, true, true, 1u)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, regular/oriented/automatic, true, true, 1u, kAuto)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, regular/oriented/compiled, true, true, 1u, kPortable)->Unit(benchmark::kMillisecond);
 BENCHMARK(prepare)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(small_batch, mixed/aligned/n_8, std::size_t{8})->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(small_batch, mixed/aligned/n_64, std::size_t{64})->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(large_batch, voxels/threads_1, true, 1u)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(large_batch, voxels/threads_all, true, 0u)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, voxels/threads_1/automatic, true, 1u, kAuto)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, voxels/threads_all/automatic, true, 0u, kAuto)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, voxels/threads_1/compiled, true, 1u, kPortable)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, voxels/threads_all/compiled, true, 0u, kPortable)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(stream_sum, voxels/threads_1, true, 1u)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(stream_sum, voxels/threads_all, true, 0u)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(large_scalar, voxels/first_1M, true)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(large_scalar, random/first_1M, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(large_batch, random/threads_1, false, 1u)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(large_batch, random/threads_all, false, 0u)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, random/threads_1/automatic, false, 1u, kAuto)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, random/threads_all/automatic, false, 0u, kAuto)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, random/threads_1/compiled, false, 1u, kPortable)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, random/threads_all/compiled, false, 0u, kPortable)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();

@@ -2,10 +2,13 @@
 // cylinder), bit for bit: random sets around CaseGenerator cylinders (segments, disks, tiny axis
 // components included), boxes one ulp from touching, degenerate boxes and cylinders, huge and tiny
 // magnitudes, float inputs (widened exactly), every batch length 0..3·lanes+1 (all remainders), both
-// outputs (bit mask, bools), and 1/2/4 threads on a large N. Every failure prints the case as
-// copy-pasteable C++ (hex floats). The filter's undecided fraction of each set is printed.
+// outputs (bit mask, bools), and 1/2/4 threads on a large N — each through every kernel this machine
+// runs (the header's own and boxcyl::batch_dispatch's AVX2 and AVX-512 ones: BatchKernels/…/compiled,
+// …/avx2, …/avx512). Every failure prints the case as copy-pasteable C++ (hex floats). The filter's
+// undecided fraction of each set is printed.
 #include <gtest/gtest.h>
 
+#include <algorithm>  // std::max
 #include <array>    // frames
 #include <cfenv>    // rounding modes
 #include <cmath>    // std::ldexp, std::nextafter
@@ -13,6 +16,8 @@
 #include <cstdint>  // std::uint64_t
 #include <cstdio>   // std::printf
 #include <memory>   // std::unique_ptr<bool[]>
+#include <ostream>  // PrintTo
+#include <stdexcept>  // unavailable kernels
 #include <random>   // voxel placement
 #include <string>   // labels
 #include <vector>   // the sets
@@ -61,6 +66,9 @@ std::vector<OrientedBox<T>> narrowed(const std::vector<OrientedBox<U>>& boxes) {
     return out;
 }
 
+// The kernel the BatchKernels tests run (set by the fixture); Kernel::compiled for the plain tests.
+batch::Kernel g_kernel = batch::Kernel::compiled;
+
 struct Count {
     long boxes = 0, exact = 0;
 };
@@ -73,10 +81,13 @@ template <class Cyl, class Boxes, class Box>
 void compare(const Cyl& cyl, const Boxes& view, const std::vector<Box>& boxes, const std::vector<bool>& want,
              std::size_t n, unsigned threads, const std::string& where, Count& count) {
     std::vector<std::uint64_t> mask(batch::mask_words(n) + 1, ~std::uint64_t{0});
-    const batch::Stats st = batch::intersects(cyl, view, std::span<std::uint64_t>(mask), {threads});
+    const batch::Options opt{threads, g_kernel};
+    const batch::Stats st = batch::intersects(cyl, view, std::span<std::uint64_t>(mask), opt);
     std::unique_ptr<bool[]> bools(new bool[n + 1]);
-    const batch::Stats sb = batch::intersects(cyl, view, std::span<bool>(bools.get(), n), {threads});
+    const batch::Stats sb = batch::intersects(cyl, view, std::span<bool>(bools.get(), n), opt);
     EXPECT_EQ(st.boxes, n);
+    EXPECT_EQ(st.kernel, g_kernel) << where;
+    EXPECT_EQ(sb.kernel, g_kernel) << where;
     EXPECT_EQ(st.exact_lanes, sb.exact_lanes) << where;
     count.boxes += static_cast<long>(n);
     count.exact += static_cast<long>(st.exact_lanes);
@@ -85,7 +96,8 @@ void compare(const Cyl& cyl, const Boxes& view, const std::vector<Box>& boxes, c
         const bool got = (mask[i / 64] >> (i % 64)) & 1u;
         if (got != want[i] || bools[i] != want[i]) {
             ++failures;
-            ADD_FAILURE() << where << " box " << i << " of " << n << " (threads " << threads << "): batch says " << got
+            ADD_FAILURE() << where << " box " << i << " of " << n << " (kernel " << batch::name(g_kernel) << ", threads "
+                          << threads << "): batch says " << got
                           << " (bools " << bools[i] << "), scalar default " << want[i] << "\n  " << show(boxes[i], as_double(cyl));
         }
     }
@@ -157,8 +169,77 @@ void print(const char* label, const Count& a, const Count& o) {
 
 TEST(Batch, EnvironmentIsDefault) { EXPECT_TRUE(fp_environment_ok()); }
 
+// Every kernel this machine runs. avx2 and avx512 come from boxcyl::batch_dispatch (linked here),
+// where it was built with them (GCC, x86-64) and the CPU has them; the list is printed.
+std::vector<batch::Kernel> runnable_kernels() {
+    std::vector<batch::Kernel> ks;
+    for (batch::Kernel k : {batch::Kernel::compiled, batch::Kernel::avx2, batch::Kernel::avx512})
+        if (batch::available(k)) ks.push_back(k);
+    return ks;
+}
+
+}  // namespace
+}  // namespace boxcyl
+
+// Kernels print by name in test names and messages (not as "4-byte object <03-00 00-00>").
+namespace boxcyl::batch {
+void PrintTo(Kernel k, std::ostream* os) { *os << name(k); }
+}  // namespace boxcyl::batch
+
+namespace boxcyl {
+namespace {
+
+class BatchKernels : public ::testing::TestWithParam<batch::Kernel> {
+protected:
+    void SetUp() override { g_kernel = GetParam(); }
+    void TearDown() override { g_kernel = batch::Kernel::compiled; }
+};
+
+INSTANTIATE_TEST_SUITE_P(Kernels, BatchKernels, ::testing::ValuesIn(runnable_kernels()),
+                         [](const ::testing::TestParamInfo<batch::Kernel>& info) { return std::string(batch::name(info.param)); });
+
+// The run-time choice: a kernel is offered exactly when this CPU runs it (GCC's own CPUID/XGETBV
+// reading, as dispatch.cpp's), `automatic` takes the widest, and asking for one this machine lacks
+// throws rather than running something else.
+TEST(Batch, KernelChoiceFollowsTheCpu) {
+    std::string ran;
+    for (batch::Kernel k : runnable_kernels()) ran += std::string(" ") + batch::name(k);
+    std::printf("[ info ] kernels run here:%s\n", ran.c_str());
+    EXPECT_TRUE(batch::available(batch::Kernel::compiled));
+    EXPECT_TRUE(batch::available(batch::Kernel::automatic));
+#if defined(BOXCYL_TEST_EXPECT_KERNELS)
+    __builtin_cpu_init();
+    const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi2");
+    const bool avx512 = avx2 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+                        __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw");
+    EXPECT_EQ(batch::available(batch::Kernel::avx2), avx2);
+    EXPECT_EQ(batch::available(batch::Kernel::avx512), avx512);
+#endif
+    const Cylinder<double> c{{0, 0, 0}, {0, 0, 1}, 1, 2};
+    const std::vector<double> lo{-0.5, 3}, hi{0.5, 4};
+    const batch::AlignedBoxes<double> boxes{lo, lo, lo, hi, hi, hi};
+    std::vector<std::uint64_t> mask(1);
+    std::size_t widest = 0;
+    for (batch::Kernel k : {batch::Kernel::compiled, batch::Kernel::avx2, batch::Kernel::avx512}) {
+        if (!batch::available(k)) {
+            EXPECT_THROW(batch::intersects(c, boxes, std::span<std::uint64_t>(mask), {1, k}), std::invalid_argument)
+                << batch::name(k);
+            continue;
+        }
+        const batch::Stats st = batch::intersects(c, boxes, std::span<std::uint64_t>(mask), {1, k});
+        EXPECT_EQ(mask[0], 1u) << batch::name(k);  // box 0 holds the centre; box 1 is above the top
+        EXPECT_EQ(st.kernel, k);
+        const std::size_t want = k == batch::Kernel::avx512 ? 8 : k == batch::Kernel::avx2 ? 4 : batch::lane_count;
+        EXPECT_EQ(st.lanes, want) << batch::name(k);
+        widest = std::max(widest, st.lanes);
+    }
+    const batch::Stats st = batch::intersects(c, boxes, std::span<std::uint64_t>(mask));
+    EXPECT_EQ(st.lanes, widest) << "automatic must take the widest kernel";
+    EXPECT_NE(st.kernel, batch::Kernel::automatic);
+}
+
 // Random sets: 150 cylinders × 150 boxes of each kind, double and float.
-TEST(Batch, RandomSetsAgreeWithScalar) {
+TEST_P(BatchKernels, RandomSetsAgreeWithScalar) {
     Count ca, co, fa, fo;
     const long sets = scaled(150);
     for (long k = 0; k < sets; ++k) {
@@ -171,11 +252,11 @@ TEST(Batch, RandomSetsAgreeWithScalar) {
     print("random sets (float inputs)", fa, fo);
 }
 
-// Every length 0..3·lanes + 1 (every remainder modulo the vector width, and short tails), from
-// several offsets into a set so that different boxes land in the tail.
-TEST(Batch, EveryLengthAndRemainder) {
+// Every length 0..3·8 + 1 (every remainder modulo each kernel's width — 2, 4 or 8 — and short tails),
+// from several offsets into a set so that different boxes land in the tail.
+TEST_P(BatchKernels, EveryLengthAndRemainder) {
     Count ca, co;
-    const std::size_t max_len = 3 * batch::lane_count + 1;
+    const std::size_t max_len = 3 * 8 + 1;  // the widest kernel's 8 lanes
     for (std::uint64_t seed : {0xBA7C5001ull, 0xBA7C5002ull, 0xBA7C5003ull}) {
         const BatchSet s = random_batch(seed, 64 + max_len);
         for (std::size_t offset : {std::size_t{0}, std::size_t{5}, std::size_t{64}}) {
@@ -189,11 +270,11 @@ TEST(Batch, EveryLengthAndRemainder) {
             }
         }
     }
-    print("every length 0..3*lanes+1", ca, co);
+    print("every length 0..3*8+1", ca, co);
 }
 
 // Boxes one ulp from touching, on both sides (40 pairs of each kind per cylinder).
-TEST(Batch, BoundaryPairsAgreeWithScalar) {
+TEST_P(BatchKernels, BoundaryPairsAgreeWithScalar) {
     Count ca, co;
     const long sets = scaled(6);
     for (long k = 0; k < sets; ++k) {
@@ -209,7 +290,7 @@ TEST(Batch, BoundaryPairsAgreeWithScalar) {
 }
 
 // Degenerate boxes and cylinders, with exactly touching configurations.
-TEST(Batch, DegenerateAndTouching) {
+TEST_P(BatchKernels, DegenerateAndTouching) {
     Count ca, co;
     const std::array<Vec3<double>, 3> id{Vec3<double>{1, 0, 0}, Vec3<double>{0, 1, 0}, Vec3<double>{0, 0, 1}};
     const std::vector<Cylinder<double>> cyls{
@@ -244,7 +325,7 @@ TEST(Batch, DegenerateAndTouching) {
 // Small cubes (voxels) whose bounding ball just touches the cylinder's lateral surface from outside
 // or inside — the threshold of the aligned filter's ball test — and a regular voxel grid around thin
 // cylinders: every answer must equal the scalar one.
-TEST(Batch, VoxelsNearTheSurface) {
+TEST_P(BatchKernels, VoxelsNearTheSurface) {
     Count ca, co;
     const std::array<Vec3<double>, 3> id{Vec3<double>{1, 0, 0}, Vec3<double>{0, 1, 0}, Vec3<double>{0, 0, 1}};
     const std::vector<Cylinder<double>> cyls{
@@ -366,7 +447,7 @@ TEST(Batch, BallPassDecisionsAreExact) {
 
 // Whole sets scaled by 2^k (exact in the normal range; the answers are the scalar's either way), and
 // sets mixing huge and tiny boxes with an ordinary cylinder.
-TEST(Batch, HugeAndTinyMagnitudes) {
+TEST_P(BatchKernels, HugeAndTinyMagnitudes) {
     Count ca, co;
     for (int k : {-1060, -1000, -700, -300, 300, 700, 1000}) {
         BatchSet s = random_batch(0xBA7C7000 + static_cast<std::uint64_t>(k + 2000), 120);
@@ -434,7 +515,7 @@ TEST(Batch, CylinderConstantsEncloseTheExactAxis) {
 }
 
 // 140,000 boxes with 1, 2 and 4 threads: the same answers as the scalar query, bit for bit.
-TEST(Batch, ThreadsGiveTheSameAnswers) {
+TEST_P(BatchKernels, ThreadsGiveTheSameAnswers) {
     const BatchSet s = random_batch(0xBA7C8000, 140000);
     const std::vector<bool> wa = scalar_answers(s.cylinder, s.aligned);
     const std::vector<bool> wo = scalar_answers(s.cylinder, s.oriented);
@@ -449,7 +530,7 @@ TEST(Batch, ThreadsGiveTheSameAnswers) {
 }
 
 // The filter's bounds are derived for every IEEE rounding mode (one-ulp error terms); check a set in each.
-TEST(Batch, RoundingModes) {
+TEST_P(BatchKernels, RoundingModes) {
     Count ca, co;
     for (int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
         const BatchSet s = random_batch(0xBA7C9000 + static_cast<std::uint64_t>(mode), 300);

@@ -51,9 +51,28 @@
 #define BOXCYL_BATCH_INLINE inline
 #endif
 
+// The instruction-set namespace: everything below depends on the vector width, so each compiled
+// instruction set gets its own namespace (inline, so that boxcyl::batch::detail::… names the includer's
+// own): kernels for AVX2 and AVX-512 (src/batch/, boxcyl::batch_dispatch) live in one program beside
+// the header's, and no symbol of one can stand in for another's at link time. The default names the
+// includer's instruction set; src/batch/ sets its own.
+#ifndef BOXCYL_BATCH_ISA
+#if defined(__AVX512F__)
+#define BOXCYL_BATCH_ISA compiled_avx512
+#elif defined(__AVX__)
+#define BOXCYL_BATCH_ISA compiled_avx
+#elif defined(__SSE2__)
+#define BOXCYL_BATCH_ISA compiled_sse2
+#else
+#define BOXCYL_BATCH_ISA compiled_generic
+#endif
+#endif
+
 namespace boxcyl::batch {
 
 namespace stdx = std::experimental;
+
+inline namespace BOXCYL_BATCH_ISA {
 
 // One vector of lanes: the widest the compile flags allow.
 using Lanes = stdx::native_simd<double>;
@@ -581,4 +600,5 @@ inline LaneResult oriented_lanes(const CylinderFilter& f, const Lanes k[3], cons
 }
 
 }  // namespace detail
+}  // namespace BOXCYL_BATCH_ISA
 }  // namespace boxcyl::batch

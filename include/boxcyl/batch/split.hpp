@@ -8,7 +8,7 @@
 #include <thread>     // std::thread
 #include <vector>     // the workers
 
-namespace boxcyl::batch::detail {
+namespace boxcyl::batch::split {
 
 // Below this many boxes per thread, starting a thread costs more than it saves (~10 µs against the
 // filter's few ns per box).
@@ -48,4 +48,4 @@ void for_each_range(std::size_t blocks, unsigned threads, Work&& work) {
         if (e) std::rethrow_exception(e);
 }
 
-}  // namespace boxcyl::batch::detail
+}  // namespace boxcyl::batch::split

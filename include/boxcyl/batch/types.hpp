@@ -1,0 +1,85 @@
+// The batch API's types (boxcyl/batch.hpp), the same for every kernel whatever instruction set it was
+// compiled for: the box arrays, the options, the statistics and the table of a kernel's entry points.
+#pragma once
+
+#include <cstddef>    // std::size_t
+#include <cstdint>    // std::uint64_t
+#include <span>       // inputs and outputs
+
+#include "boxcyl/geometry/box.hpp"
+#include "boxcyl/geometry/cylinder.hpp"
+
+namespace boxcyl::batch {
+
+// Aligned boxes as six arrays (all the same length).
+template <class T>
+struct AlignedBoxes {
+    std::span<const T> min_x, min_y, min_z, max_x, max_y, max_z;
+    std::size_t size() const { return min_x.size(); }
+};
+
+// Which SIMD kernel answers. Every kernel gives the same answers (exact: only the speed differs).
+//   automatic  the fastest this CPU runs: with boxcyl::batch_dispatch linked, AVX-512 or AVX2 when the
+//              CPU has them and they are wider than `compiled`; otherwise `compiled`.
+//   compiled   the kernel of the header itself, at the width the includer's compile flags give (2
+//              doubles with the default x86-64 flags: it runs on any x86-64).
+//   avx2       4 doubles (AVX2 + FMA), from boxcyl::batch_dispatch.
+//   avx512     8 doubles (AVX-512 F/DQ/VL/BW), from boxcyl::batch_dispatch.
+// Asking for avx2 or avx512 where it is not available throws std::invalid_argument (see available()).
+enum class Kernel { automatic, compiled, avx2, avx512 };
+
+constexpr const char* name(Kernel k) {
+    switch (k) {
+        case Kernel::automatic: return "automatic";
+        case Kernel::compiled: return "compiled";
+        case Kernel::avx2: return "avx2";
+        case Kernel::avx512: return "avx512";
+    }
+    return "?";
+}
+
+struct Options {
+    unsigned threads = 1;               // 0: std::thread::hardware_concurrency()
+    Kernel kernel = Kernel::automatic;  // which SIMD kernel (answers do not depend on it)
+};
+
+struct Stats {
+    std::size_t boxes = 0;        // N
+    std::size_t exact_lanes = 0;  // boxes the SIMD filter could not decide: answered by the scalar query
+    std::size_t second_pass = 0;  // aligned boxes that the first pass left to the whole filter (diagnostic)
+    Kernel kernel = Kernel::compiled;  // the kernel that ran (never automatic)
+    std::size_t lanes = 0;             // its vector width in doubles
+};
+
+// Words of a bit mask for n boxes.
+constexpr std::size_t mask_words(std::size_t n) { return (n + 63) / 64; }
+
+// A kernel's entry points for one element type T of the boxes (float or double): aligned or oriented
+// boxes, into a bit mask or a bool per box. Preconditions as boxcyl::batch::intersects; the lengths are
+// checked by the caller.
+template <class T>
+struct KernelEntries {
+    Stats (*aligned_mask)(const Cylinder<double>&, const AlignedBoxes<T>&, std::span<std::uint64_t>, const Options&);
+    Stats (*aligned_bools)(const Cylinder<double>&, const AlignedBoxes<T>&, std::span<bool>, const Options&);
+    Stats (*oriented_mask)(const Cylinder<double>&, std::span<const OrientedBox<T>>, std::span<std::uint64_t>,
+                           const Options&);
+    Stats (*oriented_bools)(const Cylinder<double>&, std::span<const OrientedBox<T>>, std::span<bool>, const Options&);
+};
+
+// One kernel: its name, its width, its entry points.
+struct KernelTable {
+    Kernel kernel;
+    std::size_t lanes;
+    KernelEntries<float> f;
+    KernelEntries<double> d;
+
+    template <class T>
+    const KernelEntries<T>& entries() const {
+        if constexpr (sizeof(T) == sizeof(float))
+            return f;
+        else
+            return d;
+    }
+};
+
+}  // namespace boxcyl::batch
