@@ -1,11 +1,11 @@
 # cmake -DPYTHON=... -DSOURCE_DIR=<repo> -DWORK_DIR=... -P pip_install_test.cmake  (CTest: python.pip_install)
 # Checks the documented install path: `pip install --no-build-isolation` of python/ with Debian's
 # setuptools/pybind11/numpy, here into a --target directory (the README shows a venv), then runs the
-# pytest suite against that install only. python/ and include/ are copied first, because
+# pytest suite against that install only. python/, include/ and src/ are copied first, because
 # setuptools builds in the source directory and a test must not write into the checkout.
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR}/src)
-file(COPY ${SOURCE_DIR}/include ${SOURCE_DIR}/python DESTINATION ${WORK_DIR}/src
+file(COPY ${SOURCE_DIR}/include ${SOURCE_DIR}/python ${SOURCE_DIR}/src DESTINATION ${WORK_DIR}/src
      PATTERN build EXCLUDE PATTERN *.egg-info EXCLUDE PATTERN __pycache__ EXCLUDE)
 execute_process(COMMAND ${PYTHON} -m pip install --quiet --no-build-isolation --no-deps --no-index
                         --target ${WORK_DIR}/site ${WORK_DIR}/src/python

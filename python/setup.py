@@ -1,9 +1,14 @@
 """Builds boxcyl._core with pybind11's setuptools helpers; the metadata is in pyproject.toml.
 
 The extension compiles ../include/boxcyl (header-only) with the exact backend (GMP's gmpxx), as
-boxcyl::exact does in CMake, and with -ffp-contract=off as boxcyl's own builds do.
+boxcyl::exact does in CMake, and with -ffp-contract=off as boxcyl's own builds do. With GCC on x86-64
+it also compiles ../src/batch (boxcyl::batch_dispatch in CMake: the batch kernel for AVX2 and AVX-512,
+chosen at run time), so that the batch forms use the machine's full SIMD width.
 """
+import os
+import platform
 import re
+import sysconfig
 from pathlib import Path
 
 from pybind11.setup_helpers import Pybind11Extension, build_ext
@@ -14,13 +19,23 @@ include = root / "include"
 version = re.search(r'#define BOXCYL_VERSION_STRING "([^"]+)"',
                     (include / "boxcyl" / "version.hpp").read_text()).group(1)
 
+sources = ["src/boxcyl_python.cpp"]
+macros = [("BOXCYL_HAS_EXACT", "1")]
+batch = root / "src" / "batch"
+compiler = os.environ.get("CXX") or os.environ.get("CC") or sysconfig.get_config_var("CXX") or ""
+if platform.machine() in ("x86_64", "AMD64") and "clang" not in compiler and batch.is_dir():
+    # The kernels' `#pragma GCC target` needs GCC (src/batch/kernel_avx512.cpp); they build at -O2 like
+    # Python's own flags (src/batch/CMakeLists.txt says why that matters).
+    sources += [str(batch / f) for f in ("dispatch.cpp", "kernel_avx2.cpp", "kernel_avx512.cpp")]
+    macros += [("BOXCYL_BATCH_DISPATCH", "1"), ("BOXCYL_BATCH_HAVE_AVX2", "1"), ("BOXCYL_BATCH_HAVE_AVX512", "1")]
+
 core = Pybind11Extension(
     "boxcyl._core",
-    ["src/boxcyl_python.cpp"],
+    sources,
     include_dirs=[str(include)],
-    define_macros=[("BOXCYL_HAS_EXACT", "1")],
+    define_macros=macros,
     libraries=["gmpxx", "gmp"],
-    extra_compile_args=["-ffp-contract=off"],
+    extra_compile_args=["-ffp-contract=off", "-O2", "-Wno-maybe-uninitialized"],
     cxx_std=20,
 )
 
