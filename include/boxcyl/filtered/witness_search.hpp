@@ -26,8 +26,9 @@
 // overlaps and near-touching pairs — goes on to stage 1.
 //
 // The thorough search, `certain_hit` (after stage 1, before exact arithmetic): alternating projections
-// from the box point nearest to C with the cylinder shrunk to s ∈ {0.75, 0.97, 0.999} (a deep point
-// first, a thin intersection last), 256 steps each, testing box points. Misses and near-touching hits
+// from the box point nearest to C with the cylinder shrunk by the depth (1 − s)·min(H, r) along and
+// across the axis, s ∈ {0.75, 0.97, 0.999} (a deep point first, a thin intersection last), 256 steps
+// each, testing box points. Misses and near-touching hits
 // stay undecided (the exact path answers); they cost the search's 3 × 256 steps, small beside it.
 #pragma once
 
@@ -204,7 +205,11 @@ template <class Offset>
 bool search_thorough(const Problem& p, const Kappas& k, Offset&& offset) {
     if (!p.has_inner || !(p.r_in > 0) || !(p.h_in > 0)) return false;  // no room for a margin
     for (const double s : thorough_shrinks) {
-        const double h = p.h_in * s, r = p.r_in * s;
+        // Shrunk by the same absolute depth along the axis and across it (not by the factor s on each):
+        // a flat disk (r ≫ H) or a needle (H ≫ r) keeps room in its long direction, and the points
+        // sought are those at depth δ, whichever way is shallow.
+        const double delta = (1 - s) * std::min(p.h_in, p.r_in);
+        const double h = p.h_in - delta, r = p.r_in - delta;
         Vec3<double> x = onto_box(p.c, p.e);
         for (int step = 1; step <= thorough_steps; ++step) {
             x = onto_box(onto_cylinder(x, p, h, r), p.e);
