@@ -111,6 +111,7 @@ struct CylinderFilter {
     double w[3]{};                  // ≥ the cylinder's half-width along e_j: H|u_j| + r√(1 − u_j²)
     double box_lo[3]{}, box_hi[3]{};  // the cylinder's bounding box, outward (±∞: test off)
     double kappa = 0;               // κ = 2^-44 + 2δ_u: the first pass's relative error allowance
+    double aim = 0;                 // min(H, r)/8: how deep inside the surface the hit search aims
     BallConstants ball{};           // the first pass's constants as vectors (2H, 2r, 4·R2: exact)
 };
 
@@ -218,6 +219,10 @@ CylinderFilter prepare_scalars(const Cylinder<double>& cyl) {
     f.r = cyl.radius;
     f.r2 = std::max(0.0, (r * r).lo());
     f.kappa = 0x1p-44 + 2 * f.du;
+    // The same depth along and across the axis. Shrunk by a factor instead (to 7/8 of r and of H), a
+    // flat disk (r ≫ H) lost more radial room than most overlaps at its rim have (a needle the same
+    // axially): 10–17% fewer lanes go to the scalar query on bench_batch's near-surface sets.
+    f.aim = 0.125 * std::min(f.h, f.r);
     f.usable = eligible(f.rho_u) && eligible(f.r_n) && eligible(f.w[0]) && eligible(f.w[1]) && eligible(f.w[2]);
     return f;
 }
@@ -317,15 +322,17 @@ BOXCYL_BATCH_INLINE LaneMask radial_miss(const CylinderFilter& f, const Lanes n[
     return m > kRel * (err_s + axial + across) + kAbs;
 }
 
-// Moves w (relative to C) to the nearest point of the cylinder shrunk to 7/8 (radius and half-height),
-// in plain double: only a choice of the next target, nothing is concluded from it.
+// Moves w (relative to C) to the nearest point of the cylinder shrunk by the depth f.aim (radius and
+// half-height each less by it), in plain double: only a choice of the next target, nothing is
+// concluded from it.
 BOXCYL_BATCH_INLINE void into_cylinder(const CylinderFilter& f, const Lanes w[3], Lanes y[3]) {
     const Lanes a = f.u[0] * w[0] + f.u[1] * w[1] + f.u[2] * w[2];
-    const Lanes ac = clamp(a, -0.875 * f.h, 0.875 * f.h);
+    const double h7 = f.h - f.aim;
+    const Lanes ac = clamp(a, -h7, h7);
     Lanes rho[3];
     for (int j = 0; j < 3; ++j) rho[j] = w[j] - a * f.u[j];
     const Lanes rr = rho[0] * rho[0] + rho[1] * rho[1] + rho[2] * rho[2];
-    const double r7 = 0.875 * f.r;
+    const double r7 = f.r - f.aim;
     Lanes scale = 1;
     const LaneMask outside = rr > r7 * r7;
     stdx::where(outside, scale) = r7 / stdx::sqrt(stdx::max(rr, Lanes(0x1p-1000)));
