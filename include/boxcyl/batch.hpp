@@ -39,12 +39,13 @@
 #error "boxcyl/batch.hpp answers exactly and needs the exact backend: link boxcyl::exact (GMP)"
 #endif
 
-#include <cstddef>    // std::size_t
-#include <cstdint>    // std::uint64_t
-#include <span>       // inputs and outputs
-#include <stdexcept>  // std::invalid_argument for an unavailable kernel
-#include <string>     // its message
-#include <utility>    // std::forward
+#include <cstddef>           // std::size_t
+#include <cstdint>           // std::uint64_t
+#include <initializer_list>  // the kernels `automatic` tries
+#include <span>              // inputs and outputs
+#include <stdexcept>         // std::invalid_argument for an unavailable kernel
+#include <string>            // its message
+#include <utility>           // std::forward
 
 #include "boxcyl/batch/kernel.hpp"
 #include "boxcyl/batch/types.hpp"
