@@ -47,6 +47,8 @@
 
 // problem() and the unit axis inlined into the query: GCC at -O2 kept them as calls, whose results went
 // through memory to the tests that wait for them (3–5% of the default query on bench_stages' random set).
+// The same for the small certificates and projections that stage 0b's searches call at every step
+// (witness_search.hpp): as calls, stage 0b took ≈10% longer on bench_batch's near-surface boxes.
 #if defined(__GNUC__) || defined(__clang__)
 #define BOXCYL_STAGE0_INLINE [[gnu::always_inline]] inline
 #else
@@ -291,7 +293,7 @@ BOXCYL_STAGE0_INLINE Vec3<double> unit_axis(const Vec3<double>& a) {
 }
 
 inline bool in_range(double l) { return l >= min_scale && l <= max_scale; }
-inline double largest(const Vec3<double>& v) { return std::max(std::max(std::fabs(v[0]), std::fabs(v[1])), std::fabs(v[2])); }
+BOXCYL_STAGE0_INLINE double largest(const Vec3<double>& v) { return std::max(std::max(std::fabs(v[0]), std::fabs(v[1])), std::fabs(v[2])); }
 inline bool usable_axis(const Vec3<double>& a) {
     const double m = largest(a);
     return m > 0 && m <= 0x1p1000;  // finite and non-zero (validated input is)
@@ -302,7 +304,7 @@ inline bool usable_axis(const Vec3<double>& a) {
 // The cylinder-side witnesses' axial parameter t: the axis point nearest to the box centre, clamped to
 // |t| ≤ H' where H' < H for sure (H·(1 − 2^-40) with H = fl(h/2) normal, or 0 for a disk); nullopt
 // when H is subnormal (no safe H').
-inline std::optional<double> axial_parameter(const Problem& p) {
+BOXCYL_STAGE0_INLINE std::optional<double> axial_parameter(const Problem& p) {
     if (p.h != 0 && !(p.h >= 0x1p-1000)) return std::nullopt;
     const double h = p.h * (1 - 0x1p-40);
     return clamp_to(-dot(p.d, p.c), -h, h);
@@ -310,7 +312,7 @@ inline std::optional<double> axial_parameter(const Problem& p) {
 // The middle of the axis segment's part inside the box (Liang–Barsky clipping of c + t·d, |t| ≤ H',
 // against |x_i| ≤ e_i), when that part is not empty; H' as in axial_parameter (call it first: it
 // rejects a subnormal H).
-inline std::optional<double> chord_middle(const Problem& p) {
+BOXCYL_STAGE0_INLINE std::optional<double> chord_middle(const Problem& p) {
     const double h = p.h * (1 - 0x1p-40);
     double lo = -h, hi = h;
     for (int i = 0; i < 3; ++i) {
@@ -340,7 +342,7 @@ inline double bound2(const Problem& p, const Kappa& k) { return k.eps * p.e2 + k
 
 // A miss: the direction n (any double vector; scaled here to |n_i| ≤ 1, which keeps it a double
 // vector, now exact as given) separates the outer problem.
-inline bool separated_along(const Problem& p, const Kappas& k, Vec3<double> n) {
+BOXCYL_STAGE0_INLINE bool separated_along(const Problem& p, const Kappas& k, Vec3<double> n) {
     const double m = largest(n);
     if (!(m > 0) || !(m < std::numeric_limits<double>::infinity())) return false;  // also NaN
     n = {n[0] / m, n[1] / m, n[2] / m};  // |n_i / m| ≤ 1 survives rounding (monotone)
@@ -350,7 +352,7 @@ inline bool separated_along(const Problem& p, const Kappas& k, Vec3<double> n) {
 // A hit: the box point Q = C + v (exactly a box point: the caller's clamp) lies in the inner cylinder.
 // The test on a cylinder given by axis a, radius r and half-height h in the offsets' frame (the inner
 // cylinder in the box frame here; the cylinder as given in world coordinates for world_point_inside).
-inline bool point_in_cylinder(const Problem& p, const Vec3<double>& a, double r, double h, const Kappa& k_height,
+BOXCYL_STAGE0_INLINE bool point_in_cylinder(const Problem& p, const Vec3<double>& a, double r, double h, const Kappa& k_height,
                               const Kappa& k_radial, const Vec3<double>& v) {
     return witness_height_margin(v, a, h) > bound1(p, k_height) && witness_radial_margin(v, a, r) > bound2(p, k_radial);
 }
@@ -360,7 +362,7 @@ inline bool box_point_inside(const Problem& p, const Kappas& k, const Vec3<doubl
 // A hit: the cylinder point X = C + t·d + (z − (d·z)d) lies in the box shrunk to e_in. The caller
 // guarantees |t| ≤ H exactly (axial_parameter's H'), |t| ≤ 0.26L and |z_i| ≤ 2L (the model); z = 0
 // needs no radial check.
-inline bool cylinder_point_inside(const Problem& p, const Kappas& k, double t, const Vec3<double>& z, bool radial = true) {
+BOXCYL_STAGE0_INLINE bool cylinder_point_inside(const Problem& p, const Kappas& k, double t, const Vec3<double>& z, bool radial = true) {
     if (radial && !(witness_radial_margin(z, p.d, p.r) > bound2(p, k.chord_radial))) return false;
     const double dz = dot(p.d, z), b = bound1(p, k.chord_box);
     for (int i = 0; i < 3; ++i)
@@ -377,7 +379,7 @@ inline bool cylinder_point_inside(const Problem& p, const Kappas& k, double t, c
 // inside the inner cylinder, with d·v ≤ H at one of them and d·v ≥ −H at one of them: the segment
 // Q1Q2 is in the box and radially inside, and d·v takes a value in [−H, H] on it — that point is in
 // the inner cylinder.
-inline bool pair_in_cylinder(const Problem& p, const Vec3<double>& a, double r, double h, const Kappa& k_signed,
+BOXCYL_STAGE0_INLINE bool pair_in_cylinder(const Problem& p, const Vec3<double>& a, double r, double h, const Kappa& k_signed,
                              const Kappa& k_radial, const Vec3<double>& v1, const Vec3<double>& v2) {
     const double b_radial = bound2(p, k_radial), b = bound1(p, k_signed);
     if (!(witness_radial_margin(v1, a, r) > b_radial && witness_radial_margin(v2, a, r) > b_radial)) return false;
@@ -445,9 +447,18 @@ std::optional<bool> decide(const Problem& p, const Kappas& k, Witness&& witness)
         const double inside = bound1(p, k.inside);
         if (inside_margin(c[0], e[0]) > inside && inside_margin(c[1], e[1]) > inside && inside_margin(c[2], e[2]) > inside)
             return true;
-        for (int w = 0; w < 3; ++w)
-            if (box_point_inside(p, k, witness(w))) return true;
+        if (box_point_inside(p, k, witness(0))) return true;
     }
+    // The d × E_i misses before the remaining hit tests: those cost divisions and a square root, and on
+    // bench_query's random set the edge tests decide more queries (6%) than all of them together (4%).
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, l = (i + 2) % 3;
+        const double s = edge_gap(c[j], c[l], d[j], d[l], e[j], e[l]);
+        if (s > bound1(p, k.edge) && face_gap_squared(s, p.r_out, d[j], d[l]) > bound2(p, k.edge_sq)) return false;
+    }
+    if (p.has_inner)
+        for (int w = 1; w < 3; ++w)
+            if (box_point_inside(p, k, witness(w))) return true;
     // Cylinder points X of the cylinder as given, inside the box shrunk by γ (e_in = e − γ: for a
     // rounded frame, the ideal box shrunk by γ lies inside the true one; see `Problem`).
     if (const std::optional<double> t = axial_parameter(p)) {
@@ -456,11 +467,6 @@ std::optional<bool> decide(const Problem& p, const Kappas& k, Witness&& witness)
         if (const std::optional<double> mid = chord_middle(p); mid && cylinder_point_inside(p, k, *mid, zero, false))
             return true;
         if (cylinder_point_inside(p, k, *t, towards_centre(p, *t))) return true;
-    }
-    for (int i = 0; i < 3; ++i) {
-        const int j = (i + 1) % 3, l = (i + 2) % 3;
-        const double s = edge_gap(c[j], c[l], d[j], d[l], e[j], e[l]);
-        if (s > bound1(p, k.edge) && face_gap_squared(s, p.r_out, d[j], d[l]) > bound2(p, k.edge_sq)) return false;
     }
     return std::nullopt;
 }

@@ -48,7 +48,7 @@ using semi_static::clamp_to;  // branch-free std::clamp
 
 // One projection onto the cylinder (centre c, unit axis d, half-height h, radius r; h, r ≥ 0) in the
 // box frame.
-inline Vec3<double> onto_cylinder(const Vec3<double>& x, const Problem& p, double h, double r) {
+BOXCYL_STAGE0_INLINE Vec3<double> onto_cylinder(const Vec3<double>& x, const Problem& p, double h, double r) {
     const Vec3<double> y = x - p.c;
     const double t = dot(p.d, y);
     Vec3<double> w = y - t * p.d;
@@ -57,7 +57,7 @@ inline Vec3<double> onto_cylinder(const Vec3<double>& x, const Problem& p, doubl
     return p.c + clamp_to(t, -h, h) * p.d + w;
 }
 // Onto the box of extents e ≥ 0.
-inline Vec3<double> onto_box(const Vec3<double>& x, const Vec3<double>& e) {
+BOXCYL_STAGE0_INLINE Vec3<double> onto_box(const Vec3<double>& x, const Vec3<double>& e) {
     return {clamp_to(x[0], -e[0], e[0]), clamp_to(x[1], -e[1], e[1]), clamp_to(x[2], -e[2], e[2])};
 }
 
