@@ -1,9 +1,10 @@
 // The batch kernel (boxcyl/batch.hpp): one cylinder against the boxes of one call, at the vector width
 // of batch/filter.hpp's Lanes — the SIMD filter over every vector of boxes, a second pass for aligned
-// boxes over the lanes the first left (gathered into full vectors), the scalar exact default for what
-// is still undecided, the blocks split over threads. Everything here lives in filter.hpp's
-// instruction-set namespace (BOXCYL_BATCH_ISA), so that the kernel can be compiled once per
-// instruction set into one program (src/batch/: AVX2, AVX-512) beside the header's own.
+// boxes over the lanes the first left (gathered into full vectors), for oriented boxes the hit search
+// over the lanes the first left (gathered), the scalar exact default for what is still undecided, the
+// blocks split over threads. Everything here lives in filter.hpp's instruction-set namespace (BOXCYL_BATCH_ISA), so
+// that the kernel can be compiled once per instruction set into one program (src/batch/: AVX2,
+// AVX-512) beside the header's own.
 #pragma once
 
 #include <algorithm>  // std::min
@@ -84,18 +85,28 @@ template <class T>
 struct OrientedSource {
     std::span<const OrientedBox<T>> b;
 
-    // One pass: the whole filter.
+    // First pass: the whole filter but its hit search.
     LaneResult lanes(const CylinderFilter& f, std::size_t i, std::size_t valid) const {
-        // The array of structures as 15 lane vectors, each built from its lanes' scalars.
         const OrientedBox<T>* x = b.data() + i;
-        auto lane = [x, valid](std::size_t l) -> const OrientedBox<T>& { return x[std::min(l, valid - 1)]; };
         Lanes k[3], A[3][3], e[3];
+        load([x, valid](std::size_t l) -> const OrientedBox<T>& { return x[std::min(l, valid - 1)]; }, k, A, e);
+        return oriented_lanes(f, k, A, e);
+    }
+    // Last pass: the hit search, on the boxes idx[0, count) that the first left, gathered.
+    LaneResult searched(const CylinderFilter& f, const std::size_t* idx, std::size_t count) const {
+        const OrientedBox<T>* x = b.data();
+        Lanes k[3], A[3][3], e[3];
+        load([x, idx, count](std::size_t l) -> const OrientedBox<T>& { return x[idx[std::min(l, count - 1)]]; }, k, A, e);
+        return oriented_search_lanes(f, k, A, e);
+    }
+    // The array of structures as 15 lane vectors, each built from its lanes' scalars.
+    template <class Lane>
+    BOXCYL_BATCH_INLINE static void load(Lane&& lane, Lanes k[3], Lanes A[3][3], Lanes e[3]) {
         for (int j = 0; j < 3; ++j) {
             k[j] = Lanes([&](auto l) { return static_cast<double>(lane(l).center[j]); });
             e[j] = Lanes([&](auto l) { return static_cast<double>(lane(l).extents[j]); });
             for (int a = 0; a < 3; ++a) A[a][j] = Lanes([&](auto l) { return static_cast<double>(lane(l).axes[a][j]); });
         }
-        return oriented_lanes(f, k, A, e);
     }
     OrientedBox<double> box(std::size_t i) const {
         const OrientedBox<T>& x = b[i];
@@ -123,9 +134,11 @@ BOXCYL_BATCH_INLINE LaneBits to_bits(const LaneResult& r) {
 }
 
 // Answers for boxes [begin, begin + count), count ≤ 64, as bits 0..count−1: the first pass over every
-// vector of boxes without a branch per lane; a source with a second pass (aligned boxes) sends the
-// lanes the first left undecided through it, gathered into full vectors; what is still undecided goes
-// to the scalar exact default, one box at a time.
+// vector of boxes without a branch per lane; a source with a second pass (aligned boxes: the whole
+// filter) sends the lanes the first left undecided through it, gathered into full vectors; a source
+// whose first pass stops before the hit search (oriented boxes) sends the lanes it left through that
+// search (filter.hpp's search_hits), gathered; what is still undecided goes to the scalar exact
+// default, one box at a time.
 template <class Source>
 std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, const Source& s, std::size_t begin,
                          std::size_t count, Stats& st) {
@@ -144,22 +157,29 @@ std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, c
         bits |= (b.hit & in_range) << k;
         open |= (b.open & in_range) << k;
     }
+    // A pass over the open lanes, gathered into full vectors: pass(idx, m) filters the boxes idx[0, m).
+    auto gathered_pass = [&](auto&& pass) {
+        std::size_t idx[64], n = 0;
+        for (std::uint64_t o = open; o != 0; o &= o - 1) idx[n++] = begin + static_cast<std::size_t>(std::countr_zero(o));
+        for (std::size_t g = 0; g < n; g += lane_count) {
+            const std::size_t m = std::min(lane_count, n - g);
+            const LaneResult r = pass(idx + g, m);
+            for (std::size_t l = 0; l < m; ++l)
+                if (r.decided[l]) {
+                    const std::uint64_t bit = std::uint64_t{1} << (idx[g + l] - begin);
+                    open &= ~bit;
+                    if (r.hit[l]) bits |= bit;
+                }
+        }
+    };
     if constexpr (requires(const std::size_t* p) { s.gathered(f, p, std::size_t{1}); }) {
         if (open != 0) {
             st.second_pass += static_cast<std::size_t>(std::popcount(open));
-            std::size_t idx[64], n = 0;
-            for (std::uint64_t o = open; o != 0; o &= o - 1) idx[n++] = begin + static_cast<std::size_t>(std::countr_zero(o));
-            for (std::size_t g = 0; g < n; g += lane_count) {
-                const std::size_t m = std::min(lane_count, n - g);
-                const LaneResult r = s.gathered(f, idx + g, m);
-                for (std::size_t l = 0; l < m; ++l)
-                    if (r.decided[l]) {
-                        const std::uint64_t bit = std::uint64_t{1} << (idx[g + l] - begin);
-                        open &= ~bit;
-                        if (r.hit[l]) bits |= bit;
-                    }
-            }
+            gathered_pass([&](const std::size_t* idx, std::size_t m) { return s.gathered(f, idx, m); });
         }
+    }
+    if constexpr (requires(const std::size_t* p) { s.searched(f, p, std::size_t{1}); }) {
+        if (open != 0) gathered_pass([&](const std::size_t* idx, std::size_t m) { return s.searched(f, idx, m); });
     }
     for (std::uint64_t o = open; o != 0; o &= o - 1) {
         const std::size_t i = begin + static_cast<std::size_t>(std::countr_zero(o));
