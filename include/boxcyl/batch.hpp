@@ -22,6 +22,8 @@
 // every undecided lane is answered by the scalar exact default (filtered::query). Aligned boxes take
 // two passes: a cheap one over every box (bounding boxes, then the box's centre and a ball around it:
 // §8a), then the whole filter on the few lanes it left, gathered into full vectors (batch/kernel.hpp).
+// Oriented boxes take the filter but its hit search over every box, then the search on the lanes it
+// left, gathered.
 // SIMD width (Options::kernel, types.hpp): the header's own kernel has that of std::experimental::simd's
 // native ABI under the includer's compile flags (2 doubles with the default x86-64 flags, so it runs on
 // any x86-64; -mavx2 gives 4, -march=native on an AVX-512 machine 8). Linking boxcyl::batch_dispatch
