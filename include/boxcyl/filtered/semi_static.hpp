@@ -509,7 +509,9 @@ BOXCYL_STAGE0_INLINE bool problem(const CanonicalBox<double>& b, const Cylinder<
     p.h_out = p.h_in = p.h = cyl.height * 0.5;
     p.e_in = p.e;
     p.has_inner = true;
-    p.exact_inside = (std::fabs(p.c[0]) <= p.e[0]) & (std::fabs(p.c[1]) <= p.e[1]) & (std::fabs(p.c[2]) <= p.e[2]);
+    // As ints combined by &: no branch to mispredict (and no clang -Wbitwise-instead-of-logical).
+    const int in0 = std::fabs(p.c[0]) <= p.e[0], in1 = std::fabs(p.c[1]) <= p.e[1], in2 = std::fabs(p.c[2]) <= p.e[2];
+    p.exact_inside = (in0 & in1 & in2) != 0;
     p.gamma = 0;
     p.k = {0, 0, 0};
     p.u = p.d;  // the box's frame is the world's here
@@ -521,19 +523,20 @@ BOXCYL_STAGE0_INLINE bool problem(const CanonicalBox<double>& b, const Cylinder<
 BOXCYL_STAGE0_INLINE bool problem(const AlignedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.min), largest(b.max), largest(cyl.center), cyl.radius, cyl.height});
     if (!in_range(l) || !usable_axis(cyl.axis)) return false;
-    bool inside = true;
+    int inside = 1;
     for (int i = 0; i < 3; ++i) {
         p.k[i] = b.min[i] * 0.5 + b.max[i] * 0.5;  // in [min, max]: rounding is monotone
         p.c[i] = cyl.center[i] - p.k[i];
         p.e[i] = b.max[i] * 0.5 - b.min[i] * 0.5;
-        inside &= (b.min[i] <= cyl.center[i]) & (cyl.center[i] <= b.max[i]);  // &: no branch to mispredict
+        const int above = b.min[i] <= cyl.center[i], below = cyl.center[i] <= b.max[i];
+        inside &= above & below;  // ints and &: no branch to mispredict
     }
     p.d = unit_axis(cyl.axis);
     p.r_out = p.r_in = p.r = cyl.radius;
     p.h_out = p.h_in = p.h = cyl.height * 0.5;
     p.e_in = p.e;
     p.has_inner = true;
-    p.exact_inside = inside;
+    p.exact_inside = inside != 0;
     p.gamma = 0;
     p.u = p.d;
     set_units(p, l, 0);
