@@ -352,8 +352,8 @@ BOXCYL_BATCH_INLINE void into_cylinder(const CylinderFilter& f, const Lanes w[3]
 // boxes reach it in their second pass, whose vectors are gathered already: a pass of its own gained
 // nothing there.
 template <class ToBox>
-BOXCYL_BATCH_INLINE LaneMask search_hits(const CylinderFilter& f, const LaneMask& ok, const LaneMask& done, PointTests pt[4],
-                                         const Lanes w0[3], const Lanes& ev, ToBox&& to_box) {
+BOXCYL_BATCH_INLINE LaneMask search_hits(const CylinderFilter& f, const LaneMask& ok, const LaneMask& done,
+                                         PointTests pt[4], const Lanes w0[3], const Lanes& ev, ToBox&& to_box) {
     Lanes w[3] = {w0[0], w0[1], w0[2]};
     LaneMask hit(false);
     for (int it = 1; it <= kSteps; ++it) {
@@ -527,9 +527,10 @@ inline LaneResult aligned_lanes(const CylinderFilter& f, const Lanes lo[3], cons
     miss = miss || (ok && dir_ok && radial_miss(f, n, sp, tp));
     if (stdx::all_of(miss || hit)) return {miss || hit, hit};
     // Still undecided: the hit search, on these vectors (see `search_hits`).
-    hit = hit || search_hits(f, ok, miss || hit, pt, v, Lanes(0), [&dlo, &dhi](const Lanes z[3], Lanes x[3]) BOXCYL_BATCH_LAMBDA_INLINE {
-              for (int j = 0; j < 3; ++j) x[j] = clamp(z[j], dlo[j], dhi[j]);
-          });
+    const auto to_box = [&dlo, &dhi](const Lanes z[3], Lanes x[3]) BOXCYL_BATCH_LAMBDA_INLINE {
+        for (int j = 0; j < 3; ++j) x[j] = clamp(z[j], dlo[j], dhi[j]);
+    };
+    hit = hit || search_hits(f, ok, miss || hit, pt, v, Lanes(0), to_box);
     return {miss || hit, hit};
 }
 
@@ -656,8 +657,8 @@ inline LaneResult oriented_search_lanes(const CylinderFilter& f, const Lanes k[3
     PointTests pt[4];
     oriented_start(f, o, A, e, oriented_extent(f, A, e), v, pt);
     oriented_step(f, o, A, e, v, y);
-    const LaneMask hit = search_hits(f, o.ok, LaneMask(false), pt, v, o.ev,
-                                     [&](const Lanes z[3], Lanes w[3]) BOXCYL_BATCH_LAMBDA_INLINE { oriented_point(o, A, e, z, w); });
+    const auto to_box = [&](const Lanes z[3], Lanes w[3]) BOXCYL_BATCH_LAMBDA_INLINE { oriented_point(o, A, e, z, w); };
+    const LaneMask hit = search_hits(f, o.ok, LaneMask(false), pt, v, o.ev, to_box);
     return {hit, hit};
 }
 

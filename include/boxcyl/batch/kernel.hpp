@@ -2,9 +2,9 @@
 // of batch/filter.hpp's Lanes — the SIMD filter over every vector of boxes, a second pass for aligned
 // boxes over the lanes the first left (gathered into full vectors), for oriented boxes the hit search
 // over the lanes the first left (gathered), the scalar exact default for what is still undecided, the
-// blocks split over threads. Everything here lives in filter.hpp's instruction-set namespace (BOXCYL_BATCH_ISA), so
-// that the kernel can be compiled once per instruction set into one program (src/batch/: AVX2,
-// AVX-512) beside the header's own.
+// blocks split over threads. Everything here lives in filter.hpp's instruction-set namespace
+// (BOXCYL_BATCH_ISA), so that the kernel can be compiled once per instruction set into one program
+// (src/batch/: AVX2, AVX-512) beside the header's own.
 #pragma once
 
 #include <algorithm>  // std::min

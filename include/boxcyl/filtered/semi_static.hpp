@@ -293,7 +293,9 @@ BOXCYL_STAGE0_INLINE Vec3<double> unit_axis(const Vec3<double>& a) {
 }
 
 inline bool in_range(double l) { return l >= min_scale && l <= max_scale; }
-BOXCYL_STAGE0_INLINE double largest(const Vec3<double>& v) { return std::max(std::max(std::fabs(v[0]), std::fabs(v[1])), std::fabs(v[2])); }
+BOXCYL_STAGE0_INLINE double largest(const Vec3<double>& v) {
+    return std::max(std::max(std::fabs(v[0]), std::fabs(v[1])), std::fabs(v[2]));
+}
 inline bool usable_axis(const Vec3<double>& a) {
     const double m = largest(a);
     return m > 0 && m <= 0x1p1000;  // finite and non-zero (validated input is)
@@ -352,8 +354,8 @@ BOXCYL_STAGE0_INLINE bool separated_along(const Problem& p, const Kappas& k, Vec
 // A hit: the box point Q = C + v (exactly a box point: the caller's clamp) lies in the inner cylinder.
 // The test on a cylinder given by axis a, radius r and half-height h in the offsets' frame (the inner
 // cylinder in the box frame here; the cylinder as given in world coordinates for world_point_inside).
-BOXCYL_STAGE0_INLINE bool point_in_cylinder(const Problem& p, const Vec3<double>& a, double r, double h, const Kappa& k_height,
-                              const Kappa& k_radial, const Vec3<double>& v) {
+BOXCYL_STAGE0_INLINE bool point_in_cylinder(const Problem& p, const Vec3<double>& a, double r, double h,
+                                            const Kappa& k_height, const Kappa& k_radial, const Vec3<double>& v) {
     return witness_height_margin(v, a, h) > bound1(p, k_height) && witness_radial_margin(v, a, r) > bound2(p, k_radial);
 }
 inline bool box_point_inside(const Problem& p, const Kappas& k, const Vec3<double>& v) {
@@ -362,7 +364,8 @@ inline bool box_point_inside(const Problem& p, const Kappas& k, const Vec3<doubl
 // A hit: the cylinder point X = C + t·d + (z − (d·z)d) lies in the box shrunk to e_in. The caller
 // guarantees |t| ≤ H exactly (axial_parameter's H'), |t| ≤ 0.26L and |z_i| ≤ 2L (the model); z = 0
 // needs no radial check.
-BOXCYL_STAGE0_INLINE bool cylinder_point_inside(const Problem& p, const Kappas& k, double t, const Vec3<double>& z, bool radial = true) {
+BOXCYL_STAGE0_INLINE bool cylinder_point_inside(const Problem& p, const Kappas& k, double t, const Vec3<double>& z,
+                                                bool radial = true) {
     if (radial && !(witness_radial_margin(z, p.d, p.r) > bound2(p, k.chord_radial))) return false;
     const double dz = dot(p.d, z), b = bound1(p, k.chord_box);
     for (int i = 0; i < 3; ++i)
@@ -379,8 +382,9 @@ BOXCYL_STAGE0_INLINE bool cylinder_point_inside(const Problem& p, const Kappas& 
 // inside the inner cylinder, with d·v ≤ H at one of them and d·v ≥ −H at one of them: the segment
 // Q1Q2 is in the box and radially inside, and d·v takes a value in [−H, H] on it — that point is in
 // the inner cylinder.
-BOXCYL_STAGE0_INLINE bool pair_in_cylinder(const Problem& p, const Vec3<double>& a, double r, double h, const Kappa& k_signed,
-                             const Kappa& k_radial, const Vec3<double>& v1, const Vec3<double>& v2) {
+BOXCYL_STAGE0_INLINE bool pair_in_cylinder(const Problem& p, const Vec3<double>& a, double r, double h,
+                                           const Kappa& k_signed, const Kappa& k_radial, const Vec3<double>& v1,
+                                           const Vec3<double>& v2) {
     const double b_radial = bound2(p, k_radial), b = bound1(p, k_signed);
     if (!(witness_radial_margin(v1, a, r) > b_radial && witness_radial_margin(v2, a, r) > b_radial)) return false;
     const bool below_top = witness_top_margin(v1, a, h) > b || witness_top_margin(v2, a, h) > b;
