@@ -5,10 +5,15 @@
 //   stage0/tiny_axis:  the same on the queries whose axis has a component below 1e-200 (a third)
 //   default:           boxcyl::intersects (the front door), on every query
 //   default_on_left:   boxcyl::intersects on the queries stage 0 leaves undecided only
+//   default_on_stage0 / _on_0b / _beyond_0b: the same on the queries stage 0 decides, on those stage 0b
+//                      decides, and on those both leave (stage 1 and after): the mean's budget by stage
+//   stage0/left:       semi_static::filter() on the queries it leaves (what failing every test costs)
 // Counters: ns_per_query (CPU time per query of the set timed; Google Benchmark prints it as seconds:
 // "55.1s" is 55.1 ns), left_pct (the share of the set that stage 0 leaves), left and left_after_0b (how
-// many queries of the set stage 0 leaves, and how many of those stage 0b leaves too) and, for default_on_left,
-// ns_per_random_query: what those queries add to the mean over the whole set.
+// many queries of the set stage 0 leaves, and how many of those stage 0b leaves too) and, for the
+// subsets, ns_per_random_query: what those queries add to the mean over the whole set. A subset is timed
+// on its own, so its branches are more predictable than in the mixed set: the shares add up to a little
+// less than default_query/default.
 //
 // Each pass sums the answers and hands only the sum to DoNotOptimize (per query, it forced every
 // std::optional answer through memory: stage 0 read 97 instead of 67 ns).
@@ -35,7 +40,9 @@ constexpr std::size_t kQueries = 4096;
 
 struct Sets {
     std::vector<Case> all, left;  // left: the queries stage 0 does not decide
-    std::size_t left_0b = 0;      // of those, the queries stage 0b does not decide either
+    std::vector<Case> stage0;     // the others: those stage 0 decides
+    std::vector<Case> by_0b, beyond_0b;  // the queries of `left` that stage 0b decides, and the rest
+    std::size_t left_0b = 0;      // beyond_0b.size()
     std::vector<Case> tiny;       // the queries whose axis has a non-zero component below 1e-200
 };
 
@@ -45,10 +52,16 @@ const Sets& sets() {
         boxcyl::testing::CaseGenerator gen(kRandomSeed);
         for (std::size_t i = 0; i < kQueries; ++i) r.all.push_back(gen.next());
         for (const Case& c : r.all)
-            if (!with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::semi_static::filter(b, cyl); }))
-                r.left.push_back(c);
+            (with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::semi_static::filter(b, cyl); })
+                 ? r.stage0
+                 : r.left)
+                .push_back(c);
         for (const Case& c : r.left)
-            r.left_0b += !with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::witness_search::decide(b, cyl); });
+            (with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::witness_search::decide(b, cyl); })
+                 ? r.by_0b
+                 : r.beyond_0b)
+                .push_back(c);
+        r.left_0b = r.beyond_0b.size();
         for (const Case& c : r.all)
             for (int j = 0; j < 3; ++j)
                 if (c.cylinder.axis[j] != 0 && std::fabs(c.cylinder.axis[j]) < 1e-200) {
@@ -82,8 +95,26 @@ void problem(benchmark::State& state) {
     counters(state, all.size());
 }
 
-void stage0(benchmark::State& state, bool tiny_only) {
-    const std::vector<Case>& all = tiny_only ? sets().tiny : sets().all;
+enum class Subset { all, tiny, left, stage0, by_0b, beyond_0b };
+const std::vector<Case>& subset(Subset s) {
+    switch (s) {
+        case Subset::tiny: return sets().tiny;
+        case Subset::left: return sets().left;
+        case Subset::stage0: return sets().stage0;
+        case Subset::by_0b: return sets().by_0b;
+        case Subset::beyond_0b: return sets().beyond_0b;
+        case Subset::all: break;
+    }
+    return sets().all;
+}
+// What a subset adds to the mean over the whole random set.
+void share_counter(benchmark::State& state) {
+    const double n = static_cast<double>(state.iterations()) * static_cast<double>(kQueries);
+    state.counters["ns_per_random_query"] = benchmark::Counter(n * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void stage0(benchmark::State& state, Subset which) {
+    const std::vector<Case>& all = subset(which);
     for (auto _ : state) {
         long decided = 0;
         for (const Case& c : all)
@@ -93,29 +124,30 @@ void stage0(benchmark::State& state, bool tiny_only) {
         benchmark::DoNotOptimize(decided);
     }
     counters(state, all.size());
+    if (which == Subset::left) share_counter(state);
 }
 
-void default_query(benchmark::State& state, bool left_only) {
-    const std::vector<Case>& set = left_only ? sets().left : sets().all;
+void default_query(benchmark::State& state, Subset which) {
+    const std::vector<Case>& set = subset(which);
     for (auto _ : state) {
         long hits = 0;
         for (const Case& c : set) hits += with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return intersects(b, cyl); });
         benchmark::DoNotOptimize(hits);
     }
     counters(state, set.size());
-    if (left_only) {
-        const double n = static_cast<double>(state.iterations()) * static_cast<double>(kQueries);
-        state.counters["ns_per_random_query"] =
-            benchmark::Counter(n * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-    }
+    if (which != Subset::all) share_counter(state);
 }
 
 }  // namespace
 
 BENCHMARK(problem);
-BENCHMARK_CAPTURE(stage0, all, false);
-BENCHMARK_CAPTURE(stage0, tiny_axis, true);
-BENCHMARK_CAPTURE(default_query, default, false);
-BENCHMARK_CAPTURE(default_query, default_on_left, true);
+BENCHMARK_CAPTURE(stage0, all, Subset::all);
+BENCHMARK_CAPTURE(stage0, tiny_axis, Subset::tiny);
+BENCHMARK_CAPTURE(stage0, left, Subset::left);
+BENCHMARK_CAPTURE(default_query, default, Subset::all);
+BENCHMARK_CAPTURE(default_query, default_on_left, Subset::left);
+BENCHMARK_CAPTURE(default_query, default_on_stage0, Subset::stage0);
+BENCHMARK_CAPTURE(default_query, default_on_0b, Subset::by_0b);
+BENCHMARK_CAPTURE(default_query, default_beyond_0b, Subset::beyond_0b);
 
 BENCHMARK_MAIN();
