@@ -16,8 +16,8 @@
 #include <stdexcept>  // std::invalid_argument for short outputs
 #include <vector>     // per-thread counters
 
-#if defined(__SSE2__)
-#include <immintrin.h>  // gather(): the set intrinsics (each carries its own target attribute)
+#if defined(__AVX512F__)
+#include <immintrin.h>  // gather(): _mm512_set_pd
 #endif
 
 #include "boxcyl/batch/filter.hpp"
@@ -47,21 +47,16 @@ BOXCYL_BATCH_INLINE void load(const T* p, std::size_t i, std::size_t valid, Lane
 
 // Lanes p[idx[0]], …, p[idx[count − 1]], the last repeated to fill the vector. Built from the scalars:
 // written to a buffer lane by lane and loaded as one vector, they stalled store forwarding (a tenth of
-// the 10M random-box run). On x86 by the set intrinsic of the vector's width: GCC kept the simd
-// generator constructor, the portable form, out of line in the AVX-512 kernel (a call per gathered
-// vector; 10M random boxes 10.4 → 9.2 ns per box, near-surface aligned sets 7% faster).
+// the 10M random-box run). With AVX-512 by _mm512_set_pd: GCC kept the simd generator constructor, the
+// portable form, out of line in that kernel only (a call per gathered vector; 10M random boxes 10.3 →
+// 9.2 ns per box, near-surface aligned sets 7% faster). It inlines it for SSE2 and AVX2, where the set
+// intrinsics were no faster.
 template <class T>
 BOXCYL_BATCH_INLINE Lanes gather(const T* p, const std::size_t* idx, std::size_t count) {
     auto at = [&](std::size_t l) { return static_cast<double>(p[idx[std::min(l, count - 1)]]); };
 #if defined(__AVX512F__)
     if constexpr (lane_count == 8)
         return Lanes(_mm512_set_pd(at(7), at(6), at(5), at(4), at(3), at(2), at(1), at(0)));
-#endif
-#if defined(__AVX__)
-    if constexpr (lane_count == 4) return Lanes(_mm256_set_pd(at(3), at(2), at(1), at(0)));
-#endif
-#if defined(__SSE2__)
-    if constexpr (lane_count == 2) return Lanes(_mm_set_pd(at(1), at(0)));
 #endif
     return Lanes([&](auto l) { return at(l); });
 }
