@@ -14,7 +14,7 @@ flags=(-std=c++20 -O2 -g -DNDEBUG -ffp-contract=off -Wno-maybe-uninitialized -DB
 
 # patch → the commit it was measured against (7846930: the eighth session's last; 150eaa9: the unit
 # axis's masks; 38d0555: the batch's gather). unit_axis_masks and batch_gather_intrinsics are the two
-# changes kept (7846930 → 150eaa9 and 150eaa9 → 38d0555, headers only); all others were not kept.
+# changes kept (7846930 → 150eaa9 and 150eaa9 → 9edba9f, headers only); all others were not kept.
 declare -A base=(
   [unit_axis_masks]=7846930 [batch_gather_intrinsics]=150eaa9
   [unnormalised]=7846930 [branchfree]=7846930 [onediv]=7846930 [newton4]=7846930 [newton2]=7846930
