@@ -6,8 +6,7 @@ cd "$(dirname "$0")/.."
 bash scripts/deps.sh clang-tidy libfcl-dev libbullet-dev libode-dev pkg-config
 build="${1:-build-tidy}"
 cmake -S . -B "$build" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_BUILD_TYPE=Debug -DBOXCYL_BUILD_BENCHMARKS=ON -DBOXCYL_BENCH_PEERS=ON >/dev/null
-# bench/experiments/ is built by its own script against older commits' headers, not by CMake.
-files=$(git ls-files '*.cpp' ':!bench/experiments/*')
+files=$(git ls-files '*.cpp')
 out=$(for f in $files; do clang-tidy -p "$build" --quiet "$f" 2>/dev/null; done | grep -E "warning:|error:" | sort -u || true)
 if [ -n "$out" ]; then echo "$out"; echo "clang-tidy: $(echo "$out" | wc -l) warnings"; exit 1; fi
 echo "clang-tidy: clean ($(echo "$files" | wc -w) files)"
