@@ -18,9 +18,9 @@ namespace {
 using namespace boxcyl;
 using namespace boxcyl::testing;
 
-// §2 exactly as the specification states it (cull, the 8×8 LCP of eq. (8)–(12) with b's sign fixed,
-// d² at the minimiser), without this library's robustness steps — to test the spec's claim that the
-// LCP approach is not robust in floating point.
+// The LCP method exactly as published (the slab cull, the 8×8 LCP with the sign of b corrected, d² at
+// the minimiser; docs/algorithms.md), without this library's robustness steps — to test the published
+// note's warning that the LCP approach is not robust in floating point.
 template <class U>
 std::optional<bool> spec_form_lcp(const CanonicalQuery<U>& q) {
     if (algo::box_outside_slab(q.box, q.cylinder)) return false;
@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
         boundary.push_back(b);
         want_boundary.push_back(oracle_answer(b) ? 1 : 0);
     }
-    const char* names[4] = {"§4 linear inequalities", "§3 convex hull", "§2 LCP (boxcyl)", "§2 LCP as specified"};
+    const char* names[4] = {"linear inequalities", "convex hull", "LCP (boxcyl)", "LCP as published"};
     std::printf("| algorithm | arithmetic | set | cases | wrong | rate | wrong, far from touching | solver failures |\n");
     std::printf("| --- | --- | --- | ---: | ---: | ---: | ---: | ---: |\n");
     for (int alg = 0; alg < 4; ++alg)
