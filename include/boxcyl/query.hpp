@@ -3,26 +3,30 @@
 // axis, non-negative sizes, min ≤ max, orthonormal oriented-box axes); that is asserted in debug builds.
 //
 // boxcyl::intersects(box, cylinder) — no options — is EXACT for the inputs as given: a certified
-// interval filter over §4 decides most queries, an exact fallback the rest (filtered.hpp,
-// docs/robustness.md; its cost relative to plain double is measured in docs/performance.md). It needs the exact backend (link boxcyl::exact); without it, that call fails
-// to compile, and the plain double path stays available by explicit choice:
-// intersects(box, cyl, {Algorithm::inequalities, Arithmetic::float64}).
+// interval filter over the linear-inequalities method decides most queries, an exact fallback the rest
+// (filtered.hpp, docs/robustness.md; its cost relative to plain double is measured in docs/performance.md).
+// It needs the exact backend (link boxcyl::exact); without it, that call fails to compile, and the plain
+// double path stays available by explicit choice: intersects(box, cyl, {Algorithm::inequalities,
+// Arithmetic::float64}).
 //
-// Options choose the algorithm (the specification's three, or the oracle) and the arithmetic:
-//   Algorithm::inequalities  §4 linear inequalities (default)      algo/linear_inequalities.hpp
-//   Algorithm::hull          §3 clip, project, convex hull          algo/convex_hull.hpp
-//   Algorithm::lcp           §2 convex QP as an LCP (Lemke)         algo/quadratic_programming.hpp
+// Options choose the algorithm (the three methods of docs/algorithms.md, or the oracle) and the arithmetic:
+//   Algorithm::inequalities  linear inequalities (default)         algo/linear_inequalities.hpp
+//   Algorithm::hull          clip, project, convex hull            algo/convex_hull.hpp
+//   Algorithm::lcp           convex QP as an LCP (Lemke)           algo/quadratic_programming.hpp
 //   Algorithm::oracle        the exact reference, any arithmetic    oracle/oracle.hpp
 //   Arithmetic::float32 / float64: rounded; may misjudge inputs within a tiny gap of touching.
 //   Arithmetic::exact: rationals and a + b·√d, exact for the inputs as given (exact_paths.hpp).
-//   Arithmetic::filtered (default): the exact answer; with §4 through the filter above, with §3/§2
+//   Arithmetic::filtered (default): the exact answer; with inequalities through the filter above, with
+//   hull/lcp
 //                        (which have no filter) through Arithmetic::exact.
-// §2 in float/double can fail (Lemke's method is not robust in floating point, as §2 warns); the query
-// then answers exactly instead of guessing (exact §2, or exact §3 for an oriented box whose axes are
+// The LCP method in float/double can fail (Lemke's method is not robust in floating point, as the
+// published note warns); the query then answers exactly instead of guessing (exact LCP, or the exact
+// convex-hull method for an oriented box whose axes are
 // not exactly orthonormal). The oracle and Arithmetic::exact need
 // the exact backend (link boxcyl::exact, which defines BOXCYL_HAS_EXACT); without it, choosing them
-// throws std::invalid_argument. Exact §2/§4 on an oriented box whose axes are not exactly
-// orthonormal throw std::domain_error (see exact_paths.hpp); §3 and the oracle handle any box.
+// throws std::invalid_argument. The exact LCP and linear-inequalities methods on an oriented box whose
+// axes are not exactly orthonormal throw std::domain_error (see exact_paths.hpp); the convex-hull
+// method and the oracle handle any box.
 #pragma once
 
 #include <cassert>    // debug-build precondition checks
@@ -116,7 +120,8 @@ bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
         const std::optional<bool> r = opt.arithmetic == Arithmetic::float32 ? rounded<float>(opt.algorithm, box, cyl)
                                                                           : rounded<double>(opt.algorithm, box, cyl);
         if (r) return *r;
-        // Only §2 can fail (its Lemke solver in floating point); answer exactly rather than guess.
+        // Only the LCP method can fail (its Lemke solver in floating point); answer exactly rather than
+        // guess.
     }
 #if defined(BOXCYL_HAS_EXACT)
     // The default first, before any rational is built: the filter decides most queries in plain double,
@@ -131,9 +136,10 @@ bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
     const auto ecyl = to_exact(cast<double>(cyl));
     if (opt.algorithm == Algorithm::oracle) return oracle::intersects(ebox, ecyl);
     if (opt.arithmetic != Arithmetic::exact) {
-        // A rounded §2 failed, or §2/§3 were asked for an exact answer (filtered). Answer with the exact
-        // algorithm where its canonical frame is exact, else with exact §3 (any parallelepiped): only an
-        // explicit Arithmetic::exact request for §2/§4 refuses a frame it cannot treat exactly.
+        // A rounded LCP method failed, or lcp/hull were asked for an exact answer (filtered). Answer with
+        // the exact algorithm where its canonical frame is exact, else with the exact convex-hull method
+        // (any parallelepiped): only an explicit Arithmetic::exact request for lcp/inequalities refuses
+        // a frame it cannot treat exactly.
         if constexpr (std::is_same_v<Box, OrientedBox<T>>)
             if (!exact::detail::exactly_orthonormal(ebox)) return exact::intersects(exact::Method::hull, ebox, ecyl);
     }

@@ -1,6 +1,7 @@
-// Does the cylinder's axis segment meet the box? The shared early exit of §4.1.1, §4.2.1 and §4.3.1
-// (eqs. (17), (21), …: there stated per direction class, with sign-normalised dᵢ > 0, and §4.1.1
-// leaving the axial interval to the §1.6 cull), written once as a 1-D interval intersection for any
+// Does the cylinder's axis segment meet the box? The shared early exit of the linear-inequalities
+// method's three direction classes (the published note's eqs. (17), (21), …: there stated per direction
+// class, with sign-normalised dᵢ > 0, and the two-zero-component case leaving the axial interval to the
+// slab cull), written once as a 1-D interval intersection for any
 // direction, so that it stands on its own without the cull.
 //
 // The segment C + tD, −h/2 ≤ t ≤ h/2, meets the canonical box |xᵢ| ≤ eᵢ iff some t satisfies

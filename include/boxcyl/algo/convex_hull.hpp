@@ -1,9 +1,9 @@
-// §3 Algorithm based on convex hulls: clip the box by the two slab planes, project the clipped
+// The convex-hull method (docs/algorithms.md): clip the box by the two slab planes, project the clipped
 // polyhedron onto the plane through C orthogonal to D, take the 2-D convex hull of the projected
 // points and compare the distance from the projected centre (the origin) to that polygon with r.
 // One implementation, on any parallelepiped in world coordinates (convex_hull(Parallelepiped, ...));
-// the canonical-box overload (the spec's setting) calls it. Oriented boxes go through it directly,
-// without the §1.4 rotation, so their answer is exact for the axes exactly as given.
+// the canonical-box overload (the published note's setting) calls it. Oriented boxes go through it directly,
+// without the oriented-box rotation, so their answer is exact for the axes exactly as given.
 //
 // Generic over T (float, double, Rational, QFRational). Nothing here normalises or takes a square
 // root: the projection uses two unnormalised, orthogonal vectors of equal length L (see
@@ -27,7 +27,7 @@
 
 namespace boxcyl::algo {
 
-// The 2-D part of §3: points, Andrew's monotone chain, and the distance from the origin to the hull.
+// The 2-D part: points, Andrew's monotone chain, and the distance from the origin to the hull.
 namespace hull2d {
 
 template <class T>
@@ -88,8 +88,9 @@ std::vector<Point<T>> monotone_chain(std::vector<Point<T>> p) {
 //   λ* <= 0 : nearest point a,   λ* >= 1 : nearest point b,
 //   else     : δ² = (a × v)²/|v|²   (Lagrange: |a|²|v|² − (a·v)² = (a × v)²),
 // and the last test is (a × v)² <= r2·|v|² (|v|² > 0 there).
-// (Spec Listing 6's ComputeSqrDistance writes the foot as Q0 + s·direction with s = direction·Q0/|v|²;
-// the foot is Q0 − s·direction. Not used here; the form above is derived independently.)
+// (The published note's Listing 6 ComputeSqrDistance writes the foot as Q0 + s·direction with
+// s = direction·Q0/|v|²; the foot is Q0 − s·direction. Not used here; the form above is derived
+// independently.)
 template <class T>
 bool segment_within(const Point<T>& a, const Point<T>& b, const std::type_identity_t<T>& r2) {
     const T vx = b.x - a.x, vy = b.y - a.y;
@@ -127,8 +128,8 @@ bool origin_within(const std::vector<Point<T>>& hull, const std::type_identity_t
 
 }  // namespace hull2d
 
-// The projection of §3 without normalisation. k is the axis with the smallest |d_k| (chosen by
-// comparisons; |d_k|² <= 1/3 for a unit D, so W0 ≠ 0), and
+// The projection along the axis without normalisation. k is the axis with the smallest |d_k| (chosen
+// by comparisons; |d_k|² <= 1/3 for a unit D, so W0 ≠ 0), and
 //   W0 = D × U_k,   W1 = D × W0  (= d_k·D − U_k for |D| = 1).
 // W0 ⊥ D, W1 ⊥ D, W0 ⊥ W1, and |W1| = |D|·|W0| = |W0| = L with L² = |W0|² = 1 − d_k² >= 2/3 (the sum
 // of the other two squared components, exact for exact T). So (W0·Y, W1·Y) is L times the
@@ -154,12 +155,12 @@ ProjectionFrame<T> projection_frame(const Vec3<T>& d) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// §3 on any parallelepiped, in world coordinates.
+// The convex-hull method on any parallelepiped, in world coordinates.
 //
 // Why not the canonical frame: an oriented box is the solid { K + Σ ξᵢAᵢ : |ξᵢ| ≤ eᵢ } for the axes
-// exactly as given, and rounded rotations are never exactly orthonormal, so the §1.4 reduction to a
-// canonical box (a rotation only for orthonormal axes) changes the solid. Nothing in §3 needs the
-// canonical frame: it needs the 8 vertices, the 12 edges and the slab, and those exist for any
+// exactly as given, and rounded rotations are never exactly orthonormal, so the oriented-box reduction
+// to a canonical box (a rotation only for orthonormal axes) changes the solid. Nothing in this method
+// needs the canonical frame: it needs the 8 vertices, the 12 edges and the slab, and those exist for any
 // parallelepiped (even a degenerate one).
 
 // The solid { center + Σ ξᵢ·half_edges[i] : |ξᵢ| ≤ 1 }. Any three vectors: linearly dependent ones and
@@ -177,7 +178,7 @@ struct Parallelepiped {
 //               Parallelepiped<Rational> p = algo::as_parallelepiped(to_exact(box));   // aᵢ exact
 //               Parallelepiped<QFRational> q{lift(p.center), {lift(p.half_edges[0]), ...}};
 //             or lift the OrientedBox<Rational> to OrientedBox<QFRational> first (same numbers).
-//   Aligned:  K = (min + max)/2, aᵢ = ((max − min)/2)·Uᵢ, as in §1.3 (exact for exact T).
+//   Aligned:  K = (min + max)/2, aᵢ = ((max − min)/2)·Uᵢ, as in the reduction (exact for exact T).
 //   Canonical: K = 0, aᵢ = eᵢ·Uᵢ.
 // Call these qualified (algo::as_parallelepiped): oracle.hpp declares boxcyl::as_parallelepiped for
 // Rational boxes, returning OrientedBox<Rational>, which ADL would prefer for T = Rational.
@@ -218,9 +219,9 @@ T abs_of(const T& x) {
     return x < T(0) ? T(-x) : x;
 }
 
-// §1.6 for a parallelepiped. The axial parameter of K + Σ ξᵢaᵢ is t = D·(K − C) + Σ ξᵢ(D·aᵢ) with
-// |ξᵢ| ≤ 1, so the box projects to [γ − ρ, γ + ρ] with
-//   γ = D·(K − C)   (= −D·C of §1.6 when K = 0: same convention),   ρ = Σ |D·aᵢ|,
+// The slab cull for a parallelepiped. The axial parameter of K + Σ ξᵢaᵢ is
+// t = D·(K − C) + Σ ξᵢ(D·aᵢ) with |ξᵢ| ≤ 1, so the box projects to [γ − ρ, γ + ρ] with
+//   γ = D·(K − C)   (= −D·C of the slab cull when K = 0: same convention),   ρ = Σ |D·aᵢ|,
 // and it misses the slab [−h/2, h/2] iff |γ| > ρ + h/2 (strict: touching the slab plane is not
 // outside).
 template <class T>
@@ -231,8 +232,8 @@ bool outside_slab(const T& gamma, const std::array<T, 3>& da, const T& half_heig
 
 }  // namespace detail::ch
 
-// True when the parallelepiped lies strictly outside the cylinder's slab (§1.6 generalised), so it
-// cannot meet the cylinder. Same frame for both; |cyl.direction| == 1.
+// True when the parallelepiped lies strictly outside the cylinder's slab (the slab cull generalised), so
+// it cannot meet the cylinder. Same frame for both; |cyl.direction| == 1.
 template <class T>
 bool parallelepiped_outside_slab(const Parallelepiped<T>& box, const UnitCylinder<T>& cyl) {
     const Vec3<T>& d = cyl.direction;
@@ -240,17 +241,17 @@ bool parallelepiped_outside_slab(const Parallelepiped<T>& box, const UnitCylinde
     return detail::ch::outside_slab(T(dot(d, Vec3<T>(box.center - cyl.center))), da, cyl.half_height);
 }
 
-// §3 for any parallelepiped; box and cylinder in the same frame. Precondition: |cyl.direction| == 1
-// (exactly, for exact T); radius, half height >= 0.
+// The convex-hull method for any parallelepiped; box and cylinder in the same frame. Precondition:
+// |cyl.direction| == 1 (exactly, for exact T); radius, half height >= 0.
 //
 // Why it is right for any half-edges, degenerate ones included: with ξ ∈ [−1, 1]³ the box point is the
 // affine image X(ξ) = K + Σ ξᵢaᵢ, and t(ξ) = D·(X(ξ) − C) is affine in ξ. So P = {ξ in the cube, −h/2 ≤
 // t(ξ) ≤ h/2} is a polytope of ξ-space whose vertices are cube vertices in the slab and strict
 // crossings of cube edges with the two planes (t constant on an edge never crosses strictly); the
 // projection of box ∩ slab is the image of P under a linear map, i.e. the hull of the images of
-// those points. Rank of the aᵢ plays no part. Then, as in §3: inside the slab the nearest axis point
-// lies on the axis segment, so the cylinder meets the box iff the projected centre is within r of the
-// hull.
+// those points. Rank of the aᵢ plays no part. Then, as for the canonical box: inside the slab the
+// nearest axis point lies on the axis segment, so the cylinder meets the box iff the projected centre is
+// within r of the hull.
 template <class T>
 bool convex_hull(const Parallelepiped<T>& box, const UnitCylinder<T>& cyl) {
     const Vec3<T>& d = cyl.direction;
@@ -260,7 +261,7 @@ bool convex_hull(const Parallelepiped<T>& box, const UnitCylinder<T>& cyl) {
     // Axial parameter t(ξ) = γ + Σ ξᵢ·(D·aᵢ).
     const T gamma = dot(d, g);
     const std::array<T, 3> da{dot(d, box.half_edges[0]), dot(d, box.half_edges[1]), dot(d, box.half_edges[2])};
-    // §1.6: a box outside the slab cannot meet the cylinder; afterwards box ∩ slab is non-empty.
+    // Slab cull: a box outside the slab cannot meet the cylinder; afterwards box ∩ slab is non-empty.
     if (detail::ch::outside_slab(gamma, da, hh)) return false;
 
     // Projection onto the plane ⊥ D in frame units (see projection_frame): linear, so the projection
@@ -287,7 +288,7 @@ bool convex_hull(const Parallelepiped<T>& box, const UnitCylinder<T>& cyl) {
         q[s] = {qx, qy};
     }
 
-    // §3: S = box vertices inside or on the slab, plus crossings of the 12 box edges with the slab
+    // S = box vertices inside or on the slab, plus crossings of the 12 box edges with the slab
     // planes t = ±h/2; projected. The projection is linear, so a crossing at λ along edge (a, b)
     // projects to q_a + λ(q_b − q_a).
     std::vector<hull2d::Point<T>> pts;
@@ -321,8 +322,8 @@ bool convex_hull(const Parallelepiped<T>& box, const UnitCylinder<T>& cyl) {
     return hull2d::origin_within(hull, r2);
 }
 
-// §3 on the canonical box (cylinder in the box frame): the canonical box is the parallelepiped with
-// K = 0, aᵢ = eᵢUᵢ, so this is the world-frame algorithm above — one implementation.
+// The convex-hull method on the canonical box (cylinder in the box frame): the canonical box is the
+// parallelepiped with K = 0, aᵢ = eᵢUᵢ, so this is the world-frame algorithm above — one implementation.
 template <class T>
 bool convex_hull(const CanonicalBox<T>& box, const UnitCylinder<T>& cyl) {
     return algo::convex_hull(algo::as_parallelepiped(box), cyl);

@@ -1,4 +1,4 @@
-// A linear complementarity problem (LCP) solver for §2: Lemke's complementary pivoting method.
+// A linear complementarity problem (LCP) solver for the LCP method: Lemke's complementary pivoting method.
 //
 // The LCP(q, M): find z ∈ ℝᴺ with  z ≥ 0,  w = q + M z ≥ 0,  zᵀw = 0.
 //
@@ -7,7 +7,7 @@
 // starts from the almost-complementary basis {w with one wᵣ replaced by z0} that makes all basic
 // values ≥ 0, and then pivots: the variable entering is always the complement of the one that just
 // left, until z0 leaves (a solution) or the entering column has no positive entry (ray termination).
-// For copositive-plus M (every positive-semidefinite M, e.g. the KKT matrix of a convex QP, §2
+// For copositive-plus M (every positive-semidefinite M, e.g. the KKT matrix of a convex QP, the LCP method
 // eq. (8)) ray termination proves the LCP infeasible; a feasible LCP is always solved.
 //
 // Degeneracy: ties in the ratio test are broken by the lexicographic minimum-ratio rule on the rows of

@@ -1,28 +1,32 @@
-// §4 Algorithm based on linear inequalities: the test-intersection query of a canonical box and a
-// finite cylinder (Listing 7 and the functions it calls). Generic over T: exact for exact T (the
+// The linear-inequalities method (docs/algorithms.md): the test-intersection query of a canonical box
+// and a finite cylinder. "Listing N" and "eq. (N)" below are the numbered pseudocode listings and
+// equations of the published note (Eberly, "Intersection of a Box and a Finite Cylinder"); this is
+// Listing 7 and the functions it calls. Generic over T: exact for exact T (the
 // direction must then be exactly unit length, e.g. QFRational from to_unit(Cylinder<Rational>, field)),
 // rounded for float/double.
 //
-// What differs from the specification's pseudocode, and why (each derived again; the exact oracle
+// What differs from the published pseudocode, and why (each derived again; the exact oracle
 // judges):
-//  * Division-free decisions. The axis early exits (§4.2.1, §4.3.1) compare the bounds of eq. (21)/(32)
-//    pairwise after multiplying by the positive direction components, and the extreme-edge distances
-//    (§4.3.3) are compared as cross-multiplied squares. No orthonormal basis is built (Listing 6's
-//    ComputeOrthonormalBasis normalises with a sqrt): with unit D the vector q = D × (P − C) has the
-//    length and the inner products of the projection of P − C onto the plane ⊥ D.
+//  * Division-free decisions. The axis early exits (one and no zero components) compare the bounds of
+//    eq. (21)/(32) pairwise after multiplying by the positive direction components, and the
+//    extreme-edge distances are compared as cross-multiplied squares. No orthonormal basis is built
+//    (Listing 6's ComputeOrthonormalBasis normalises with a sqrt): with unit D the vector
+//    q = D × (P − C) has the length and the inner products of the projection of P − C onto the plane
+//    ⊥ D.
 //  * The only divisions left are by a positive direction component, to locate the point where a box
-//    edge crosses a slab plane. For subnormal or tiny components the spec's quotients overflow to ±inf
+//    edge crosses a slab plane. For subnormal or tiny components the note's quotients overflow to ±inf
 //    (Listing 4's sMin/sMax, Listing 6's endpoints such as E1 − s3p/D1) and the endpoints then feed
-//    inf − inf and 0·inf (= NaN) into the distance, or a point far outside the box; the spec's claim
+//    inf − inf and 0·inf (= NaN) into the distance, or a point far outside the box; the note's claim
 //    that overflow is harmless holds only for the max/min comparisons of Listings 3 and 5. Here every
 //    such coordinate is clamped to its box edge: in exact arithmetic the clamp never acts (the
 //    crossing lies on the edge whenever the candidate is non-empty); in floating point it keeps every
 //    candidate point on the box, finite, and within rounding of the slab plane.
-//  * Spec errors fixed (see the comments at each place): Listing 4 sMin for tHat > h/2 uses e1 + c1
-//    (must be e0 + c0, eq. 26 is right); Listing 6 ComputeSqrDistance has the wrong sign of the
-//    closest-point parameter; Listing 6 blocks (U2, −D) and (D, −U2) divide by D[2] in lower/upper
-//    (must be D[1], eq. 65/68 are right); Listing 6 block (U1, −D) has −E[1] in one P1 (must be +E[1],
-//    eq. 60 is right) and a misplaced brace; eq. (57) X(μ) divides by d1 (must be d2).
+//  * Errors of the note fixed (see the comments at each place; docs/algorithms.md lists them with
+//    their confirmation): Listing 4 sMin for tHat > h/2 uses e1 + c1 (must be e0 + c0, eq. 26 is
+//    right); Listing 6 ComputeSqrDistance has the wrong sign of the closest-point parameter; Listing 6
+//    blocks (U2, −D) and (D, −U2) divide by D[2] in lower/upper (must be D[1], eq. 65/68 are right);
+//    Listing 6 block (U1, −D) has −E[1] in one P1 (must be +E[1], eq. 60 is right) and a misplaced
+//    brace; eq. (57) X(μ) divides by d1 (must be d2).
 #pragma once
 
 #include <array>    // index permutations, vertex projections
@@ -50,8 +54,9 @@ T clamp_sym(const T& x, const T& e) {
     return clamp_symmetric(x, e);
 }
 
-// §4.2.1 eq. (21) / §4.3.1 eq. (32): does the axis segment C + tD, |t| ≤ H, stay inside the slabs
-// |x_a| ≤ e_a for every a in idx (all with d_a > 0) for some common t? The condition
+// Axis early exit, eq. (21) (one zero component) / eq. (32) (none): does the axis segment C + tD,
+// |t| ≤ H, stay inside the slabs |x_a| ≤ e_a for every a in idx (all with d_a > 0) for some common t?
+// The condition
 //     max_a{(−e_a − c_a)/d_a, −H} ≤ min_b{(e_b − c_b)/d_b, H}
 // holds iff every term of the max is ≤ every term of the min. Multiplying each pairwise comparison by
 // the positive d's makes it division-free (no overflow to ±inf for subnormal d, exact for exact T).
@@ -73,14 +78,15 @@ bool axis_meets_slabs(const std::array<int, N>& idx, const Vec3<T>& C, const Vec
     return true;
 }
 
-// §4.3.3: is the distance from the axis line {C + τD} to the segment [P0, P1] at most r (r2 = r²)?
+// No zero component, one candidate: is the distance from the axis line {C + τD} to the segment
+// [P0, P1] at most r (r2 = r²)?
 // With unit D, q = D × (P − C) is the projection of P − C onto the plane ⊥ D turned by 90° about D,
 // so |q|² is the squared distance of P to the axis line and q·q' are the projected inner products.
 // w = q1 − q0 = D × (P1 − P0). Nearest point of the projected segment to the origin:
 //   q1·w ≤ 0 → q1;  q0·w ≥ 0 → q0;  otherwise interior, dist² = |q0 × w|²/|w|², and
 //   q0 × w = (D·((P0 − C) × (P1 − P0)))·D (identity (a×b)×(a×c) = (a·(b×c))a), so
 //   dist² ≤ r² ⇔ (D·((P0 − C) × (P1 − P0)))² ≤ r²|w|² — no division.
-// (Spec Listing 6 ComputeSqrDistance computes closest = Q0 + s·direction with s = +Q0·dir/|dir|²;
+// (The note's Listing 6 ComputeSqrDistance computes closest = Q0 + s·direction with s = +Q0·dir/|dir|²;
 // the minimiser of |Q0 + s·dir| is s = −Q0·dir/|dir|²: sign error, fixed here by not dividing.)
 // A degenerate segment (P0 == P1, w == 0) takes the first branch.
 template <class T>
@@ -97,15 +103,16 @@ bool segment_within(const Vec3<T>& P0, const Vec3<T>& P1, const Vec3<T>& C, cons
     return n * n <= r2 * dot(w, w);
 }
 
-// The §4.3.2 data for D in the open first octant: vertex projections t_v = D·(V_v − C) with the vertex
-// numbering of eq. (1)–(2) (v = b2b1b0, x_i = +e_i when bit i is set), and the two kinds of candidate
-// extreme edges. Both return whether the candidate is within distance r of the axis.
+// The no-zero-component case's data for D in the open first octant: vertex projections
+// t_v = D·(V_v − C) with the vertex numbering of eq. (1)–(2) (v = b2b1b0, x_i = +e_i when bit i is
+// set), and the two kinds of candidate extreme edges. Both return whether the candidate is within
+// distance r of the axis.
 template <class T>
 class ExtremeEdges {
 public:
     ExtremeEdges(const Vec3<T>& C, const Vec3<T>& D, const T& r, const T& H, const Vec3<T>& E)
         : C_(C), D_(D), E_(E), H_(H), r2_(r * r) {
-        // Spec Listing 6: t_v = ±d0e0 ± d1e1 ± d2e2 − D·C.
+        // As in Listing 6: t_v = ±d0e0 ± d1e1 ± d2e2 − D·C.
         const T dc = dot(D, C);
         const std::array<T, 3> de{D[0] * E[0], D[1] * E[1], D[2] * E[2]};
         for (int v = 0; v < 8; ++v) {
@@ -118,8 +125,8 @@ public:
     // Pair (U_i, −U_j): the box edge x_i = +e_i, x_j = −e_j running along axis k from vertex a
     // (x_k = −e_k) to b = a + 2e_k·U_k, clipped to the slab |t| ≤ H (eq. 34–51). t grows by d_k per
     // unit of x_k, so it is non-empty iff t_a ≤ H and t_b ≥ −H; below −H the lower end moves to
-    // x_k = −e_k + (−H − t_a)/d_k (spec: −e_k − s_a⁺/d_k), above H the upper end to
-    // x_k = e_k − (t_b − H)/d_k (spec: e_k − s_b⁻/d_k).
+    // x_k = −e_k + (−H − t_a)/d_k (the note: −e_k − s_a⁺/d_k), above H the upper end to
+    // x_k = e_k − (t_b − H)/d_k (the note: e_k − s_b⁻/d_k).
     bool box_edge(int i, [[maybe_unused]] int j, int k) const {
         const int a = 1 << i;  // x_i = +e_i; bits j and k clear: x_j = −e_j, x_k = −e_k
         const int b = a | (1 << k);
@@ -152,8 +159,8 @@ private:
 
     // Where t = τ crosses the path m → mid = m + 2e_j·U_j → mid + 2e_k·U_k (t_m ≤ τ ≤ t_M given).
     // First edge (x_j from −e_j): x_j = −e_j + (τ − t_m)/d_j; second (x_k from −e_k):
-    // x_k = −e_k + (τ − t_mid)/d_k. (Spec eq. 54: e.g. (e0, e1 − s3⁺/d1, −e2) for s3⁺ ≥ 0 is the first
-    // form measured from the other end of the edge; the same point.)
+    // x_k = −e_k + (τ − t_mid)/d_k. (The note's eq. 54: e.g. (e0, e1 − s3⁺/d1, −e2) for s3⁺ ≥ 0 is
+    // the first form measured from the other end of the edge; the same point.)
     Vec3<T> cut_point(int m, int j, int k, const T& tau) const {
         const int mid = m | (1 << j);
         if (!(t_[mid] < tau)) {
@@ -174,19 +181,19 @@ private:
     std::array<T, 8> t_;
 };
 
-// ---- The three direction classes (after the reflections of §4.4 every d_i ≥ 0). ----
+// ---- The three direction classes (after the reflections of the top level every d_i ≥ 0). ----
 
-// §4.1 (Listing 2): d_{i0} > 0 (= 1), d_{i1} = d_{i2} = 0. With the §1.6 cull done the box meets the
-// slab, and the polyhedron projects along D onto the whole rectangle |x_{i1}| ≤ e_{i1},
+// Two zero components (Listing 2): d_{i0} > 0 (= 1), d_{i1} = d_{i2} = 0. With the slab cull done the
+// box meets the slab, and the polyhedron projects along D onto the whole rectangle |x_{i1}| ≤ e_{i1},
 // |x_{i2}| ≤ e_{i2}; the axis projects to the point (c_{i1}, c_{i2}).
 template <class T>
 bool two_zero_components(const std::array<int, 3>& i, const Vec3<T>& C, const T& r, const Vec3<T>& E) {
     const T abs_c1 = abs_of(C[i[1]]), abs_c2 = abs_of(C[i[2]]);
     const T& e1 = E[i[1]];
     const T& e2 = E[i[2]];
-    // §4.1.1 eq. (17): the axis meets the box.
+    // Axis early exit, eq. (17): the axis meets the box.
     if (abs_c1 <= e1 && abs_c2 <= e2) return true;
-    // §4.1.2: squared distance from the point to the rectangle.
+    // Squared distance from the point to the rectangle.
     T sqr_distance(0);
     if (e1 < abs_c1) {
         const T delta = abs_c1 - e1;
@@ -199,7 +206,7 @@ bool two_zero_components(const std::array<int, 3>& i, const Vec3<T>& C, const T&
     return sqr_distance <= r * r;
 }
 
-// §4.2.1 (Listing 3): the axis early exit when d_{i0}, d_{i1} > 0 and d_{i2} = 0.
+// One zero component (Listing 3): the axis early exit when d_{i0}, d_{i1} > 0 and d_{i2} = 0.
 template <class T>
 bool axis_meets_box_one_zero(const std::array<int, 3>& i, const Vec3<T>& C, const Vec3<T>& D, const T& H,
                              const Vec3<T>& E) {
@@ -207,22 +214,22 @@ bool axis_meets_box_one_zero(const std::array<int, 3>& i, const Vec3<T>& C, cons
     return axis_meets_slabs(std::array<int, 2>{i[0], i[1]}, C, D, H, E);
 }
 
-// §4.2 (Listing 4): d_{i0}, d_{i1} > 0, d_{i2} = 0. Write 0, 1, 2 for i0, i1, i2. In the plane of
+// One zero component (Listing 4): d_{i0}, d_{i1} > 0, d_{i2} = 0. Write 0, 1, 2 for i0, i1, i2. In the plane of
 // x0, x1 use t = d0·y0 + d1·y1 and s = d1·y0 − d0·y1 (y = x − c; a rotation since d0² + d1² = 1). The
 // projection of the polyhedron is [s_min, s_max] × [−e2, e2]; the axis projects to (0, c2).
 //   s_min: s is least over the rectangle at the vertex V = (−e0, +e1), t̂ = t(V) (eq. 26). If t̂ is in
 //     [−H, H] then s_min = s(V). If t̂ < −H the minimum over the slab is where t = −H crosses the edge
 //     x1 = e1 (t grows with x0 there); if t̂ > H, where t = H crosses the edge x0 = −e0 (t falls as
-//     x1 falls). The crossings exist because the §1.6 cull passed.
+//     x1 falls). The crossings exist because the slab cull passed.
 //   s_max: likewise at W = (+e0, −e1), t̄ = t(W) (eq. 27), edges x0 = +e0 (t < −H) and x1 = −e1 (t > H).
 // The crossing coordinate is clamped to its edge (no-op in exact arithmetic; in floating point it
 // stops (t − H)/d from overflowing for tiny d and keeps the point on the box).
-// Spec Listing 4 for t̂ > h/2 has sMin = −(e1pc1 + d0·hDiv2)/d1; eq. (26) and the derivation
+// The note's Listing 4 for t̂ > h/2 has sMin = −(e1pc1 + d0·hDiv2)/d1; eq. (26) and the derivation
 // s = d1(−e0 − c0) − d0(x1 − c1) with d1(x1 − c1) = H − d0(−e0 − c0) give −(e0 + c0 + d0·H)/d1.
 template <class T>
 bool one_zero_component(const std::array<int, 3>& i, const Vec3<T>& C, const Vec3<T>& D, const T& r, const T& H,
                         const Vec3<T>& E) {
-    if (axis_meets_box_one_zero(i, C, D, H, E)) return true;  // §4.2.1
+    if (axis_meets_box_one_zero(i, C, D, H, E)) return true;  // axis early exit
 
     const T& c0 = C[i[0]];
     const T& c1 = C[i[1]];
@@ -255,7 +262,7 @@ bool one_zero_component(const std::array<int, 3>& i, const Vec3<T>& C, const Vec
         s_max = s_at(e0, me1);
     }
 
-    // §4.2.2: squared distance from (0, c2) to the rectangle.
+    // Squared distance from (0, c2) to the rectangle.
     T sqr_distance(0);
     if (T(0) < s_min) {
         sqr_distance += s_min * s_min;
@@ -270,17 +277,17 @@ bool one_zero_component(const std::array<int, 3>& i, const Vec3<T>& C, const Vec
     return sqr_distance <= r * r;
 }
 
-// §4.3.1 (Listing 5): the axis early exit when every d_i > 0.
+// No zero component (Listing 5): the axis early exit when every d_i > 0.
 template <class T>
 bool axis_meets_box_no_zero(const Vec3<T>& C, const Vec3<T>& D, const T& H, const Vec3<T>& E) {
     return axis_meets_slabs(std::array<int, 3>{0, 1, 2}, C, D, H, E);
 }
 
-// §4.3 (Listing 6): every d_i > 0. After the axis early exit, the projection of the polyhedron
-// (box ∩ slab) is bounded by projected edges between a face whose outer normal N has D·N > 0 and one
-// with D·N < 0 (§4.3.2): the 6 box edges (U_i, −U_j) clipped to the slab and the 6 cuts (U_i, −D),
+// No zero component (Listing 6): every d_i > 0. After the axis early exit, the projection of the
+// polyhedron (box ∩ slab) is bounded by projected edges between a face whose outer normal N has D·N > 0 and one
+// with D·N < 0: the 6 box edges (U_i, −U_j) clipped to the slab and the 6 cuts (U_i, −D),
 // (D, −U_i) of a face by a slab plane. Every candidate lies in the polyhedron, so the polygon is within
-// r of the axis iff one of them is (§4.3.3). The order is the spec's.
+// r of the axis iff one of them is. The order is the note's.
 //
 // A disk (H == 0) needs only the six face cuts. The slab is then the plane t = 0 and, as every
 // d_k > 0, it meets each box edge (U_i, −U_j) — parallel to U_k — in at most one point: box_edge()
@@ -293,7 +300,7 @@ bool axis_meets_box_no_zero(const Vec3<T>& C, const Vec3<T>& D, const T& H, cons
 // branch and the certified filter (filtered.hpp) would fall back to exact arithmetic.
 template <class T>
 bool no_zero_components(const Vec3<T>& C, const Vec3<T>& D, const T& r, const T& H, const Vec3<T>& E) {
-    if (axis_meets_box_no_zero(C, D, H, E)) return true;  // §4.3.1
+    if (axis_meets_box_no_zero(C, D, H, E)) return true;  // axis early exit
 
     const ExtremeEdges<T> x(C, D, r, H, E);
     if (H == T(0)) {  // a disk: the face cuts contain every clipped box edge (see above)
@@ -316,12 +323,13 @@ bool no_zero_components(const Vec3<T>& C, const Vec3<T>& D, const T& r, const T&
 
 }  // namespace detail::li
 
-// §4.4 (Listing 7): true iff the closed box |x_i| ≤ e_i meets the closed cylinder. Preconditions:
+// The linear-inequalities method's top level (Listing 7): true iff the closed box |x_i| ≤ e_i meets
+// the closed cylinder. Preconditions:
 // |direction| == 1 (exactly for exact T, rounded for float/double); extents, radius and
 // half_height ≥ 0 (zeros are the flat box, segment and disk they denote).
 template <class T>
 bool linear_inequalities(const CanonicalBox<T>& box, const UnitCylinder<T>& cyl) {
-    // §1.6: a box outside the slab cannot meet the cylinder; §4.1–§4.3 assume it was culled.
+    // Slab cull: a box outside the slab cannot meet the cylinder; the direction classes assume it ran.
     if (box_outside_slab(box, cyl)) return false;
 
     // Reflect into the first octant; the box is symmetric in every coordinate plane.

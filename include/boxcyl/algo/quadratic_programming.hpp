@@ -1,10 +1,11 @@
-// §2 Algorithm based on convex quadratic programming: the box–cylinder test as the convex QP
+// The LCP method (docs/algorithms.md): the box–cylinder test as the convex QP
 //     minimise f(x) = ½ xᵀA x + bᵀx   subject to  x ≥ 0,  D x ≥ e,
-// solved through its KKT linear complementarity problem (§2 eq. (8)) by Lemke's method
+// solved through its KKT linear complementarity problem (the published note's eq. (8)) by Lemke's method
 // (lcp_solver.hpp). Generic over T; exact for exact T whose cylinder direction is exactly unit
 // (QFRational from reduce_exact.hpp's to_unit, or Rational for rational unit directions).
 //
-// Beyond the spec (each exact, so exact answers are those of §2; each for floating point's sake):
+// Beyond the published note (each exact, so exact answers are those of the published method; each for
+// floating point's sake):
 // the axis-segment pre-step, fixed coordinates for zero extents, the plane parametrisation for h = 0,
 // and d² evaluated without cancellation. See quadratic_programming() below.
 #pragma once
@@ -25,11 +26,11 @@
 
 namespace boxcyl::algo {
 
-// A convex QP of §2's kind in m variables y ≥ 0: the point x = p0 + Σ y_r·P[r] (in the frame where
-// the box is 0 ≤ x ≤ 2ℓ and the cylinder centre is k = c + ℓ) and
+// A convex QP of the LCP method's kind in m variables y ≥ 0: the point x = p0 + Σ y_r·P[r] (in the frame
+// where the box is 0 ≤ x ≤ 2ℓ and the cylinder centre is k = c + ℓ) and
 //     minimise ½(x − k)ᵀA(x − k)   subject to   G y ≥ g   (R rows),
 // with A = I − wwᵀ, or A = I when every feasible x has x − k ⊥ w (then the two agree exactly).
-// §2's own problem is P = the unit vectors, p0 = 0, G = the box and slab rows (spec_qp below).
+// The published problem is P = the unit vectors, p0 = 0, G = the box and slab rows (spec_qp below).
 template <class T, std::size_t m, std::size_t R>
 struct ReducedQp {
     Vec3<T> k;
@@ -40,7 +41,7 @@ struct ReducedQp {
     bool in_plane = false;  // use A = I
 };
 
-// The LCP of a ReducedQp: z = (y, multipliers of the G rows). For §2's problem this is the spec's
+// The LCP of a ReducedQp: z = (y, multipliers of the G rows). For the published problem this is its
 // 8×8 LCP. Exposed for tests.
 template <class T, std::size_t N>
 struct QpLcp {
@@ -51,7 +52,7 @@ struct QpLcp {
 template <class T, std::size_t m, std::size_t R>
 QpLcp<T, m + R> make_lcp(const ReducedQp<T, m, R>& qp, const Vec3<T>& w) {
     // f(y) = ½(Py + p0 − k)ᵀA(Py + p0 − k) = ½yᵀ(PᵀAP)y + (PᵀA(p0 − k))ᵀy + const.
-    // §2 eq. (11)–(12) (P = I, p0 = 0): b = −A k. Spec eq. (12) states b = (I − wwᵀ)k, the wrong sign
+    // The note's eq. (11)–(12) (P = I, p0 = 0): b = −A k. Its eq. (12) states b = (I − wwᵀ)k, the wrong sign
     // (it would minimise the distance to the reflected centre −k); derivation: expand the quadratic
     // form, as here. PᵀAP and PᵀA(p0 − k) are formed through A v = v − (w·v)w.
     auto apply_A = [&](const Vec3<T>& v) { return qp.in_plane ? v : Vec3<T>(v - dot(w, v) * w); };
@@ -59,7 +60,7 @@ QpLcp<T, m + R> make_lcp(const ReducedQp<T, m, R>& qp, const Vec3<T>& w) {
     for (std::size_t r = 0; r < m; ++r) AP[r] = apply_A(qp.P[r]);
     const Vec3<T> Ad0 = apply_A(qp.p0 - qp.k);
 
-    // §2 eq. (8): q = [b; −g], M = [[PᵀAP, −Gᵀ], [G, 0]] from the KKT conditions of the QP with
+    // The note's eq. (8): q = [b; −g], M = [[PᵀAP, −Gᵀ], [G, 0]] from the KKT conditions of the QP with
     // multipliers μ ≥ 0 for G y ≥ g: u = PᵀAP y + b − Gᵀμ ≥ 0 ⊥ y ≥ 0 and v = G y − g ≥ 0 ⊥ μ ≥ 0.
     // M is positive semidefinite (zᵀMz = (Py)ᵀA(Py) ≥ 0), hence copositive-plus.
     QpLcp<T, m + R> p;
@@ -77,19 +78,20 @@ QpLcp<T, m + R> make_lcp(const ReducedQp<T, m, R>& qp, const Vec3<T>& w) {
     return p;
 }
 
-// §2's QP over the box coordinates listed in `axis` (n = 3: the spec's problem; a coordinate left
-// out is fixed at xᵢ = 0, exact when ℓᵢ = 0). §2 eq. (9), checked: the constraints D x ≥ e are
+// The LCP method's QP over the box coordinates listed in `axis` (n = 3: the published problem; a
+// coordinate left out is fixed at xᵢ = 0, exact when ℓᵢ = 0). The note's eq. (9), checked: the
+// constraints D x ≥ e are
 //     −xᵢ ≥ −2ℓᵢ           (box: xᵢ ≤ 2ℓᵢ; xᵢ ≥ 0 is the QP's own x ≥ 0)
 //     w·x ≥ w·k − h/2      (slab, lower plane:  w·(x − k) ≥ −h/2)
 //    −w·x ≥ −w·k − h/2     (slab, upper plane:  w·(x − k) ≤ +h/2)
-// which is exactly the spec's D and e (rows and signs agree).
+// which is exactly the note's D and e (rows and signs agree).
 template <std::size_t n, class T>
 ReducedQp<T, n, n + 2> spec_qp(const CanonicalBox<T>& box, const UnitCylinder<T>& cyl,
                                const std::array<std::size_t, n>& axis) {
     const Vec3<T>& l = box.extents;
     const Vec3<T>& w = cyl.direction;
     ReducedQp<T, n, n + 2> qp;
-    // §2: shift the box to 0 ≤ x ≤ 2ℓ (x = ξ + ℓ), and the cylinder centre with it: k = c + ℓ.
+    // Shift the box to 0 ≤ x ≤ 2ℓ (x = ξ + ℓ), and the cylinder centre with it: k = c + ℓ.
     qp.k = cyl.center + l;
     qp.p0 = Vec3<T>{T(0), T(0), T(0)};
     const T wk = dot(w, qp.k);
@@ -139,7 +141,7 @@ ReducedQp<T, m, m + 2> plane_qp(const CanonicalBox<T>& box, const UnitCylinder<T
     return qp;
 }
 
-// The spec's 8×8 LCP (§2 eq. (8)) for all three box coordinates. Exposed for tests.
+// The published 8×8 LCP (the note's eq. (8)) for all three box coordinates. Exposed for tests.
 template <class T>
 QpLcp<T, 8> make_qp_lcp(const CanonicalBox<T>& box, const UnitCylinder<T>& cyl) {
     return make_lcp(spec_qp<3>(box, cyl, std::array<std::size_t, 3>{0, 1, 2}), cyl.direction);
@@ -162,7 +164,7 @@ std::optional<bool> solve_qp(const ReducedQp<T, m, R>& qp, const UnitCylinder<T>
         }
         z = sol.z;
     }
-    // §2: d² = (x − k)ᵀA(x − k) at the minimiser x = p0 + Σ y_r P[r]. Evaluated as |p|² with
+    // d² = (x − k)ᵀA(x − k) at the minimiser x = p0 + Σ y_r P[r]. Evaluated as |p|² with
     // p = δ − (w·δ)w the component of δ = x − k perpendicular to the axis: equal to |δ|² − (w·δ)²
     // when |w| = 1 (exactly so for exact T), but without that form's cancellation, which in floating
     // point loses d² entirely (error ~ ε|δ|²) whenever the box lies far along the axis from the centre.
@@ -185,7 +187,7 @@ std::optional<bool> solve_over(const CanonicalBox<T>& box, const UnitCylinder<T>
         if (!(w[axis[r]] == T(0)) && (best == n || abs(w[axis[r]]) > abs(w[axis[best]]))) best = r;
     if (best == n) {
         // The plane does not involve the free coordinates: w·(x − k) is the same for the whole box,
-        // and the §1.6 cull has found it to be 0. Only the box rows remain.
+        // and the slab cull has found it to be 0. Only the box rows remain.
         ReducedQp<T, n, n + 2> spec = spec_qp<n>(box, cyl, axis);
         ReducedQp<T, n, n> qp;
         qp.k = spec.k;
@@ -212,8 +214,8 @@ std::optional<bool> solve_over(const CanonicalBox<T>& box, const UnitCylinder<T>
 // floating-point LCP solve fails (rounding broke a tie the wrong way and the path ended on a ray);
 // for exact T it always answers. Precondition: cyl.direction is unit length (exactly, for exact T).
 //
-// Floating point (as §2 warns, pivoting is not robust there): the answers that are returned are
-// right unless the case is near touching (tests/test_quadratic_programming.cpp measures it); the
+// Floating point (as the published note warns, pivoting is not robust there): the answers that are returned
+// are right unless the case is near touching (tests/test_quadratic_programming.cpp measures it); the
 // remaining solver failures come from near-degeneracy that rounding perturbs — boxes thin relative
 // to the precision, tiny direction components — where a near-tie in the ratio test is broken the
 // wrong way and Lemke's path ends on a spurious ray. No tolerance is used to hide that: a failure is
@@ -223,14 +225,14 @@ std::optional<bool> quadratic_programming(const CanonicalBox<T>& box, const Unit
     if constexpr (is_exact_v<T>) {
         assert(dot(cyl.direction, cyl.direction) == T(1) && "quadratic_programming: direction must be exactly unit");
     }
-    // §1.6: outside the slab there is nothing to test, and inside it the QP below is feasible.
+    // Slab cull: outside the slab there is nothing to test, and inside it the QP below is feasible.
     if (box_outside_slab(box, cyl)) return false;
 
-    // Pre-step, not in the spec's §2: if the axis segment meets the box, the minimum below is
-    // d² = 0 and the answer is true for every r ≥ 0. This is the same exact test as the §4.1.1 /
-    // §4.2.1 / §4.3.1 early exits (axis_segment.hpp), so exact results do not change. It matters in
-    // rounded arithmetic: there the LCP's minimiser and d² carry rounding, so a minimum that is exactly
-    // 0 comes out as a tiny positive number and a segment (r = 0) through the box would be missed —
+    // Pre-step, not in the published method: if the axis segment meets the box, the minimum below is
+    // d² = 0 and the answer is true for every r ≥ 0. This is the same exact test as the
+    // linear-inequalities method's axis early exits (axis_segment.hpp), so exact results do not change. It
+    // matters in rounded arithmetic: there the LCP's minimiser and d² carry rounding, so a minimum that is
+    // exactly 0 comes out as a tiny positive number and a segment (r = 0) through the box would be missed —
     // far from touching, since the segment may cross the box's middle. The interval test has no such
     // cancellation: its rounding only moves the box faces by a few ulps of the inputs.
     if (axis_segment_meets_box(box, cyl)) return true;
@@ -242,8 +244,8 @@ std::optional<bool> quadratic_programming(const CanonicalBox<T>& box, const Unit
     // in exact arithmetic. A is only semidefinite (zero along w): the minimiser need not be unique,
     // but its value is, and that is all we use. r = 0 needs no special case.
     //
-    // Two exact reformulations, not in the spec, remove constraint pairs that are exactly opposite.
-    // Such a pair ties in every ratio test where it is active: harmless in exact arithmetic (the
+    // Two exact reformulations, not in the published method, remove constraint pairs that are exactly
+    // opposite. Such a pair ties in every ratio test where it is active: harmless in exact arithmetic (the
     // lexicographic rule), but in floating point rounding breaks the tie at random and most of those
     // solves ended on a spurious ray (on the randomized tests, double: 3.9% of the queries before,
     // 1 in 20,000 after; float: 7% before, 2.4% after, the rest mostly boxes thin relative to float).

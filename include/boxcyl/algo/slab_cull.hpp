@@ -1,4 +1,4 @@
-// §1.6 Early exit via box culling: project the canonical box onto the cylinder axis,
+// The slab cull, an early exit: project the canonical box onto the cylinder axis,
 // [γ − ρ, γ + ρ] with γ = −D·C and ρ = Σ|dᵢ|eᵢ, and compare with [−h/2, h/2].
 #pragma once
 

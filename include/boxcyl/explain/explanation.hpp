@@ -1,9 +1,10 @@
-// What a picture of one query shows: the §3 construction in double, for people (boxcyl explain).
+// What a picture of one query shows: the convex-hull method's construction in double, for people (boxcyl
+// explain).
 //
 // Seen along the cylinder's axis, the cylinder is a disk of radius r, and only the part of the box
 // inside the slab |u·(X − C)| ≤ h/2 can meet it. So the picture is: the vertices of box ∩ slab, their
 // projection onto the plane ⊥ u through C (2-D, origin on the axis), its convex hull, the hull point
-// nearest to the origin and its distance d compared with r (§3, algo/convex_hull.hpp).
+// nearest to the origin and its distance d compared with r (algo/convex_hull.hpp).
 //
 // Everything here is rounded double arithmetic and is for drawing only. The verdict is NOT the
 // picture's: it comes from the exact default query boxcyl::intersects (or is handed in), and when the
@@ -40,7 +41,7 @@ enum class Case {
     touching_end_plane,        // intersects: box ∩ slab lies in an end plane (the box touches a cap's plane)
     touching_within_rounding,  // the exact verdict and the double picture disagree: |d − r| is rounding
     gap,                       // does not intersect: d > r
-    outside_slab,              // does not intersect: box ∩ slab is empty (the §1.6 slab cull decides)
+    outside_slab,              // does not intersect: box ∩ slab is empty (the slab cull decides)
     not_drawable,              // coordinates overflow double in the picture (|values| near 1e308)
 };
 
@@ -170,7 +171,7 @@ Explanation compute(const Box& box, const Cylinder<double>& cyl, bool exact_inte
     for (double ts : t) e.box_axial_min = std::min(e.box_axial_min, ts), e.box_axial_max = std::max(e.box_axial_max, ts);
 
     // box ∩ slab: the vertices inside or on the slab, and the strict crossings of the 12 edges with
-    // the two end planes t = ±h/2 (one plane when h = 0), as in §3.
+    // the two end planes t = ±h/2 (one plane when h = 0), as in the convex-hull method.
     const double hh = e.half_height;
     for (int s = 0; s < 8; ++s)
         if (-hh <= t[s] && t[s] <= hh) e.section.push_back(e.box_vertices[s]);

@@ -1,4 +1,4 @@
-// The three box kinds (§1.2–§1.4).
+// The three box kinds (aligned, oriented, canonical; docs/algorithms.md).
 #pragma once
 
 #include <array>  // OrientedBox::axes
@@ -7,14 +7,14 @@
 
 namespace boxcyl {
 
-// §1.3: the closed box min ≤ X ≤ max (componentwise). min == max in a component is a flat box.
+// Aligned box: the closed box min ≤ X ≤ max (componentwise). min == max in a component is a flat box.
 template <class T>
 struct AlignedBox {
     Vec3<T> min;
     Vec3<T> max;
 };
 
-// §1.4: the closed solid { center + x0·axes[0] + x1·axes[1] + x2·axes[2] : |xi| ≤ extents[i] }.
+// Oriented box: the closed solid { center + x0·axes[0] + x1·axes[1] + x2·axes[2] : |xi| ≤ extents[i] }.
 // The axes are meant to be orthonormal; the exact semantics are "the parallelepiped the axes span,
 // exactly as given" (docs in README), so an axis frame that is orthonormal only up to rounding is
 // still an exact, well-defined solid.
@@ -25,7 +25,7 @@ struct OrientedBox {
     Vec3<T> extents;
 };
 
-// §1.2: centred at the origin, aligned with the coordinate axes: |xi| ≤ extents[i].
+// Canonical box: centred at the origin, aligned with the coordinate axes: |xi| ≤ extents[i].
 template <class T>
 struct CanonicalBox {
     Vec3<T> extents;

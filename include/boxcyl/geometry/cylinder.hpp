@@ -1,4 +1,4 @@
-// The finite cylinder as users give it (§1.1), and the unit-axis form the algorithms take.
+// The finite cylinder as users give it, and the unit-axis form the algorithms take.
 #pragma once
 
 #include "boxcyl/geometry/vec3.hpp"
@@ -16,7 +16,7 @@ struct Cylinder {
     T height{};
 };
 
-// The cylinder as §2–§4 state it: a unit-length direction and half the height. Produced by the
+// The cylinder as the three methods state it: a unit-length direction and half the height. Produced by the
 // reductions in reduce.hpp; in floating point the unit direction is rounded, in quadratic-field
 // arithmetic it is exact.
 template <class T>

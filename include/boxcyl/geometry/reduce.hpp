@@ -1,4 +1,4 @@
-// The reductions of §1.3–§1.4: aligned and oriented boxes become the canonical box, the cylinder is
+// The reductions to the canonical frame: aligned and oriented boxes become the canonical box, the cylinder is
 // moved into the box's frame. Generic over T: exact for exact T, rounded (once per operation) for
 // float/double — issue #4 bounds that rounding.
 #pragma once
@@ -13,7 +13,7 @@
 
 namespace boxcyl {
 
-// A canonical box and a unit-axis cylinder in the box's frame: the input of §2–§4.
+// A canonical box and a unit-axis cylinder in the box's frame: the input of the three methods.
 template <class T>
 struct CanonicalQuery {
     CanonicalBox<T> box;
@@ -35,7 +35,7 @@ UnitCylinder<T> to_unit(const Cylinder<T>& c) {
     return {c.center, {a[0] / len, a[1] / len, a[2] / len}, c.radius, c.height / T(2)};
 }
 
-// §1.3: subtract the centre K = (min + max)/2; extents E = (max − min)/2.
+// Aligned box: subtract the centre K = (min + max)/2; extents E = (max − min)/2.
 template <class T>
 CanonicalQuery<T> to_canonical(const AlignedBox<T>& b, const UnitCylinder<T>& c) {
     CanonicalQuery<T> q;
@@ -50,7 +50,7 @@ CanonicalQuery<T> to_canonical(const AlignedBox<T>& b, const UnitCylinder<T>& c)
     return q;
 }
 
-// §1.4: C' = Rᵀ(C − K), D' = Rᵀ D with R = [W0 W1 W2]. Exact only for exactly orthonormal W.
+// Oriented box: C' = Rᵀ(C − K), D' = Rᵀ D with R = [W0 W1 W2]. Exact only for exactly orthonormal W.
 template <class T>
 CanonicalQuery<T> to_canonical(const OrientedBox<T>& b, const UnitCylinder<T>& c) {
     CanonicalQuery<T> q;

@@ -1,5 +1,5 @@
 // The exact counterpart of to_unit(): the unit axis u = D/|D| = (D/d)·√d, d = D·D, as numbers of the
-// quadratic field Q(√d). No rounding anywhere; the §1.3/§1.4 reductions of reduce.hpp then run
+// quadratic field Q(√d). No rounding anywhere; the reductions to the canonical frame of reduce.hpp then run
 // unchanged with T = QFRational (exactly, for aligned boxes and exactly orthonormal oriented boxes).
 #pragma once
 

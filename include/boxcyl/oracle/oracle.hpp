@@ -1,7 +1,7 @@
-// The exact oracle: an independent, deliberately plain decision procedure that judges §2–§4.
+// The exact oracle: an independent, deliberately plain decision procedure that judges the three methods.
 //
-// It is none of the specification's algorithms. It works in world coordinates (no canonical frame,
-// so it also judges the §1.3–§1.4 reductions) on the box as the parallelepiped
+// It is none of the published algorithms. It works in world coordinates (no canonical frame,
+// so it also judges the reductions to the canonical frame) on the box as the parallelepiped
 //     B = { K + Σ ξᵢ Aᵢ : |ξᵢ| ≤ eᵢ }   (axes exactly as given, linearly independent),
 // and the closed cylinder with centre C, axis direction D (any length; u = D/|D|), radius r, height h.
 //
