@@ -1,4 +1,4 @@
-// The batch API (boxcyl/batch.hpp, issue #5) against the scalar exact default boxcyl::intersects(box,
+// The batch API (boxcyl/batch.hpp) against the scalar exact default boxcyl::intersects(box,
 // cylinder), bit for bit: random sets around CaseGenerator cylinders (segments, disks, tiny axis
 // components included), boxes one ulp from touching, degenerate boxes and cylinders, huge and tiny
 // magnitudes, float inputs (widened exactly), every batch length 0..3·lanes+1 (all remainders), both

@@ -1,4 +1,4 @@
-// Issue #4: Bounded (include/boxcyl/number/bounded.hpp), the running-error-bound numbers of the filter's
+// Bounded (include/boxcyl/number/bounded.hpp), the running-error-bound numbers of the filter's
 // fast stage. Every +, −, ×, ÷, sqrt of random operands across the whole double range (zero,
 // subnormal, tiny, huge) and of operands that already carry an error keeps the exact result within
 // [lo(), hi()] (checked in GMP rationals, Q(√d) for sqrt), in every IEEE rounding mode; so do long

@@ -1,7 +1,7 @@
-// §3 (clip – project – convex hull): the 2-D monotone chain; hand-built touching configurations for
-// every direction class with one-ulp neighbours; degenerate solids; the world-frame parallelepiped
-// form (construction, the generalised §1.6 cull, sheared boxes with exact touches, dependent and zero
-// half-edges); and randomized exact differentials against the oracle: generated oriented boxes with
+// The convex-hull method (clip – project – convex hull): the 2-D monotone chain; hand-built touching
+// configurations for every direction class with one-ulp neighbours; degenerate solids; the world-frame
+// parallelepiped form (construction, the generalised slab cull, sheared boxes with exact touches, dependent
+// and zero half-edges); and randomized exact differentials against the oracle: generated oriented boxes with
 // rounded rotations (the parallelepiped of the axes exactly as given), aligned and canonical boxes,
 // one-ulp boundary pairs. The exact path is T = QFRational (to_unit(Cylinder<Rational>, field)); T =
 // Rational is checked where the unit direction is rational; double is measured, not asserted, on the
@@ -55,7 +55,7 @@ double up(double x) { return std::nextafter(x, inf); }
 double down(double x) { return std::nextafter(x, -inf); }
 
 // ---------------------------------------------------------------------------------------------
-// Running §3 exactly.
+// Running the convex-hull method exactly.
 
 // T = QFRational: the unit axis D/|D| is exact in Q(√(D·D)).
 bool hull_qf(const CanonicalBox<Rational>& b, const Cylinder<Rational>& c) {
@@ -72,14 +72,14 @@ bool hull_qf(const Parallelepiped<Rational>& p, const Cylinder<Rational>& c) {
                                         boxcyl::lift(p.half_edges[2])}};
     return convex_hull(q, u);
 }
-// Through the §1.3 reduction (exact for aligned boxes).
+// Through the aligned-box reduction (exact for aligned boxes).
 bool hull_qf_reduced(const AlignedBox<Rational>& b, const Cylinder<Rational>& c) {
     const QuadraticField<Rational> field(dot(c.axis, c.axis));
     const UnitCylinder<QFRational> u = boxcyl::to_unit(c, field);
     const auto q = boxcyl::to_canonical(AlignedBox<QFRational>{boxcyl::lift(b.min), boxcyl::lift(b.max)}, u);
     return convex_hull(q.box, q.cylinder);
 }
-// Through the §1.4 reduction: exact only for exactly orthonormal axes (then it is a rotation).
+// Through the oriented-box reduction: exact only for exactly orthonormal axes (then it is a rotation).
 bool hull_qf_reduced(const OrientedBox<Rational>& b, const Cylinder<Rational>& c) {
     const QuadraticField<Rational> field(dot(c.axis, c.axis));
     const UnitCylinder<QFRational> u = boxcyl::to_unit(c, field);
@@ -97,7 +97,7 @@ bool exactly_orthonormal(const OrientedBox<Rational>& b) {
     return true;
 }
 
-// The exact §3 answer for a generated case. Aligned and oriented boxes run in the world frame as
+// The exact convex-hull answer for a generated case. Aligned and oriented boxes run in the world frame as
 // parallelepipeds (algo::as_parallelepiped, qualified: boxcyl::as_oriented_box from oracle.hpp
 // would win ADL for Rational boxes), canonical boxes through the canonical overload.
 bool hull_exact(const Case& c) {
@@ -110,8 +110,8 @@ bool hull_exact(const Case& c) {
     return false;
 }
 
-// §3 in double, world frame for aligned and oriented boxes (rounded: normalised axis, aᵢ = eᵢAᵢ and
-// arithmetic rounded).
+// The convex-hull method in double, world frame for aligned and oriented boxes (rounded: normalised axis,
+// aᵢ = eᵢAᵢ and arithmetic rounded).
 bool hull_double(const Case& c) {
     const UnitCylinder<double> u = boxcyl::to_unit(c.cylinder);
     switch (c.kind) {
@@ -122,7 +122,7 @@ bool hull_double(const Case& c) {
     return false;
 }
 
-// §3 in double through the §1.3/§1.4 reductions to the canonical box (for comparison only).
+// The convex-hull method in double through the reductions to the canonical box (for comparison only).
 bool hull_double_reduced(const Case& c) {
     const UnitCylinder<double> u = boxcyl::to_unit(c.cylinder);
     switch (c.kind) {
@@ -471,9 +471,9 @@ TEST(ConvexHullHand, ExpectedAnswersInEveryOrientation) {
                     if (signs == 0 && !flip) {  // the oracle's own invariances are tested in test_oracle
                         ASSERT_EQ(boxcyl::oracle::intersects(box, c), h.expected) << "oracle: " << describe(t);
                     }
-                    ASSERT_EQ(hull_qf(box, c), h.expected) << "§3 QFRational: " << describe(t);
+                    ASSERT_EQ(hull_qf(box, c), h.expected) << "hull QFRational: " << describe(t);
                     if (const auto r = hull_rational(box, c)) {
-                        ASSERT_EQ(*r, h.expected) << "§3 Rational: " << describe(t);
+                        ASSERT_EQ(*r, h.expected) << "hull Rational: " << describe(t);
                     }
                     ++checked;
                 }
@@ -534,7 +534,7 @@ TEST(ConvexHullFloatingPoint, ClearCutCases) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Parallelepipeds in the world frame: construction, the generalised §1.6 cull, sheared boxes with
+// Parallelepipeds in the world frame: construction, the generalised slab cull, sheared boxes with
 // exact touches, dependent and zero half-edges.
 
 std::string str(const Parallelepiped<Rational>& p) {
@@ -568,7 +568,7 @@ TEST(AsParallelepiped, OrientedAlignedCanonical) {
     EXPECT_EQ(c.half_edges[1], (Vec3<float>{0, 2, 0}));
 }
 
-// The generalised §1.6 cull in exact arithmetic: touching the slab plane is not outside.
+// The generalised slab cull in exact arithmetic: touching the slab plane is not outside.
 TEST(ParallelepipedSlabCull, TouchingIsNotOutside) {
     // Sheared box: a0 = (1,0,0), a1 = (1,1,0), a2 = (0,0,1), K = (0,0,5). Axis z: ρ = 1, γ = 5 − c_z.
     const Parallelepiped<Rational> p{{0, 0, 5}, {Vec3<Rational>{1, 0, 0}, Vec3<Rational>{1, 1, 0}, Vec3<Rational>{0, 0, 1}}};
@@ -733,7 +733,7 @@ TEST(ConvexHullParallelepiped, RandomShearedAgreesWithOracle) {
         ++evaluated;
         hits += o;
         if (o != h && ++failures <= 20)
-            ADD_FAILURE() << "seed " << seed << " case #" << evaluated - 1 << ": oracle " << o << ", §3 " << h << "\n  "
+            ADD_FAILURE() << "seed " << seed << " case #" << evaluated - 1 << ": oracle " << o << ", hull " << h << "\n  "
                           << str(p) << "\n  " << str(c);
     }
     EXPECT_EQ(failures, 0);
@@ -741,8 +741,8 @@ TEST(ConvexHullParallelepiped, RandomShearedAgreesWithOracle) {
     EXPECT_LT(hits, n - n / 10);
 }
 
-// Linearly dependent and zero half-edges: §3 works in ξ-space, so they need no special case. Each is
-// compared with the oracle on the same solid written with independent axes: [−a, a] + [−a, a] =
+// Linearly dependent and zero half-edges: the convex-hull method works in ξ-space, so they need no special
+// case. Each is compared with the oracle on the same solid written with independent axes: [−a, a] + [−a, a] =
 // [−2a, 2a] (a Minkowski sum of parallel segments), etc.; the third axis c only completes the basis.
 TEST(ConvexHullParallelepiped, DependentAndZeroHalfEdges) {
     constexpr std::uint64_t seed = 0x5eed'de9e'0003ULL;
@@ -780,7 +780,7 @@ TEST(ConvexHullParallelepiped, DependentAndZeroHalfEdges) {
         ++evaluated;
         hits += o;
         if (o != h && ++failures <= 20)
-            ADD_FAILURE() << "seed " << seed << " case #" << evaluated - 1 << ": oracle " << o << ", §3 " << h << "\n  "
+            ADD_FAILURE() << "seed " << seed << " case #" << evaluated - 1 << ": oracle " << o << ", hull " << h << "\n  "
                           << str(p) << "\n  " << str(c);
     }
     EXPECT_EQ(failures, 0);
@@ -811,18 +811,18 @@ const char* kind_name(BoxKind k) {
     return "?";
 }
 
-// Checks one case exactly (and, for aligned boxes, through the §1.3 reduction too), counts the double
+// Checks one case exactly (and, for aligned boxes, through the aligned-box reduction too), counts the double
 // disagreements (world frame and through the reductions). `where` locates it for a failure message.
 void check_exact(KindTally& t, const Case& c, bool want, const std::string& where) {
     ++t.cases;
     t.hits += want;
     const bool got = hull_exact(c);
     if (got != want && ++t.failures <= 10)
-        ADD_FAILURE() << where << ": oracle " << want << ", §3 (world frame) " << got << "\n  " << describe(c);
+        ADD_FAILURE() << where << ": oracle " << want << ", hull (world frame) " << got << "\n  " << describe(c);
     if (c.kind == BoxKind::aligned) {
         const bool reduced = hull_qf_reduced(boxcyl::to_exact(c.aligned), boxcyl::to_exact(c.cylinder));
         if (reduced != want && ++t.failures <= 10)
-            ADD_FAILURE() << where << ": oracle " << want << ", §3 (§1.3 reduced) " << reduced << "\n  " << describe(c);
+            ADD_FAILURE() << where << ": oracle " << want << ", hull (aligned-box reduction) " << reduced << "\n  " << describe(c);
     }
     t.double_world += hull_double(c) != want;
     t.double_reduced += hull_double_reduced(c) != want;
@@ -898,8 +898,8 @@ TEST(ConvexHullRandom, BoundaryPairsAlignedCanonicalExact) { boundary_pairs(fals
 
 // Regression: an oriented start from the boundary seed with a single 1e-299 axis component. Its
 // rotation made boundary_pair throw (|a|² underflowed to 0, the rotated axis was NaN) until cases.hpp
-// prescaled it. With the axis as given, §3 must be exact, and double must not go NaN (to_unit
-// prescales by a power of two); the answers here are clear-cut.
+// prescaled it. With the axis as given, the convex-hull method must be exact, and double must not go NaN
+// (to_unit prescales by a power of two); the answers here are clear-cut.
 TEST(ConvexHullRandom, RegressionTinyAxisOrientedBox) {
     Case c{BoxKind::oriented, {},
            OrientedBox<double>{{-0x1.ebe196806242p-21, 0x1.d712b72f00a48p-17, 0x1.42ecfad47eb18p-19},
@@ -921,8 +921,8 @@ TEST(ConvexHullRandom, RegressionTinyAxisOrientedBox) {
 }
 
 // Oriented boxes with exactly orthonormal rational axes: the rotation of an integer quaternion
-// (a, b, c, d), entries integer/(a²+b²+c²+d²). Built in Rational directly, so §1.4 is exact and the
-// world-frame path and the reduced path must both agree with the oracle.
+// (a, b, c, d), entries integer/(a²+b²+c²+d²). Built in Rational directly, so the oriented-box reduction is
+// exact and the world-frame path and the reduced path must both agree with the oracle.
 std::array<Vec3<Rational>, 3> rational_rotation(std::mt19937_64& rng) {
     std::uniform_int_distribution<int> q(-6, 6);
     int a, b, c, d;
@@ -961,8 +961,8 @@ TEST(ConvexHullRandom, RationalOrientedBoxes) {
         const bool world = hull_qf(algo::as_parallelepiped(b), c);
         hits += o;
         if ((o != reduced || o != world) && ++failures <= 20)
-            ADD_FAILURE() << "seed " << seed << " case #" << i << ": oracle " << o << ", §3 reduced " << reduced
-                          << ", §3 world " << world << "\n  box center " << str(b.center) << " axes " << str(b.axes[0])
+            ADD_FAILURE() << "seed " << seed << " case #" << i << ": oracle " << o << ", hull reduced " << reduced
+                          << ", hull world " << world << "\n  box center " << str(b.center) << " axes " << str(b.axes[0])
                           << " " << str(b.axes[1]) << " " << str(b.axes[2]) << " extents " << str(b.extents) << "\n  "
                           << str(c);
     }

@@ -53,8 +53,8 @@ TEST_P(RandomShard, LinearInequalitiesDoubleAgreesWithOracle) {
         check_case(t, c, oracle_answer(c), [](const Case& k) { return run(k, linear_double); }, double_tolerance,
                    "seed " + std::to_string(seed) + " case " + std::to_string(i));
     }
-    print_tally(("random, §4 double, seed " + std::to_string(seed)).c_str(), t);
-    // The generator must be representative (STYLE §12): a healthy mix of hits and misses.
+    print_tally(("random, inequalities double, seed " + std::to_string(seed)).c_str(), t);
+    // The generator must be representative: a healthy mix of hits and misses.
     EXPECT_GT(t.hits, n / 5);
     EXPECT_LT(t.hits, n * 4 / 5);
 }
@@ -76,7 +76,7 @@ TEST(Differential, LinearInequalitiesFloatAgreesWithOracle) {
         check_case(t, c, oracle_answer(c), [](const Case& k) { return run(k, linear_float); }, float_tolerance,
                    "seed 2002 case " + std::to_string(i));
     }
-    print_tally("random, §4 float", t);
+    print_tally("random, inequalities float", t);
 }
 
 // Boundary pairs: two inputs one ulp apart with opposite exact answers. Every disagreement here is by
@@ -90,7 +90,7 @@ TEST(Differential, BoundaryPairsLinearInequalitiesDouble) {
         check_case(t, a, wa, answer, double_tolerance, where);
         check_case(t, b, wb, answer, double_tolerance, where);
     });
-    print_tally("boundary pairs, §4 double", t);
+    print_tally("boundary pairs, inequalities double", t);
 }
 
 }  // namespace

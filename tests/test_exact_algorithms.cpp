@@ -1,7 +1,8 @@
-// Issue #3's proof: every specification algorithm, run in exact arithmetic through the front door
+// Every method of docs/algorithms.md, run in exact arithmetic through the front door
 // (Arithmetic::exact: rationals and a + b·√d), agrees with the oracle on 100% of the random, boundary
-// (one ulp apart) and degenerate sets. Oriented boxes with rounded rotations go through §3 exactly;
-// §2/§4 need an exactly orthonormal frame and must refuse the others (std::domain_error).
+// (one ulp apart) and degenerate sets. Oriented boxes with rounded rotations go through the convex-hull
+// method exactly; the LCP/linear-inequalities methods need an exactly orthonormal frame and must refuse the
+// others (std::domain_error).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -32,16 +33,16 @@ bool exactly_orthonormal(const Case& c) {
 
 const char* name(Algorithm a) {
     switch (a) {
-        case Algorithm::inequalities: return "§4 inequalities";
-        case Algorithm::hull: return "§3 hull";
-        case Algorithm::lcp: return "§2 lcp";
+        case Algorithm::inequalities: return "inequalities";
+        case Algorithm::hull: return "hull";
+        case Algorithm::lcp: return "lcp";
         case Algorithm::oracle: return "oracle";
     }
     return "?";
 }
 
-// Runs one case exactly: a refused oriented box (§2/§4, axes not exactly orthonormal) must throw
-// domain_error and is counted apart; every answer must equal the oracle's.
+// Runs one case exactly: a refused oriented box (the LCP/linear-inequalities methods, axes not exactly
+// orthonormal) must throw domain_error and is counted apart; every answer must equal the oracle's.
 template <class Want>
 void check_exact(Tally& t, long& refused, Algorithm a, const Case& c, Want&& want, const std::string& where) {
     const QueryOptions opt{a, Arithmetic::exact};
@@ -126,8 +127,8 @@ TEST(ExactBoundary, EveryAlgorithmAgreesWithOracleOnUlpPairs) {
 namespace boxcyl {
 namespace {
 
-// A rounded §2 that fails on a rotated box must still answer (found by the benchmark, 4 of 1,024
-// boundary queries threw domain_error from the exact §2 fallback).
+// A rounded LCP method that fails on a rotated box must still answer (found by the benchmark, 4 of 1,024
+// boundary queries threw domain_error from the exact LCP fallback).
 TEST(FrontDoor, FailedRoundedLcpOnRotatedBoxIsAnsweredExactly) {
     const testing::Case c{testing::BoxKind::oriented, {}, OrientedBox<double>{{-0x1.f410c4c56c9dp-16, 0x1.5ef22289d237p-17, -0x1.1a51479db167ep-15}, {Vec3<double>{-0x1.b6b671e7c042p-1, 0x1.8d8b9c92aefe4p-4, -0x1.033da325dea2ep-1}, Vec3<double>{0x1.3b7718db3ca84p-3, -0x1.c732faa3f4132p-1, -0x1.b9714221f30c5p-2}, Vec3<double>{-0x1.f7ce82f31d05p-2, -0x1.ca1e8daf6af23p-2, 0x1.7e6341dd85901p-1}}, {0x1.18af0813790a6p-16, 0x1.3afdd30875c0ep-16, 0x1.67b6a74903c0ep-17}}, {}, Cylinder<double>{{-0x1.09206c2fa1949p-13, 0x1.ab70b38324e3bp-18, 0x1.eef904d6c15dfp-14}, {-0x1.efe8bf8310fbp-6, -0x1.19799812dea11p-42, -0x1.badab535a55b6p-4}, 0x1.39107e6c3157ep-12, 0x1.8d1d5be8dd064p-13}};
     bool got = false;

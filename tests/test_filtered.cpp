@@ -1,4 +1,4 @@
-// Issue #4: the filtered exact query (include/boxcyl/filtered.hpp) and the interval arithmetic it
+// The filtered exact query (include/boxcyl/filtered.hpp) and the interval arithmetic it
 // rests on (include/boxcyl/number/interval.hpp).
 //  * Interval: every +, −, ×, ÷, sqrt of random operands (zero, subnormal, tiny, huge, negative) and of
 //    random intervals encloses the exact result (GMP rationals, Q(√d) for sqrt), in every IEEE rounding
@@ -469,8 +469,9 @@ TEST_P(FilteredRandom, AgreesWithOracle) {
     EXPECT_GT(f.t.hits, n / 5);
     EXPECT_LT(f.t.hits, n * 4 / 5);
     if (!forced) {
-        // Measured 0–1 in 100,000 (0.03% before the witness search, all flat boxes; docs/robustness.md
-        // §5, §9): issue #4's goal is < 1e-4. The hit certificates keep disks and segments off too.
+        // Measured 0–1 in 100,000 (without the witness search 0.03%, all flat boxes; docs/robustness.md
+        // §5, §9); the bound leaves room for other seeds. The hit certificates keep disks and segments off
+        // too.
         EXPECT_LT(f.fallback(), 2e-4);
         EXPECT_LT(f.fallback(regular), 0.0005);
         EXPECT_LT(f.fallback(disk), 0.002);

@@ -1,4 +1,4 @@
-// The grid query (boxcyl/grid.hpp, issue #5) against brute force: the exact default query on every
+// The grid query (boxcyl/grid.hpp) against brute force: the exact default query on every
 // cell of small grids, for random cylinders (fixed seeds) that include touching configurations —
 // cylinders tangent to cell faces, along grid lines, through grid vertices, disks and segments in grid
 // planes, oriented axes with exactly rational directions, cylinders partly or wholly outside the grid —

@@ -1,10 +1,11 @@
-// §4 (algo/linear_inequalities.hpp) against the exact oracle.
+// The linear-inequalities method (algo/linear_inequalities.hpp) against the exact oracle.
 //
-// Every case runs four ways: the oracle (asserted, so the hand-made expectations are checked too), §4
-// in QFRational (exact: asserted always), §4 in Rational when the axis has a rational length
-// (asserted), and §4 in double/float (rounded). Double is asserted strictly where the rounded unit
-// direction is the exact one (axis-aligned axes); elsewhere a disagreement must be near touching
-// within the documented tolerance (support/tolerance.hpp) and is reported, not failed.
+// Every case runs four ways: the oracle (asserted, so the hand-made expectations are checked too), the
+// linear-inequalities method in QFRational (exact: asserted always), the linear-inequalities method in
+// Rational when the axis has a rational length (asserted), and the linear-inequalities method in double/float
+// (rounded). Double is asserted strictly where the rounded unit direction is the exact one (axis-aligned
+// axes); elsewhere a disagreement must be near touching within the documented tolerance
+// (support/tolerance.hpp) and is reported, not failed.
 //
 // Hand cases use the box |x| ≤ 1, |y| ≤ 2, |z| ≤ 3 and are run in all 8 reflections (negative axis
 // components) and as a shifted aligned box. Every touching case comes with its one-ulp neighbour on
@@ -40,7 +41,8 @@ constexpr double kDenormMin = std::numeric_limits<double>::denorm_min();
 
 // ---------------------------------------------------------------- the four ways to answer a case
 
-// §4 in QFRational: the exact unit axis u = A/|A| in Q(√(A·A)), the §1.3 reduction in exact arithmetic.
+// The linear-inequalities method in QFRational: the exact unit axis u = A/|A| in Q(√(A·A)), the aligned-box
+// reduction in exact arithmetic.
 bool exact_li(const Case& c) {
     const Cylinder<Rational> cyl = to_exact(c.cylinder);
     const QuadraticField<Rational> field(dot(cyl.axis, cyl.axis));
@@ -61,7 +63,8 @@ std::optional<Rational> exact_sqrt(const Rational& q) {
     return Rational(mpz_class(sqrt(n)), mpz_class(sqrt(d)));
 }
 
-// §4 in Rational, possible when |A| is rational (axis-aligned or Pythagorean axes such as (3,4,12)).
+// The linear-inequalities method in Rational, possible when |A| is rational (axis-aligned or Pythagorean axes
+// such as (3,4,12)).
 std::optional<bool> rational_li(const Case& c) {
     const Cylinder<Rational> cyl = to_exact(c.cylinder);
     const std::optional<Rational> len = exact_sqrt(dot(cyl.axis, cyl.axis));
@@ -82,7 +85,7 @@ Vec3<F> cast3(const Vec3<double>& v) {
     return {static_cast<F>(v[0]), static_cast<F>(v[1]), static_cast<F>(v[2])};
 }
 
-// §4 in float or double, as the front door runs it (to_unit rounds the axis).
+// The linear-inequalities method in float or double, as the front door runs it (to_unit rounds the axis).
 template <class F>
 bool rounded_li(const Case& c) {
     const Cylinder<F> cyl{cast3<F>(c.cylinder.center), cast3<F>(c.cylinder.axis), static_cast<F>(c.cylinder.radius),
@@ -112,31 +115,31 @@ struct RoundedTally {
 };
 RoundedTally g_hand_double, g_hand_float;
 
-// Asserts the oracle and exact §4. Double is asserted strictly when `strict_double` and its rounded
-// direction is exact; otherwise a double disagreement must be near touching (and is reported).
-// `strict_double` is off for one-ulp neighbours whose flip the double pipeline cannot resolve even for
-// axis-aligned axes: a height nudge (the §1.6 cull rounds ρ + h/2) and shifted aligned boxes (§1.3
-// rounds C − K).
+// Asserts the oracle and the exact linear-inequalities method. Double is asserted strictly when
+// `strict_double` and its rounded direction is exact; otherwise a double disagreement must be near touching
+// (and is reported). `strict_double` is off for one-ulp neighbours whose flip the double pipeline cannot
+// resolve even for axis-aligned axes: a height nudge (the slab cull rounds ρ + h/2) and shifted aligned boxes
+// (the aligned-box reduction rounds C − K).
 void expect_answer(const std::string& name, const Case& c, bool want, bool strict_double = true) {
     SCOPED_TRACE(name + "\n  " + describe(c));
     EXPECT_EQ(testing::oracle_answer(c), want) << "oracle";
-    EXPECT_EQ(exact_li(c), want) << "§4 in QFRational";
+    EXPECT_EQ(exact_li(c), want) << "inequalities in QFRational";
     if (const std::optional<bool> r = rational_li(c)) {
-        EXPECT_EQ(*r, want) << "§4 in Rational";
+        EXPECT_EQ(*r, want) << "inequalities in Rational";
     }
 
     ++g_hand_double.checked;
     const bool d = rounded_li<double>(c);
     if (strict_double && double_direction_exact(c)) {
-        EXPECT_EQ(d, want) << "§4 in double (direction exact in double)";
+        EXPECT_EQ(d, want) << "inequalities in double (direction exact in double)";
     } else if (d != want) {
-        EXPECT_TRUE(testing::near_touching(c, testing::double_tolerance)) << "§4 in double, NOT near touching";
+        EXPECT_TRUE(testing::near_touching(c, testing::double_tolerance)) << "inequalities in double, NOT near touching";
         ++g_hand_double.tolerated;
         std::printf("  [double, tolerated] %s: got %d want %d\n", name.c_str(), d, want);
     }
     ++g_hand_float.checked;
     if (rounded_li<float>(c) != want) {
-        EXPECT_TRUE(testing::near_touching(c, testing::float_tolerance)) << "§4 in float, NOT near touching";
+        EXPECT_TRUE(testing::near_touching(c, testing::float_tolerance)) << "inequalities in float, NOT near touching";
         ++g_hand_float.tolerated;
     }
 }
@@ -231,7 +234,7 @@ void expect_plain(const std::string& name, const Case& c, bool want) {
     for_variants(name, c, Knob::radius, [&](const std::string& tag, const Case& v, int, bool) { expect_answer(tag, v, want); });
 }
 
-// ---- (+,0,0), (0,+,0), (0,0,+): §4.1 ----
+// ---- (+,0,0), (0,+,0), (0,0,+): two zero components ----
 
 TEST(LinearInequalitiesHand, TwoZeroComponentsX) {
     expect_touching("x: side vs face", box123({0, 5, 0}, {1, 0, 0}, 3, 4), Knob::radius, -1);
@@ -267,7 +270,7 @@ TEST(LinearInequalitiesHand, TwoZeroComponentsZ) {
     expect_plain("z: box inside cylinder", box123({0, 0, 0}, {0, 0, 1}, 10, 10), true);
 }
 
-// ---- (+,+,0), (+,0,+), (0,+,+): §4.2. Axes (3,4,0)-type so that unit directions are rational. ----
+// ---- (+,+,0), (+,0,+), (0,+,+): one zero component. Axes (3,4,0)-type: rational unit directions. ----
 
 TEST(LinearInequalitiesHand, OneZeroComponentXY) {
     // D = (0.6, 0.8, 0), n = (0.8, −0.6, 0): the box reaches n·X ≤ 2 (edge x = 1, y = −2); n·C = 7.
@@ -303,7 +306,7 @@ TEST(LinearInequalitiesHand, OneZeroComponentYZ) {
     expect_plain("yz: box inside cylinder", box123({0, 0, 0}, {0, 3, 4}, 10, 20), true);
 }
 
-// ---- (+,+,+): §4.3. Axes (3,4,12)/13 (|D × U2| = 5/13 rational) and (1,2,2)/3. ----
+// ---- (+,+,+): no zero component. Axes (3,4,12)/13 (|D × U2| = 5/13 rational) and (1,2,2)/3. ----
 
 TEST(LinearInequalitiesHand, NoZeroComponents) {
     // n = (4, −3, 0)/5 ⊥ D: the box reaches n·X ≤ 2 only on the edge x = 1, y = −2; n·C = 7; the
@@ -363,7 +366,8 @@ TEST(LinearInequalitiesHand, ZeroRadiusAndHeight) {
 
 // Axis components 1e-300, subnormal and 2^-40. In exact arithmetic the tiny tilt decides touching
 // cases; double may differ only within rounding (checked with the tolerance) and must never produce
-// NaN/inf garbage (spec Listings 4/6 divide by the tiny component and use the overflowing quotient).
+// NaN/inf garbage (the published note's Listings 4/6 divide by the tiny component and use the overflowing
+// quotient).
 TEST(LinearInequalitiesHand, TinyAxisComponents) {
     // Axis tilted towards the face y = 2 by 1e-300: nearest at x = −1, distance 3 − 1e-300 < 3.
     expect_touching("tiny y: side vs face", box123({0, 5, 0}, {1, 1e-300, 0}, 3, 4), Knob::radius, -1);
@@ -514,9 +518,9 @@ Case with_knob(Case c, Knob k, double v) {
     return c;
 }
 
-// The exact touching value of the radius (or height) ± 1 ulp: bisection with §4 in double to the
-// rounded flip, widened until the oracle brackets it, then bisection with the oracle over adjacent
-// doubles. False when there is no flip (the axis meets the box, or the box misses the slab for every
+// The exact touching value of the radius (or height) ± 1 ulp: bisection with the linear-inequalities method
+// in double to the rounded flip, widened until the oracle brackets it, then bisection with the oracle over
+// adjacent doubles. False when there is no flip (the axis meets the box, or the box misses the slab for every
 // radius, or the flip is at 0).
 bool touching_pair(const Case& base, Knob k, Case& miss, Case& hit) {
     const double top = 64.0 * (1.0 + testing::problem_scale(base));
@@ -549,12 +553,12 @@ void check_random_case(DiffTally& t, const Case& c, std::uint64_t seed, long ind
     t.hits += want;
     const bool got = exact_li(c);
     if (got != want)
-        ADD_FAILURE() << "seed " << seed << " case " << index << " (" << tag << "): §4 in QFRational says " << got
+        ADD_FAILURE() << "seed " << seed << " case " << index << " (" << tag << "): inequalities in QFRational says " << got
                       << ", oracle " << want << "\n  " << describe(c);
     if (const std::optional<bool> r = rational_li(c)) {
         ++t.rational_checked;
         if (*r != want)
-            ADD_FAILURE() << "seed " << seed << " case " << index << " (" << tag << "): §4 in Rational says " << *r
+            ADD_FAILURE() << "seed " << seed << " case " << index << " (" << tag << "): inequalities in Rational says " << *r
                           << ", oracle " << want << "\n  " << describe(c);
     }
     if (rounded_li<double>(c) != want) {
@@ -588,8 +592,8 @@ TEST(LinearInequalitiesRandom, ExactDifferentialAgainstOracle) {
             }
         }
     }
-    // The shared generator too (aligned and canonical kinds only: §4 takes oriented boxes through a
-    // rounded rotation, which the exact comparison cannot use).
+    // The shared generator too (aligned and canonical kinds only: the linear-inequalities method takes
+    // oriented boxes through a rounded rotation, which the exact comparison cannot use).
     const std::uint64_t seed2 = 0x5eed02u;
     testing::CaseGenerator shared(seed2);
     for (int n = 0; n < 600; ++n, ++index) {
@@ -609,18 +613,18 @@ TEST(LinearInequalitiesRandom, ExactDifferentialAgainstOracle) {
     }
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("random: %ld cases (%.1f%% hits), %ld touching pairs from r/h, %d boundary pairs, %ld also in Rational; "
-                "§4 QFRational disagreements: reported above as failures\n",
+                "inequalities QFRational disagreements: reported above as failures\n",
                 t.cases, 100.0 * static_cast<double>(t.hits) / static_cast<double>(t.cases), t.touching_pairs, pairs,
                 t.rational_checked);
-    std::printf("random: §4 in double disagrees with the oracle on %ld of %ld cases (%ld NOT near touching at "
+    std::printf("random: inequalities in double disagrees with the oracle on %ld of %ld cases (%ld NOT near touching at "
                 "tau = 2^-40); %.1f s\n",
                 t.double_disagree, t.cases, t.double_far, secs);
     EXPECT_GE(t.cases, 3000);
 }
 
 // Disks (h = 0): no_zero_components checks only the six face cuts then (the six clipped box edges are
-// points of them). Exact §4 against the oracle over every direction class, canonical boxes with and
-// without flat sides, and radii one ulp either side of touching.
+// points of them). The exact linear-inequalities method against the oracle over every direction class,
+// canonical boxes with and without flat sides, and radii one ulp either side of touching.
 TEST(LinearInequalitiesRandom, DisksAgainstOracle) {
     const std::uint64_t seed = 0xd15c5u;
     RationalishGenerator gen(seed);
@@ -654,7 +658,7 @@ TEST(LinearInequalitiesRandom, DisksAgainstOracle) {
         }
     }
     std::printf("disks: %ld cases (%.1f%% hits; axis with 0/1/2 zero components: %ld/%ld/%ld; %ld flat boxes), "
-                "%ld touching radius pairs; §4 in double disagrees on %ld (%ld NOT near touching)\n",
+                "%ld touching radius pairs; inequalities in double disagrees on %ld (%ld NOT near touching)\n",
                 t.cases, 100.0 * static_cast<double>(t.hits) / static_cast<double>(t.cases), by_zeros[0], by_zeros[1],
                 by_zeros[2], flat, t.touching_pairs, t.double_disagree, t.double_far);
     EXPECT_GE(t.cases, 2000);

@@ -1,7 +1,7 @@
-// §2: the LCP solver (Lemke's method, lexicographic anti-cycling), the axis-segment pre-step, and the
-// box–cylinder test as a convex QP. Exact expectations in Rational / QFRational; the exact oracle
+// The LCP method: the LCP solver (Lemke's method, lexicographic anti-cycling), the axis-segment
+// pre-step, and the box–cylinder test as a convex QP. Exact expectations in Rational / QFRational; the exact oracle
 // judges the query. In float/double every answer must be right unless the case is near touching
-// (issue #3); a solver failure (std::nullopt) is not an answer — it is counted and reported.
+// (the tolerance rule); a solver failure (std::nullopt) is not an answer — it is counted and reported.
 #include <gtest/gtest.h>
 
 #include <algorithm>  // std::sort
@@ -492,10 +492,10 @@ TEST(AxisSegment, IsTheQueryForRadiusZero) {
 }
 
 // ------------------------------------------------------------------------------------------------
-// §2 formulation
+// The LCP method's formulation
 // ------------------------------------------------------------------------------------------------
 
-// The spec's eq. (12) sign, b = +A k, would be minimising the distance to −k. Check our b = −A k
+// The published note's eq. (12) sign, b = +A k, would be minimising the distance to −k. Check our b = −A k
 // directly on the LCP data: with x at the projection of k onto the box, the KKT residual vanishes.
 TEST(QuadraticProgrammingFormulation, LinearTermIsMinusAk) {
     // Box [−1, 1]³, axis z, centre (3, 0, 0): A = diag(1, 1, 0), k = c + ℓ = (4, 1, 1), b = −(4, 1, 0).
@@ -810,19 +810,19 @@ TEST(QuadraticProgrammingRandom, RationalUnitDirectionsAgreeWithOracle) {
         const auto got = algo::quadratic_programming(box, u);
         ASSERT_TRUE(got.has_value());
         // The LCP itself: solved exactly when box ∩ slab ≠ ∅, a ray (infeasible, M copositive-plus)
-        // when the §1.6 cull applies.
+        // when the slab cull applies.
         const auto lcp = algo::make_qp_lcp(box, u);
         const auto sol = solve_lcp(lcp.q, lcp.M);
         if (algo::box_outside_slab(box, u)) {
             EXPECT_EQ(sol.status, LcpStatus::no_solution) << "seed " << seed << " case " << i;
         } else {
             EXPECT_TRUE(is_lcp_solution(lcp.q, lcp.M, sol)) << "seed " << seed << " case " << i;
-            // And the spec's 8×8 problem alone (no axis-segment pre-step, no zero-extent or h = 0
+            // And the published 8×8 problem alone (no axis-segment pre-step, no zero-extent or h = 0
             // reformulation) decides the same way: its minimum d² against r².
             const Vec3<Rational> delta = Vec3<Rational>{sol.z[0], sol.z[1], sol.z[2]} - (u.center + box.extents);
             const Rational along = dot(u.direction, delta);
             EXPECT_EQ(dot(delta, delta) - along * along <= u.radius * u.radius, truth)
-                << "spec formulation, seed " << seed << " case " << i;
+                << "published formulation, seed " << seed << " case " << i;
         }
         max_pivots = std::max(max_pivots, sol.pivots);
         EXPECT_EQ(*got, truth) << "seed " << seed << " case " << i << ": extents (" << box.extents[0] << ", "
@@ -863,7 +863,7 @@ TEST(QuadraticProgrammingRandom, ExactAgreesOnBoundaryPairs) {
 
 // ------------------------------------------------------------------------------------------------
 // Rounded arithmetic (double, float): every answer returned must be right unless the case is near
-// touching (issue #3). A solver failure (std::nullopt) is no answer: it is counted and reported (the
+// touching (tests/support/tolerance.hpp). A solver failure (std::nullopt) is no answer: it is counted and reported (the
 // front door falls back to the exact path), and capped as a guard on the reformulations.
 // ------------------------------------------------------------------------------------------------
 
@@ -873,7 +873,7 @@ Vec3<U> in(const Vec3<double>& v) {
 }
 
 // The query as the front door runs it in U: inputs converted to U, unit axis (to_unit), then the
-// §1.3/§1.4 reduction to_canonical.
+// reduction to the canonical frame to_canonical.
 template <class U>
 CanonicalQuery<U> reduce_in(const Case& c) {
     const UnitCylinder<U> u = to_unit(Cylinder<U>{in<U>(c.cylinder.center), in<U>(c.cylinder.axis),
@@ -968,7 +968,7 @@ TEST(QuadraticProgrammingDouble, Regressions) {
     }
     for (std::size_t i = 0; i < formerly_failing.size(); ++i) {
         const Case& c = formerly_failing[i];
-        // Not a requirement of issue #3 (a failure is no wrong answer), but what the reformulations
+        // Not a correctness requirement (a failure is no wrong answer), but what the reformulations
         // are for: these now solve.
         EXPECT_TRUE(qp_rounded<double>(c).has_value()) << "formerly failing #" << i << ": " << describe(c);
         check_rounded<double>(r, c, bt::oracle_answer(c), bt::double_tolerance, "formerly failing #" + std::to_string(i));
@@ -987,7 +987,7 @@ TEST(QuadraticProgrammingDouble, RandomAgreesWithOracle) {
         check_rounded<double>(r, c, bt::oracle_answer(c), bt::double_tolerance,
                               "seed " + std::to_string(seed) + " case " + std::to_string(i));
     }
-    print_rounded("§2 double, random", r);
+    print_rounded("lcp double, random", r);
     EXPECT_GT(r.answered.hits, n / 5);
     EXPECT_LT(r.answered.hits, n * 4 / 5);
     // Measured: 1 failure in 20,000 (0 here). A jump means a reformulation broke.
@@ -1011,7 +1011,7 @@ TEST(QuadraticProgrammingDouble, BoundaryPairs) {
         check_rounded<double>(r, a, bt::oracle_answer(a), bt::double_tolerance, where);
         check_rounded<double>(r, b, bt::oracle_answer(b), bt::double_tolerance, where);
     }
-    print_rounded("§2 double, boundary pairs", r);
+    print_rounded("lcp double, boundary pairs", r);
 }
 
 // Float: the double inputs rounded to float, then the same path. Cases outside float's range (huge
@@ -1032,7 +1032,7 @@ TEST(QuadraticProgrammingFloat, RandomAgreesWithOracle) {
         check_rounded<float>(r, c, bt::oracle_answer(c), bt::float_tolerance,
                              "seed " + std::to_string(seed) + " case " + std::to_string(i));
     }
-    print_rounded("§2 float, random", r);
+    print_rounded("lcp float, random", r);
     // Measured: 2.4% (boxes thin relative to float precision, mostly). A jump means a reformulation broke.
     EXPECT_LE(r.failures * 20, n) << "more than 5% solver failures";
 }

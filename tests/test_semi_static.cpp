@@ -281,7 +281,7 @@ std::optional<bool> stage0(const Case& c, bool sound = true) {
 }
 
 
-// The branch-free forms that stage 0 uses for speed (issue #5) give the same values as the plain
+// The branch-free forms that stage 0 uses for speed give the same values as the plain
 // forms they replaced, bit for bit, on every kind of double: ±0, subnormals, ±∞, NaN.
 TEST(SemiStatic, BranchFreeHelpersKeepTheirValues) {
     static_assert(abs_value(-2.5) == 2.5 && abs_value(0.0) == 0.0);  // still usable in constant expressions
@@ -415,7 +415,7 @@ TEST(SemiStatic, RandomDecisionsAgreeWithOracle) {
         std::printf("stage 0, random %-9s: decided %ld of %ld (%.1f%%)\n", names[k], d.decided, d.cases,
                     100.0 * double(d.decided) / double(d.cases));
         EXPECT_EQ(d.wrong, 0);
-        // Measured ≈ 88–91%: the filter must keep deciding most random queries (issue #4's speed).
+        // Measured ≈ 88–91%: the filter must keep deciding most random queries (its speed).
         EXPECT_GT(d.decided, d.cases * 85 / 100) << names[k];
     }
     Decisions frames;

@@ -1,4 +1,4 @@
-// Inputs for the batch API (issue #5; tests/test_batch.cpp, bench/bench_batch.cpp): one cylinder and
+// Inputs for the batch API (tests/test_batch.cpp, bench/bench_batch.cpp): one cylinder and
 // many boxes around it, built from the tests' generators (cases.hpp: CaseGenerator's cylinders and
 // random distributions, random_rotation, random_signed_permutation), so that about half the boxes
 // hit; flat, thin and point boxes included. Also boxes one ulp from touching (bisection over adjacent

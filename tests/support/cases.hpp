@@ -125,7 +125,8 @@ public:
                 break;
             case BoxKind::oriented:
                 c.oriented.center = origin;
-                // A quarter get an exactly orthonormal frame, so exact §2/§4 are tested on oriented boxes too.
+                // A quarter get an exactly orthonormal frame, so the exact LCP/linear-inequalities methods
+                // are tested on oriented boxes too.
                 c.oriented.axes = uniform(0, 1) < 0.25 ? random_signed_permutation(rng_) : random_rotation(rng_);
                 c.oriented.extents = ext;
                 break;

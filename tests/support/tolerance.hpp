@@ -16,8 +16,8 @@
 namespace boxcyl::testing {
 
 // τ for double-precision algorithms: 2^-40 ≈ 9.1e-13 relative to the problem's largest magnitude
-// (about 2^12 ulps: room for the rounding of normalisation, reductions and the §4 formulas, while a
-// wrong formula shows up as an O(1) gap). Single precision gets 2^-16 ≈ 1.5e-5.
+// (about 2^12 ulps: room for the rounding of normalisation, reductions and the linear-inequalities
+// formulas, while a wrong formula shows up as an O(1) gap). Single precision gets 2^-16 ≈ 1.5e-5.
 inline constexpr double double_tolerance = 0x1p-40;
 inline constexpr double float_tolerance = 0x1p-16;
 
