@@ -1,6 +1,6 @@
 // The LCP method: the LCP solver (Lemke's method, lexicographic anti-cycling), the axis-segment
-// pre-step, and the box–cylinder test as a convex QP. Exact expectations in Rational / QFRational; the exact oracle
-// judges the query. In float/double every answer must be right unless the case is near touching
+// pre-step, and the box–cylinder test as a convex QP. Exact expectations in Rational / QFRational; the exact
+// oracle judges the query. In float/double every answer must be right unless the case is near touching
 // (the tolerance rule); a solver failure (std::nullopt) is not an answer — it is counted and reported.
 #include <gtest/gtest.h>
 
@@ -863,8 +863,8 @@ TEST(QuadraticProgrammingRandom, ExactAgreesOnBoundaryPairs) {
 
 // ------------------------------------------------------------------------------------------------
 // Rounded arithmetic (double, float): every answer returned must be right unless the case is near
-// touching (tests/support/tolerance.hpp). A solver failure (std::nullopt) is no answer: it is counted and reported (the
-// front door falls back to the exact path), and capped as a guard on the reformulations.
+// touching (tests/support/tolerance.hpp). A solver failure (std::nullopt) is no answer: it is counted and
+// reported (the front door falls back to the exact path), and capped as a guard on the reformulations.
 // ------------------------------------------------------------------------------------------------
 
 template <class U>
