@@ -1,4 +1,4 @@
-// The batch API (issue #5): one cylinder against N boxes, exactly, with a SIMD filter and threads.
+// The batch API: one cylinder against N boxes, exactly, with a SIMD filter and threads.
 //
 //   boxcyl::batch::intersects(cylinder, boxes, out[, Options{threads}]) -> Stats
 //

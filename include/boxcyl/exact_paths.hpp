@@ -1,15 +1,16 @@
-// Running the specification's algorithms in exact arithmetic (Arithmetic::exact): each input double
+// Running the three methods (docs/algorithms.md) in exact arithmetic (Arithmetic::exact): each input double
 // becomes the rational it denotes, the unit axis u = D/|D| becomes (D/d)·√d in Q(√d), d = D·D, and
-// the algorithm runs on QFRational — no rounding anywhere (issue #3).
+// the algorithm runs on QFRational — no rounding anywhere.
 //
-// Frames: aligned and canonical boxes reduce exactly (§1.3). An oriented box is the parallelepiped its
-// axes span; §3 works on it directly in world coordinates. §2 and §4 need the canonical frame, which
+// Frames: aligned and canonical boxes reduce exactly (a translation). An oriented box is the parallelepiped
+// its axes span; the convex-hull method works on it directly in world coordinates. The LCP and
+// linear-inequalities methods need the canonical frame, which
 // is exact only when the axes are exactly orthonormal (checked exactly; true for signed permutations
 // and rational rotations, almost never for rounded rotations); otherwise they cannot answer exactly for
 // that box and throw std::domain_error rather than answer for a different box.
 #pragma once
 
-#include <optional>   // §2's result
+#include <optional>   // the LCP method's result
 #include <stdexcept>  // std::domain_error, std::logic_error
 
 #include "boxcyl/algo/convex_hull.hpp"
@@ -70,7 +71,7 @@ inline bool intersects(Method m, const OrientedBox<Rational>& box, const Cylinde
     if (m == Method::hull) return algo::convex_hull(algo::as_parallelepiped(detail::lift(box)), u);
     if (!detail::exactly_orthonormal(box))
         throw std::domain_error(
-            "boxcyl: exact §2/§4 need an exactly orthonormal box frame; these oriented-box axes are only "
+            "boxcyl: exact lcp/inequalities need an exactly orthonormal box frame; these oriented-box axes are only "
             "orthonormal up to rounding (use Algorithm::hull or Algorithm::oracle for an exact answer)");
     return detail::run_canonical(m, to_canonical(detail::lift(box), u));
 }

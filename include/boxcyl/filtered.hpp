@@ -1,4 +1,4 @@
-// The filtered exact query (issue #4): the exact answer for double inputs, at close to floating-point
+// The filtered exact query: the exact answer for double inputs, at close to floating-point
 // speed. Semantics as the oracle's (docs/robustness.md): every double is the rational it denotes, the
 // cylinder axis is axis/|axis| exactly, an oriented box is the parallelepiped its axes span exactly as
 // given, both solids are closed (touching intersects).
@@ -9,21 +9,21 @@
 //   Stage 0b, searched certificates (filtered/witness_search.hpp): the axis point nearest to the box
 //   and a few alternating projections give a separating direction or a witness point, which stage
 //   0's tests (and two-point forms of them) certify; ≈95% of the queries stage 0 leaves end here.
-//   Stage 1, the certified filter: the canonical problem (§1.3/§1.4) is built in an enclosure type N
+//   Stage 1, the certified filter: the canonical problem (the box's frame) is built in an enclosure type N
 //   so that it encloses the exact one — first Bounded (number/bounded.hpp: a double and a running
 //   error bound, cheap), then Interval (number/interval.hpp: tighter) if that could not decide — and
-//   the same generic §4 code, algo::linear_inequalities<N>, runs on it inside an UncertaintyScope. If no comparison was
-//   undecided, every real problem inside the intervals takes the same branches to the same answer;
-//   the exact problem is one of them, so that answer is exact. Oriented boxes whose axes are not
-//   exactly orthonormal are first widened by a proved bound η (docs/robustness.md §3).
-//   Where §4 stays undecided on degenerate shapes (disks, flat boxes, segments), hit certificates
+//   the same generic linear-inequalities code, algo::linear_inequalities<N>, runs on it inside an
+//   UncertaintyScope. If no comparison was undecided, every real problem inside the intervals takes the same
+//   branches to the same answer; the exact problem is one of them, so that answer is exact. Oriented boxes
+//   whose axes are not exactly orthonormal are first widened by a proved bound η (docs/robustness.md §4).
+//   Where it stays undecided on degenerate shapes (disks, flat boxes, segments), hit certificates
 //   (certain_hit, frame_hit: a witness point solved exactly in real arithmetic, only inequalities
 //   checked on enclosures) and thickened sizes (misses) decide most of the rest (docs/robustness.md §5).
 //   Before stage 2, a thorough witness search tries once more to certify a hit.
-//   Stage 2, the exact fallback (only when stage 1 could not decide): §4 in Q(√d) for aligned and
-//   canonical boxes and for exactly orthonormal frames (signed permutations: the only exactly
-//   orthonormal frames of doubles), §3 on the exact parallelepiped otherwise (exact_paths.hpp). The
-//   oracle is not used: it stays the independent judge of this code.
+//   Stage 2, the exact fallback (only when stage 1 could not decide): linear inequalities in Q(√d) for
+//   aligned and canonical boxes and for exactly orthonormal frames (signed permutations: the only exactly
+//   orthonormal frames of doubles), the convex-hull method on the exact parallelepiped otherwise
+//   (exact_paths.hpp). The oracle is not used: it stays the independent judge of this code.
 //
 // Preconditions: validate() holds for the box and the cylinder (asserted in debug builds). Invalid
 // finite input never gets a wrong stage-1 answer (frames further than 2^-10 from orthonormal skip the
@@ -40,7 +40,7 @@
 //   BOXCYL_CHECK_FILTER=1  whenever stage 1 decides, also run stage 2; on a mismatch throw
 //                          std::logic_error naming the case (hex floats, copy-pasteable).
 //
-// §3 (convex hull) is deliberately not offered as a filtered stage 1: it sorts points with std::sort,
+// The convex-hull method is deliberately not offered as a filtered stage 1: it sorts points with std::sort,
 // which needs a strict weak order, and an undecided interval comparison answers arbitrarily, so the
 // sort itself could misbehave before the scope reports the doubt (docs/robustness.md).
 #pragma once
@@ -113,7 +113,8 @@ N scaled_nonneg(double x, int k) {
 
 // Problem scaling: the question is invariant under scaling every length by 2^k (the axis direction
 // is unchanged). When the largest length M is far from 1 the computation would over- or underflow
-// (§4 forms products of up to four lengths), so the lengths are scaled to M ∈ [1, 2).
+// (the linear-inequalities code forms products of up to four lengths), so the lengths are scaled to
+// M ∈ [1, 2).
 inline int scale_exponent(double m) {
     if (!(m > 0) || !(m < std::numeric_limits<double>::infinity())) return 0;
     const int e = std::ilogb(m);
@@ -158,7 +159,8 @@ Vec3<N> unit_direction(const Vec3<double>& axis) {
     return normalised(prescaled_axis<N>(axis));
 }
 
-// Runs §4 on the enclosed problem: the answer if every comparison was decided, else nullopt.
+// Runs the linear-inequalities method on the enclosed problem: the answer if every comparison was decided,
+// else nullopt.
 template <class N>
 std::optional<bool> run_li(const CanonicalQuery<N>& q) {
     UncertaintyScope scope;
@@ -176,11 +178,12 @@ bool thicken(N& size, double delta) {
     return true;
 }
 
-// A cheap certificate of a miss ahead of §4 (not in the specification): the separating axes U_i of the
-// box. The cylinder's extent along U_i is w_i = H|d_i| + r·√(d_j² + d_k²) (the axis segment plus the
-// widest chord of a cross-section, √(1 − d_i²) written without cancellation), so the solids are apart
-// if |c_i| − e_i − H|d_i| > r·√(d_j² + d_k²), i.e. if that left side s is > 0 and s² > r²(d_j² + d_k²).
-// Only a certain "apart" counts; an undecided comparison just leaves the question to §4.
+// A cheap certificate of a miss ahead of the linear-inequalities method (not in the published note): the
+// separating axes U_i of the box. The cylinder's extent along U_i is w_i = H|d_i| + r·√(d_j² + d_k²) (the
+// axis segment plus the widest chord of a cross-section, √(1 − d_i²) written without cancellation), so the
+// solids are apart if |c_i| − e_i − H|d_i| > r·√(d_j² + d_k²), i.e. if that left side s is > 0 and
+// s² > r²(d_j² + d_k²). Only a certain "apart" counts; an undecided comparison just leaves the question to the
+// linear-inequalities method.
 template <class N>
 bool apart_along_box_axes(const CanonicalQuery<N>& q) {
     UncertaintyScope scope;
@@ -197,8 +200,9 @@ bool apart_along_box_axes(const CanonicalQuery<N>& q) {
     return false;
 }
 
-// Cheap certificates of a hit (not in the specification), tried only where §4 was undecided: the
-// degenerate shapes (disks, flat boxes, segments) whose §4 branches compare rounding noise, but whose
+// Cheap certificates of a hit (not in the published note), tried only where the linear-inequalities
+// method was undecided: the degenerate shapes (disks, flat boxes, segments) whose branches there
+// compare rounding noise, but whose
 // hits usually have a witness far from touching. A witness is a segment of points that lie in the box
 // for sure, parallel to the cylinder axis d (so all at the same distance from the axis line), that
 // reaches the slab |t| ≤ H for sure:
@@ -313,7 +317,7 @@ bool certain_hit(const CanonicalQuery<N>& q) {
 // certifies a miss) and an enclosure `inner` of a problem contained in it (a hit of inner certifies a
 // hit), or null if there is none. Usually both are the exact problem's enclosure (&inner == &outer).
 //
-// When undecided and a size may be 0 or nearly (flat box, segment, disk), §4 meets degenerate clipped
+// When undecided and a size may be 0 or nearly (flat box, segment, disk), the method meets degenerate clipped
 // segments whose two ends are one point computed by two formulas: their difference is rounding noise
 // of either sign, and the branch on it cannot be decided. Thickening every size below
 // δ = 2^-30·scale to δ gives a problem that still contains the exact one and is not degenerate: if it
@@ -357,8 +361,8 @@ std::optional<bool> decide(const CanonicalQuery<N>& q, double scale) {
 
 // The problem q with every cylinder size grown by `on_cyl` and every box extent by `on_box` (outer:
 // it contains a solid pair that contains the exact one), and shrunk by the same (inner: contained in
-// it; exists only if no size goes below 0). The sizes become points (a size enclosure would let §4 see
-// e − e ≠ 0 and lose the sign of every degenerate difference): outer sizes are rounded up after
+// it; exists only if no size goes below 0). The sizes become points (a size enclosure would let the method
+// see e − e ≠ 0 and lose the sign of every degenerate difference): outer sizes are rounded up after
 // adding, inner ones down after subtracting.
 template <class N>
 struct Widened {
@@ -385,17 +389,17 @@ Widened<N> widen(const CanonicalQuery<N>& q, double on_cyl, double on_box) {
     return w;
 }
 
-// Tiny axis components (docs/robustness.md §6). A non-zero component below 2^-30 of the largest makes
+// Tiny axis components (docs/robustness.md §4b). A non-zero component below 2^-30 of the largest makes
 // a unit-axis component near or below the rounding of the others (often subnormal): its sign is exact
-// in the input but lost in the enclosures, and every comparison that depends on it (the §4 class, the
+// in the input but lost in the enclosures, and every comparison that depends on it (the direction class, the
 // reflection) is undecided. The axis a' with those (at most two) components set to 0 is within angle
 // θ = |u − u'| ≤ 2|a − a'|/|a| ≤ 2·2·2^-30 = 2^-28 of a, and a cylinder turned by θ about its centre
 // moves each point of the axis segment by at most θH and each point of a cross-section by at most θr:
 //   cyl(u; r, H) ⊆ cyl(u'; r + θH, H + θr) ⊆ cyl(u'; r + η, H + η),  η = θ(H + r),
-// and by the same argument with u and u' swapped, cyl(u'; r − η, H − η) ⊆ cyl(u; r, H). So §4 on the
+// and by the same argument with u and u' swapped, cyl(u'; r − η, H − η) ⊆ cyl(u; r, H). So the method on the
 // axis a' with the cylinder widened by η certifies misses, and narrowed by η certifies hits, exactly
 // as for the nearly orthonormal frames. The widened problems have exact zero components (the cheap
-// §4 classes) and only cases within η ≈ 2^-28·(H + r) of touching remain undecided: those run §4 on
+// direction classes) and only cases within η ≈ 2^-28·(H + r) of touching remain undecided: those run on
 // the axis as given next.
 inline bool tiny_components_zeroed(const Vec3<double>& a, Vec3<double>& zeroed) {
     double m = 0;
@@ -407,8 +411,8 @@ inline bool tiny_components_zeroed(const Vec3<double>& a, Vec3<double>& zeroed) 
         if (a[i] != 0 && std::fabs(a[i]) <= limit) zeroed[i] = 0, any = true;
     return any;
 }
-// §4 for the cylinder axis a (the other sizes of q already set; `direction_of` turns a unit-axis
-// enclosure into the box frame's direction, e.g. a signed permutation).
+// The linear-inequalities method for the cylinder axis a (the other sizes of q already set; `direction_of`
+// turns a unit-axis enclosure into the box frame's direction, e.g. a signed permutation).
 template <class N, class Frame>
 std::optional<bool> decide_axis(CanonicalQuery<N> q, const Vec3<double>& a, Frame&& direction_of, double scale) {
     Vec3<double> a0;
@@ -432,7 +436,7 @@ std::optional<bool> decide_axis(const CanonicalQuery<N>& q, const Vec3<double>& 
 
 // ---- Stage 1 for each box kind: nullopt when undecided. ----
 
-// §1.2: the box is exact; only the unit axis and, for extreme magnitudes, the scaling round.
+// Canonical box: the box is exact; only the unit axis and, for extreme magnitudes, the scaling round.
 template <class N>
 std::optional<bool> filter(const CanonicalBox<double>& b, const Cylinder<double>& c) {
     double m = 0;
@@ -451,7 +455,7 @@ std::optional<bool> filter(const CanonicalBox<double>& b, const Cylinder<double>
     return decide_axis(q, c.axis, std::ldexp(m, k));
 }
 
-// §1.3: K = (min + max)/2, E = (max − min)/2, C − K, all enclosed. Halving first (min/2 + max/2)
+// Aligned box: K = (min + max)/2, E = (max − min)/2, C − K, all enclosed. Halving first (min/2 + max/2)
 // keeps finite inputs from overflowing; a flat side (min == max) keeps E = 0 and K = min exact.
 template <class N>
 std::optional<bool> filter(const AlignedBox<double>& b, const Cylinder<double>& c) {
@@ -606,7 +610,7 @@ bool frame_disk_hit(const Vec3<N>& delta, const Vec3<N> (&A)[3], const Vec3<N>& 
     return false;
 }
 
-// §1.4 with the axes as given. For a signed permutation, C' = Aᵀ(C − K) and D' = Aᵀu are exact
+// Oriented box, with the axes as given. For a signed permutation, C' = Aᵀ(C − K) and D' = Aᵀu are exact
 // permutations of enclosures. Otherwise A = QS (polar decomposition) is only nearly orthogonal and the
 // problem is widened by η (docs/robustness.md §4):
 //   g ≥ ‖AᵀA − I‖₂ (max row sum of |G|, G symmetric), γ = g·|e|, ε = g·(|C − K| + h + 2r),

@@ -1,4 +1,4 @@
-// Grid query (issue #5): every cell of a regular axis-aligned grid that a cylinder intersects, exactly.
+// Grid query: every cell of a regular axis-aligned grid that a cylinder intersects, exactly.
 //
 // The grid's cells are closed boxes whose bounds are doubles, defined once here and used everywhere:
 //

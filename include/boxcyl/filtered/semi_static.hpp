@@ -1,6 +1,7 @@
-// Stage 0 of the filtered exact query (issue #4): a semi-static filter in plain double.
+// Stage 0 of the filtered exact query: a semi-static filter in plain double.
 //
-// A handful of cheap geometric tests decide most queries far from touching before §4 runs at all:
+// A handful of cheap geometric tests decide most queries far from touching before the
+// linear-inequalities method runs at all:
 //   misses: a separating axis — a box face normal E_i, the cylinder axis d, or d × E_i;
 //   hits:   the cylinder centre inside the box; a witness point Q of the box inside the cylinder
 //           (Q: the box point nearest to the cylinder centre, the box centre, and the box point
@@ -519,7 +520,7 @@ inline void set_units(Problem& p, double l, double g) {
     p.g = g;
 }
 
-// §1.2: the box is canonical, the cylinder already in its frame: nothing rounds but the unit axis.
+// Canonical box: the box is canonical, the cylinder already in its frame: nothing rounds but the unit axis.
 BOXCYL_STAGE0_INLINE bool problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.extents), largest(cyl.center), cyl.radius, cyl.height});
     if (!in_range(l) || !usable_axis(cyl.axis)) return false;
@@ -540,7 +541,7 @@ BOXCYL_STAGE0_INLINE bool problem(const CanonicalBox<double>& b, const Cylinder<
     return true;
 }
 
-// §1.3: centre K and extents E rounded (in the model); "C in the box" is decided exactly.
+// Aligned box: centre K and extents E rounded (in the model); "C in the box" is decided exactly.
 BOXCYL_STAGE0_INLINE bool problem(const AlignedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.min), largest(b.max), largest(cyl.center), cyl.radius, cyl.height});
     if (!in_range(l) || !usable_axis(cyl.axis)) return false;
@@ -564,7 +565,7 @@ BOXCYL_STAGE0_INLINE bool problem(const AlignedBox<double>& b, const Cylinder<do
     return true;
 }
 
-// §1.4 with the frame as given: g bounds ‖AᵀA − I‖₂ (max row sum of |G|). The computed Gram entries
+// Oriented box, with the frame as given: g bounds ‖AᵀA − I‖₂ (max row sum of |G|). The computed Gram entries
 // are within γ3·|A_i||A_j| ≤ 3.0003ε of the exact ones (the diagonal's "− 1" is exact by Sterbenz's
 // lemma, as |A_i|² ∈ [0.5, 2]), a row sum of three rounds twice: so g ≤ row + 10ε, and
 // g = fl(row + 32ε) is an upper bound.

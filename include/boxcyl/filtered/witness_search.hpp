@@ -1,11 +1,11 @@
-// Searched certificates (issues #4 and #5): stage 0b of the filtered query, and its last try before
+// Searched certificates: stage 0b of the filtered query, and its last try before
 // exact arithmetic. Where stage 0's fixed candidates fail, the certificate is usually still far from
 // degenerate, just not at a fixed place: a box corner cutting into the cylinder's side or a cap, a
 // flat box crossing it off centre, a miss separated only by a direction through the rim. A search in
 // plain double finds a candidate, and stage 0's tests (semi_static.hpp: error bounds computed at
 // compile time) certify it; the search itself need not be accurate, only the final test is sound.
 //
-// Stage 0b, `decide` (after stage 0, before stage 1's §4 on enclosures):
+// Stage 0b, `decide` (after stage 0, before stage 1's linear inequalities on enclosures):
 //   1. the axis-segment point P nearest to the box (Newton on the derivative of the squared distance,
 //      which is monotone and piecewise linear in the axial parameter) and the box point Q nearest to P:
 //      P − Q is the separating direction of most misses the face, axis and d × E_i tests leave (the

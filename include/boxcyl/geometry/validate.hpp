@@ -1,4 +1,4 @@
-// Input validation at the boundary (STYLE §13): kernels assume valid input; the CLI, the bindings and
+// Input validation at the boundary: kernels assume valid input; the CLI, the bindings and
 // careful callers ask validate() first. It names the first bad field and why.
 //
 // The input policy (also README "What the answer means"; tests/test_validate.cpp checks it field by field):

@@ -1,8 +1,8 @@
 // A double with a running error bound (Wilkinson's running error analysis), the fast stage of the
-// certified filter (issue #4): value v and bound e with |exact − v| ≤ e for the real number the
+// certified filter: value v and bound e with |exact − v| ≤ e for the real number the
 // computation stands for. Every operation is a handful of branch-free flops and inlines, several
 // times cheaper than outward-rounded intervals (interval.hpp, the second stage), at the price of
-// slightly wider bounds. docs/robustness.md §5 derives every bound below; in short:
+// slightly wider bounds. docs/robustness.md §3b derives every bound below; in short:
 //
 //  * u = 2^-52 bounds the relative rounding error of one operation in every IEEE rounding mode (one
 //    ulp, not half), so the bounds do not depend on the rounding mode. For a normal result r, the
@@ -15,13 +15,13 @@
 //  * The bounds themselves are computed in floating point from non-negative terms by sums, products
 //    and quotients by a positive lower bound, so each rounding lowers them by a factor ≥ (1 − u) at
 //    most. Comparisons inflate the final bound by M = 1 + 2^-30, which covers chains of up to 2^21
-//    roundings — the §4 computation has a few hundred.
+//    roundings — the linear-inequalities computation has a few hundred.
 //  * An operand that is an exact zero (v = 0, e = 0) gives an exact zero product and quotient, and
 //    exact operands that sum to 0 give an exact 0: the exact zeros of degenerate inputs (flat boxes,
 //    axis-aligned directions, zero-length clipped edges) stay exactly zero and decidable.
 //  * Overflow gives v = ±∞ with e = ∞ (or NaN); every comparison that involves them is undecided.
 //  * FMA contraction can only remove roundings, and every bound holds for the contracted evaluation
-//    too (docs/robustness.md §5).
+//    too (docs/robustness.md §3b).
 //
 // Comparisons behave as Interval's: when the bounds cannot separate the operands the comparison is
 // undecided, returns false and records it in the current UncertaintyScope (interval.hpp).

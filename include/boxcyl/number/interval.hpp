@@ -1,4 +1,4 @@
-// Closed intervals of doubles with outward rounding, for the certified filter (issue #4).
+// Closed intervals of doubles with outward rounding, for the certified filter.
 //
 // Each operation is evaluated once in the current rounding mode and its bounds are then moved one
 // double outward. That is sound with no change of rounding mode: any IEEE rounding mode returns a

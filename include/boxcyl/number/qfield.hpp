@@ -1,6 +1,6 @@
 // Numbers a + b·√d over an exact ordered field R (GMP rationals), for one radicand d ≥ 0 shared by a
 // whole computation. They make the cylinder axis u = D/|D| exact for any rational direction D:
-// |D| = √(D·D), so u = (D/d)·√d with d = D·D (§2 "rational quadratic fields").
+// |D| = √(D·D), so u = (D/d)·√d with d = D·D (the published note's "rational quadratic fields").
 //
 // The radicand is held by pointer to a `QuadraticField<R>` that must outlive the numbers made from
 // it. Pure rationals (b == 0) carry no radicand and mix with any field. Mixing two different fields

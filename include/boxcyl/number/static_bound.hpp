@@ -1,4 +1,4 @@
-// Compile-time forward error analysis for the semi-static filter (filtered/semi_static.hpp, issue #4).
+// Compile-time forward error analysis for the semi-static filter (filtered/semi_static.hpp).
 //
 // A StaticBound stands for a quantity computed in plain double from inputs of known magnitude and
 // error, in units of a per-query length scale L:

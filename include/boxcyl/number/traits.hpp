@@ -1,5 +1,5 @@
 // What a number type can do. Algorithms are written once over T; they ask these traits instead of
-// assuming floating point (STYLE §2, §avoid-GT): an exact T never reaches std::sqrt.
+// assuming floating point: an exact T never reaches std::sqrt.
 #pragma once
 
 #include <cmath>        // std::sqrt for the floating-point specialisation
@@ -25,7 +25,7 @@ template <class T>
 inline constexpr bool is_exact_v = number_traits<T>::is_exact;
 
 // The only door to a square root. Instantiating it for an exact type is a compile error, by design:
-// exact paths reformulate instead of normalising (issue #3).
+// exact paths reformulate instead of normalising, so that they stay exact.
 template <class T>
 T inexact_sqrt(const T& x) {
     static_assert(number_traits<T>::has_sqrt,
