@@ -226,7 +226,7 @@ std::vector<std::string> verdict_lines(const Explanation& e) {
             const bool above = e.box_axial_min > e.half_height;
             return {"No part of the box lies between the cylinder's end planes: the whole box is " +
                         std::string(above ? "beyond the +axis end" : "beyond the −axis end") + " (see 'along the axis').",
-                    "So there is no blue polygon; the end-plane test (§1.6 slab cull) alone decides."};
+                    "So there is no blue polygon; the end-plane test (the slab cull) alone decides."};
         }
         case Case::not_drawable:
             return {"The coordinates are too large to draw in double precision (they overflow);",

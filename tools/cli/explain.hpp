@@ -1,5 +1,6 @@
-// `boxcyl explain`: one query in, one SVG picture out (the §3 view along the cylinder axis, the verdict,
-// small orthographic views). The geometry is boxcyl/explain/explanation.hpp; this file only draws it.
+// `boxcyl explain`: one query in, one SVG picture out (the convex-hull method's view along the cylinder axis,
+// the verdict, small orthographic views). The geometry is boxcyl/explain/explanation.hpp; this file only
+// draws it.
 #pragma once
 
 #include <cstddef>  // std::size_t

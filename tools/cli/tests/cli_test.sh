@@ -61,7 +61,7 @@ examples_every_algorithm)
             same_bytes "$work/out" "$expected/queries.out"
         done
     done
-    # Exact §2/§4 refuse an oriented box whose axes are orthonormal only up to rounding, naming why,
+    # Exact lcp/inequalities refuse an oriented box whose axes are orthonormal only up to rounding, naming why,
     # and answer the aligned and exactly orthonormal ones.
     printf '%s\n' \
       '{"box": {"min": [0,0,0], "max": [1,1,1]}, "cylinder": {"center": [1.5,0.5,0.5], "axis": [0,0,1], "radius": 0.5, "height": 1}}' \

@@ -433,7 +433,7 @@ TEST(JsonlStream, ThreadedOutputIsByteIdenticalToSerial) {
 }
 
 
-// --- hostile input (issue 7): every bad line gets its error line, the run goes on ---
+// --- hostile input: every bad line gets its error line, the run goes on ---
 
 const std::string kGood = R"({"id": 1, )" + kBox + ", " + kCyl + "}";
 
