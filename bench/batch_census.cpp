@@ -1,8 +1,8 @@
-// Where the batch's undecided lanes go (issue #5, docs/performance.md): for bench_batch's near-surface
+// Where the batch's undecided lanes go (docs/performance.md): for bench_batch's near-surface
 // sets (the same 32 mixed cylinders × 2048 aligned and 2048 oriented boxes), every box that the SIMD
 // filter leaves to the scalar exact default, by the cylinder's shape (segment r = 0, disk h = 0,
 // regular), by the answer, and by the scalar stage that decides it (0: semi_static, 0b:
-// witness_search, 1: certified §4, thorough hit search, exact). Counts only — deterministic, the same
+// witness_search, 1: certified linear inequalities, thorough hit search, exact). Counts only — deterministic, the same
 // on every machine and kernel (each lane is decided on its own); bench_batch times them.
 // Run: build-batch/bench/batch_census
 #include <cstdint>  // seeds

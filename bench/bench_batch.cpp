@@ -1,4 +1,4 @@
-// The batch API (boxcyl/batch.hpp, issue #5): per-box cost of the batch against the scalar exact
+// The batch API (boxcyl/batch.hpp): per-box cost of the batch against the scalar exact
 // default on the same data, single- and multi-threaded, the fraction of lanes that went to the scalar
 // path, and the throughput on 10 million double aligned boxes beside the memory bandwidth measured on
 // the same arrays in the same run.
@@ -21,7 +21,7 @@
 // (48 bytes per box) on real time, and for `stream_sum` the bandwidth of summing the same six arrays
 // (one thread, and all threads split like the batch). The 10M runs also measure that bandwidth
 // themselves (stream_GB_per_s, the fastest of five passes with the same threads) and report
-// bandwidth_share_pct: the batch's throughput as a share of it, issue #5's goal being ≥ 50.
+// bandwidth_share_pct: the batch's throughput as a share of it, the goal being ≥ 50.
 //
 // Kernels: each batch run twice, `automatic` (boxcyl::batch_dispatch's choice for this CPU, named in
 // the label) and `compiled` (the header's portable kernel).
@@ -262,14 +262,14 @@ void large_batch(benchmark::State& state, bool voxels, unsigned threads, batch::
     state.counters["ns_per_box"] = benchmark::Counter(n * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
     state.counters["GB_per_s"] = benchmark::Counter(n * kBytesPerBox * 1e-9, benchmark::Counter::kIsRate);
     state.counters["stream_GB_per_s"] = kLarge * kBytesPerBox * 1e-9 / stream_s;
-    state.counters["bandwidth_share_pct"] = 100.0 * stream_s / batch_s;  // issue #5's goal: ≥ 50
+    state.counters["bandwidth_share_pct"] = 100.0 * stream_s / batch_s;  // the goal: ≥ 50
     state.counters["exact_pct"] = 100.0 * static_cast<double>(exact) / n;
     state.counters["second_pass_pct"] = 100.0 * static_cast<double>(second) / n;
     state.counters["hit_pct"] = 100.0 * static_cast<double>(hits) / kLarge;
     state.SetLabel(batch::name(ran));
 }
 
-// The scalar exact default on the first million boxes of the same 10M set, one thread: issue #5's
+// The scalar exact default on the first million boxes of the same 10M set, one thread: the goal
 // "batch ≤ 1/4 of the scalar per box" on these data, against large_batch/.../threads_1's ns_per_box.
 void large_scalar(benchmark::State& state, bool voxels) {
     const Large& l = large(voxels);

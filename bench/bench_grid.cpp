@@ -1,4 +1,4 @@
-// The grid query (boxcyl/grid.hpp, issue #5) on a 1000³-cell grid (10^9 cells): time per query, the
+// The grid query (boxcyl/grid.hpp) on a 1000³-cell grid (10^9 cells): time per query, the
 // cells found, and the exact box-cylinder queries it made (its cost model: blocks pruned, cells tested).
 // Brute force would make 10^9 exact queries; `cell_query/random` times one exact query on random cells
 // of the grid (mostly far from the cylinder, as brute force's would be), so that its cost can be

@@ -1,9 +1,9 @@
-// Time per query of boxcyl's default exact query and of each algorithm in each arithmetic (issue #4),
+// Time per query of boxcyl's default exact query and of each algorithm in each arithmetic,
 // on random inputs and on one-ulp boundary inputs, with a summary from the same run: each query's
-// time relative to plain double §4 on the same inputs, and the fraction of queries that needed the
+// time relative to the plain double linear-inequalities query on the same inputs, and the fraction of queries that needed the
 // exact fallback. scripts/bench.sh runs it and writes docs/performance.md.
 // Built with -DBOXCYL_BENCH_PEERS=ON, it also times the same queries through FCL, Bullet and ODE
-// (issue #5; peers.cpp), checks their answers against the oracle, and reports every time relative
+// (peers.cpp), checks their answers against the oracle, and reports every time relative
 // to the default exact query as well.
 //
 // Method: the inputs are generated once, before any timing, with fixed seeds (tests/support/cases.hpp).
@@ -104,9 +104,9 @@ bool query(const Box& box, const Cylinder<double>& cyl) {
     } else if constexpr (M == Method::float_s4) {
         return intersects(box, cyl, {Algorithm::inequalities, Arithmetic::float32});
     } else if constexpr (M == Method::exact_path) {
-        // What one fallback costs, chosen as filtered.hpp's stage 2 chooses: exact §4 where the
-        // canonical frame is exact (aligned and canonical boxes, signed-permutation frames), exact §3
-        // on any other oriented box.
+        // What one fallback costs, chosen as filtered.hpp's stage 2 chooses: exact linear inequalities
+        // where the canonical frame is exact (aligned and canonical boxes, signed-permutation frames),
+        // the exact convex-hull method on any other oriented box.
         Algorithm a = Algorithm::inequalities;
         if constexpr (std::is_same_v<Box, OrientedBox<double>>)
             if (!signed_permutation(box.axes)) a = Algorithm::hull;
@@ -126,9 +126,9 @@ bool answer_or_throw(const Case& c) {
     return false;
 }
 
-// §2 in double falls back to exact §2 when its solver fails, and exact §2 throws std::domain_error
-// on an oriented box whose axes are not exactly orthonormal: such queries count as errors (answer
-// false) rather than end the run.
+// The LCP method in double falls back to exact LCP when its solver fails, and exact LCP throws
+// std::domain_error on an oriented box whose axes are not exactly orthonormal: such queries count as
+// errors (answer false) rather than end the run.
 template <Method M>
 bool answer(const Case& c) {
     if constexpr (M == Method::double_s2) {
@@ -242,7 +242,7 @@ Check check(const DataSet& s, std::size_t n, const char* key) {
 
 // ---- registry of what was registered, for the summary ----
 
-// A peer library's disagreements with the oracle, split (issue #5).
+// A peer library's disagreements with the oracle, split.
 struct PeerDetail {
     bool present = false;
     long false_pos = 0, false_neg = 0;
@@ -420,8 +420,8 @@ const Entry* find(const std::string& set, const char* key) {
 std::string fraction_text(double f) { return f < 0 ? "" : f == 0 ? "0" : fmt("%.3g", f); }
 
 // Writes the summary as Markdown to `out` (stdout, and the --markdown file): one table per full data
-// set, then the default query against its baseline on subsets (where its time goes), then issue #4's
-// goal.
+// set, then the default query against its baseline on subsets (where its time goes), then the
+// default query's speed goals.
 void print_summary(std::FILE* out, const std::vector<DataSet>& sets, long sample, long sample_exact) {
     for (Entry& e : g_entries)
         if (e.ns_median < 0) e.ns_median = median(e.ns_reps);
@@ -499,7 +499,7 @@ void print_summary(std::FILE* out, const std::vector<DataSet>& sets, long sample
                          fmt("%.0f", x->ns_median / b->ns_median).c_str(), fmt("%.0f", x->ns_median / b->ns_median).c_str(),
                          fmt("%.1e", 0.25 * b->ns_median / x->ns_median).c_str());
     }
-    // Issue #5's goal, on the random queries: FCL's GJK box–cylinder test / the default query ≥ 50.
+    // The goal against FCL, on the random queries: FCL's GJK box–cylinder test / the default query ≥ 50.
     // FCL's GJK is GST_INDEP: for a yes/no query (no contact data) FCL's default solver GST_LIBCCD
     // does not run GJK at all but libccd's MPR (fcl/narrowphase/detail/convexity_based_algorithm/
     // gjk_libccd-inl.h, GJKCollide: `if (!contact_points) return ccdMPRIntersect(...)`). Both are

@@ -1,4 +1,4 @@
-// Peer libraries answering boxcyl's queries (issue #5); see peers.hpp.
+// Peer libraries answering boxcyl's queries; see peers.hpp.
 //
 // Mapping of one query, the same for every library (computed in double from the same inputs):
 // - box: centre, rotation R whose columns are the box axes, half extents. Aligned box: centre

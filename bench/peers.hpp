@@ -1,4 +1,4 @@
-// The same box–cylinder queries through peer collision libraries (issue #5): FCL's GJK, Bullet's GJK
+// The same box–cylinder queries through peer collision libraries: FCL's GJK, Bullet's GJK
 // pair detector and ODE's dCollide, from Debian's packages. Built only with -DBOXCYL_BENCH_PEERS=ON
 // (bench/CMakeLists.txt); bench_query.cpp times them beside boxcyl's queries in the same run.
 //
