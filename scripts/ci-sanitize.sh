@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CI's sanitizer configuration (issue 7; scripts/test.sh runs it after the plain suite). One clang build
+# CI's sanitizer configuration (scripts/test.sh runs it after the plain suite). One clang build
 # with AddressSanitizer + UndefinedBehaviorSanitizer (plus libFuzzer's coverage instrumentation, so the
 # same objects serve the fuzzers) of the input-facing targets only, to stay within CI's time budget:
 #   1. tests under the sanitizers: the input policy (test_validate), the CLI's JSON Lines layer and

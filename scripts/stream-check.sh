@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Streaming check of `boxcyl intersect` (issue 7, recorded in docs/reliability.md): generates LINES query
+# Streaming check of `boxcyl intersect` (recorded in docs/reliability.md): generates LINES query
 # lines (default 10,000,000; every 1000th bad: empty, truncated, invalid value, invalid UTF-8) with
 # tools/cli/tests/gen_queries.sh, runs the Release CLI on them once per THREADS value (default 1 2)
 # under /usr/bin/time -v, and prints for each run: wall time, lines/s, input MB/s, CPU time (user + sys,

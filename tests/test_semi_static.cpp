@@ -1,4 +1,4 @@
-// Issues #4 and #5, stages 0 and 0b of the filtered query (include/boxcyl/filtered/semi_static.hpp,
+// Stages 0 and 0b of the filtered query (include/boxcyl/filtered/semi_static.hpp,
 // witness_search.hpp): plain-double tests whose error bounds κ·ρ·L^k are computed at compile time
 // from input models, on fixed candidates (stage 0) and searched ones (stage 0b).
 //  * The models and the κ hold: every test's double value is within κ·ρ·L^k of its value on the ideal
