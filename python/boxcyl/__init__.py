@@ -97,8 +97,9 @@ def intersects(box, cylinder, *, algorithm=Algorithm.inequalities, arithmetic=Ar
     box : AlignedBox or OrientedBox
     cylinder : Cylinder
     algorithm : Algorithm or its name, optional
-        ``"inequalities"`` (the specification's §4, default), ``"hull"`` (§3), ``"lcp"`` (§2) or
-        ``"oracle"`` (the exact reference).
+        ``"inequalities"`` (the linear-inequalities method, default), ``"hull"`` (the convex-hull
+        method), ``"lcp"`` (convex quadratic programming as an LCP) or ``"oracle"`` (the exact
+        reference); docs/algorithms.md describes them.
     arithmetic : Arithmetic or its name, optional
         ``"filtered"`` (default: the exact answer, with a fast certified filter), ``"exact"``, or the
         plain rounded ``"float64"`` / ``"float32"``, which may misjudge inputs within a tiny gap of
@@ -112,9 +113,9 @@ def intersects(box, cylinder, *, algorithm=Algorithm.inequalities, arithmetic=Ar
     Raises
     ------
     ValueError
-        For exact §2/§4 (``arithmetic="exact"``, algorithm ``"lcp"``/``"inequalities"``) on an
+        For ``arithmetic="exact"`` with algorithm ``"lcp"`` or ``"inequalities"`` on an
         oriented box whose axes are orthonormal only up to rounding, which they cannot treat
-        exactly; the default and §3 handle any valid box.
+        exactly; the default and ``"hull"`` handle any valid box.
     """
     return _core.intersects(box, cylinder, *_options(algorithm, arithmetic))
 

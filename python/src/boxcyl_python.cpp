@@ -138,7 +138,7 @@ py::array_t<bool> run_batch(py::ssize_t n, BoxAt box_at, bool box_single, const 
         try {
             for (; i < n; ++i)
                 result[i] = boxcyl::intersects(box_at(i), cylinder_at(center, axis, radius, height, i), opt);
-        } catch (const std::domain_error& e) {  // e.g. exact §2/§4 asked for a frame not exactly orthonormal
+        } catch (const std::domain_error& e) {  // e.g. exact lcp/inequalities asked for a frame not exactly orthonormal
             throw std::domain_error(element_name("box", "boxes", box_single, i) + ": " + e.what());
         }
     }
@@ -216,11 +216,11 @@ PYBIND11_MODULE(_core, m) {
     m.attr("__version__") = BOXCYL_VERSION_STRING;
 
     py::enum_<boxcyl::Algorithm>(m, "Algorithm",
-                                 "Which algorithm answers: the specification's §4 (default), §3, §2, or the "
-                                 "exact oracle.")
-        .value("inequalities", boxcyl::Algorithm::inequalities, "§4 linear inequalities (the default)")
-        .value("hull", boxcyl::Algorithm::hull, "§3 clip, project, convex hull")
-        .value("lcp", boxcyl::Algorithm::lcp, "§2 convex quadratic programming (Lemke)")
+                                 "Which algorithm answers: linear inequalities (default), convex hull, LCP, "
+                                 "or the exact oracle (docs/algorithms.md).")
+        .value("inequalities", boxcyl::Algorithm::inequalities, "the linear-inequalities method (the default)")
+        .value("hull", boxcyl::Algorithm::hull, "the convex-hull method: clip, project, 2-D hull")
+        .value("lcp", boxcyl::Algorithm::lcp, "convex quadratic programming as an LCP (Lemke's method)")
         .value("oracle", boxcyl::Algorithm::oracle, "the exact reference");
     py::enum_<boxcyl::Arithmetic>(m, "Arithmetic",
                                   "Which arithmetic: filtered (default: the exact answer, fast), exact, or "
