@@ -41,7 +41,7 @@ $table
 - The linear-inequalities and convex-hull methods in double are wrong only on boundary inputs, i.e.
   where the exact answer is decided within a few ulps; on random inputs they never were.
 - **The published note's warning that the LCP method is not robust in floating point holds for
-  the method as published** (its 8×8 LCP with the sign of **b** corrected, `spec_form_lcp` in
+  the method as published** (its 8×8 LCP with the sign of **b** corrected, \`spec_form_lcp\` in
   \`tests/accuracy_report.cpp\`): solved by Lemke's method in double, it fails (spurious ray
   termination) on a noticeable fraction of ordinary inputs, mostly thin boxes, h = 0 and r = 0, and
   answers wrongly where it should not (a segment through a box gives a rounded d² > 0). boxcyl's LCP
