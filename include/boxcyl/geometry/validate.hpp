@@ -23,9 +23,10 @@
 #pragma once
 
 #include <array>        // OrientedBox::axes
-#include <cmath>        // std::isfinite, std::fabs
+#include <cmath>        // std::fabs, std::isnan, std::isinf
 #include <cstddef>      // std::size_t
 #include <cstdio>       // std::snprintf
+#include <limits>       // std::numeric_limits
 #include <string>       // field names and reasons
 #include <string_view>  // prefixes
 #include <type_traits>  // std::is_floating_point_v
@@ -50,21 +51,27 @@ inline constexpr double orthonormality_tolerance = 1e-4;
 
 namespace detail {
 
-// --- the checks themselves: booleans, no strings ---
+// --- the checks themselves: booleans, no strings, combined with & rather than && so that valid
+// input (the common case) takes no branch per field ---
+
+template <class T>
+bool finite(T x) noexcept {
+    return std::fabs(x) <= std::numeric_limits<T>::max();  // false for NaN and ±Inf
+}
 
 template <class T>
 bool finite3(const Vec3<T>& p) noexcept {
-    return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+    return finite(p[0]) & finite(p[1]) & finite(p[2]);
 }
 
 template <class T>
 bool size_ok(T x) noexcept {
-    return std::isfinite(x) && !(x < T(0));
+    return finite(x) & !(x < T(0));
 }
 
 template <class T>
 bool is_zero3(const Vec3<T>& p) noexcept {
-    return p[0] == T(0) && p[1] == T(0) && p[2] == T(0);
+    return (p[0] == T(0)) & (p[1] == T(0)) & (p[2] == T(0));
 }
 
 // The Gram entry Ai·Aj in long double, so that the check itself cannot overflow for finite input of
@@ -82,12 +89,21 @@ bool gram_entry_ok(const std::array<Vec3<T>, 3>& a, std::size_t i, std::size_t j
     return std::fabs(gram(a, i, j) - target) <= orthonormality_tolerance;
 }
 
-// |Ai·Aj − δij| ≤ 1e-4 for all i ≤ j, as gram_entry_ok() decides it. Fast path for float and double:
-// the six entries in double, and when each is within 0.9e-4 of its target the long double ones are
-// within 1e-4 too (the rows then have length ≤ 1.0001, so the double and the long double entries
-// differ by less than 1e-15); otherwise (near the tolerance, overflow, a bad frame) long double decides.
+// |Ai·Aj − δij| ≤ 1e-4 for all i ≤ j, as gram_entry_ok() decides it.
 template <class T>
-bool axes_orthonormal(const std::array<Vec3<T>, 3>& a) noexcept {
+bool gram_ok(const std::array<Vec3<T>, 3>& a) noexcept {
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = i; j < 3; ++j)
+            if (!gram_entry_ok(a, i, j)) return false;
+    return true;
+}
+
+// A sufficient condition for gram_ok(), cheap for float and double: the six entries in double each
+// within 0.9e-4 of their targets. The rows then have length ≤ 1.0001, so the double and the long
+// double entries differ by less than 1e-15 and the latter are within 1e-4 too. When this fails (near
+// the tolerance, overflow, a bad frame), gram_ok() decides.
+template <class T>
+bool gram_clearly_ok(const std::array<Vec3<T>, 3>& a) noexcept {
     if constexpr (std::is_floating_point_v<T> && sizeof(T) <= sizeof(double)) {
         bool clear = true;
         for (std::size_t i = 0; i < 3; ++i)
@@ -97,12 +113,10 @@ bool axes_orthonormal(const std::array<Vec3<T>, 3>& a) noexcept {
                                  static_cast<double>(a[i][2]) * static_cast<double>(a[j][2]);
                 clear &= std::fabs(g - (i == j ? 1.0 : 0.0)) <= 0.9 * orthonormality_tolerance;
             }
-        if (clear) return true;
+        return clear;
+    } else {
+        return false;
     }
-    for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = i; j < 3; ++j)
-            if (!gram_entry_ok(a, i, j)) return false;
-    return true;
 }
 
 // --- the messages: built only once a check has failed ---
@@ -226,27 +240,31 @@ Validity describe(const OrientedBox<T>& b, const std::string& prefix) {
 // True when validate() would say ok: the same checks, without building any text.
 template <class T>
 bool is_valid(const Cylinder<T>& c) noexcept {
-    return detail::finite3(c.center) && detail::finite3(c.axis) && !detail::is_zero3(c.axis) &&
-           detail::size_ok(c.radius) && detail::size_ok(c.height);
+    return detail::finite3(c.center) & detail::finite3(c.axis) & !detail::is_zero3(c.axis) &
+           detail::size_ok(c.radius) & detail::size_ok(c.height);
 }
 
 template <class T>
 bool is_valid(const AlignedBox<T>& b) noexcept {
-    return detail::finite3(b.min) && detail::finite3(b.max) && !(b.max[0] < b.min[0]) && !(b.max[1] < b.min[1]) &&
+    return detail::finite3(b.min) & detail::finite3(b.max) & !(b.max[0] < b.min[0]) & !(b.max[1] < b.min[1]) &
            !(b.max[2] < b.min[2]);
 }
 
 template <class T>
 bool is_valid(const CanonicalBox<T>& b) noexcept {
-    return detail::size_ok(b.extents[0]) && detail::size_ok(b.extents[1]) && detail::size_ok(b.extents[2]);
+    return detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) & detail::size_ok(b.extents[2]);
 }
 
 template <class T>
 bool is_valid(const OrientedBox<T>& b) noexcept {
-    return detail::finite3(b.center) && detail::finite3(b.axes[0]) && detail::finite3(b.axes[1]) &&
-           detail::finite3(b.axes[2]) && detail::size_ok(b.extents[0]) && detail::size_ok(b.extents[1]) &&
-           detail::size_ok(b.extents[2]) && !detail::is_zero3(b.axes[0]) && !detail::is_zero3(b.axes[1]) &&
-           !detail::is_zero3(b.axes[2]) && detail::axes_orthonormal(b.axes);
+    const bool others = detail::finite3(b.center) & detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) &
+                        detail::size_ok(b.extents[2]);
+    // gram_clearly_ok() implies finite, non-zero axes: a NaN or ±Inf component makes a Gram entry NaN
+    // or +Inf, a zero axis makes |Ai|² zero.
+    if (others && detail::gram_clearly_ok(b.axes)) return true;
+    return others && detail::finite3(b.axes[0]) && detail::finite3(b.axes[1]) && detail::finite3(b.axes[2]) &&
+           !detail::is_zero3(b.axes[0]) && !detail::is_zero3(b.axes[1]) && !detail::is_zero3(b.axes[2]) &&
+           detail::gram_ok(b.axes);
 }
 
 // Names the first bad field and why. `prefix` names the object in messages ("cylinder", or
