@@ -113,8 +113,8 @@ inline exact::Method exact_method(Algorithm a) {
 
 template <class Box, class T>
 bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
-    assert(validate(box).ok() && "boxcyl::intersects: invalid box (see boxcyl::validate)");
-    assert(validate(cyl).ok() && "boxcyl::intersects: invalid cylinder (see boxcyl::validate)");
+    assert(is_valid(box) && "boxcyl::intersects: invalid box (see boxcyl::validate)");
+    assert(is_valid(cyl) && "boxcyl::intersects: invalid cylinder (see boxcyl::validate)");
     const bool rounded_arithmetic = opt.arithmetic == Arithmetic::float32 || opt.arithmetic == Arithmetic::float64;
     if (opt.algorithm != Algorithm::oracle && rounded_arithmetic) {
         const std::optional<bool> r = opt.arithmetic == Arithmetic::float32 ? rounded<float>(opt.algorithm, box, cyl)

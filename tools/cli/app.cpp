@@ -3,9 +3,11 @@
 
 #include <cerrno>      // errno after a failed open
 #include <cstring>     // std::strerror
+#include <exception>   // the last-resort handler
 #include <filesystem>  // refuse directories (they "open" but read nothing)
 #include <fstream>     // input files
 #include <iostream>    // the standard streams
+#include <limits>      // option ranges
 #include <string>      // help text
 #include <vector>      // option value lists
 
@@ -51,8 +53,11 @@ OUTPUT
     {"id": ID, "intersect": true}   or   {"id": ID, "intersect": false}
     {"id": ID, "error": "line N: FIELD: REASON"}       for a bad line
   ("id" only when the line has a valid one). A bad line is invalid JSON, a missing or
-  mistyped field, an invalid value (e.g. "line 7: cylinder.radius: is negative") or an
-  empty line; the tool reports it and goes on with the next line.
+  mistyped field, an invalid value (e.g. "line 7: cylinder.radius: is negative"), an
+  empty line, a line longer than --max-line-bytes (skipped without being kept in memory:
+  "line 2: line is longer than N bytes ...") or a line that memory did not suffice to
+  answer ("line 2: out of memory answering the line"); the tool reports it and goes on
+  with the next line.
 
 EXIT STATUS
   0  every line was a good query (also for empty input)
@@ -74,9 +79,11 @@ std::vector<std::string> names_of(const Table& table) {
 
 // The options of `intersect`, from the tables, for the top-level --help (which CLI11 would not show).
 std::string options_section() {
-    std::string s = "OPTIONS OF intersect\n  boxcyl intersect [--algorithm NAME] [--arithmetic NAME] [--threads N] [FILE|-]\n";
+    std::string s = "OPTIONS OF intersect\n  boxcyl intersect [--algorithm NAME] [--arithmetic NAME] [--threads N] [--max-line-bytes N] [FILE|-]\n";
     s += "  FILE: JSON Lines input; '-' or none reads standard input.\n";
     s += "  --threads N: answer blocks of lines on N threads (default 1; 0: one per core); same output\n";
+    s += "  --max-line-bytes N: longest line read (default " + std::to_string(default_max_line_bytes) +
+         "); a longer line\n    is skipped without being kept in memory and answered with an error line\n";
     s += "  --algorithm NAME (default " + std::string(default_algorithm) + ")\n";
     for (const auto& row : algorithm_choices)
         s += "    " + std::string(row.name) + ": " + std::string(row.description) + "\n";
@@ -96,6 +103,24 @@ std::string describe(const std::string& what, const Table& table) {
         s += row.description;
     }
     return s;
+}
+
+// When the command line chose no subcommand, what to say instead of CLI11's "A subcommand is required"
+// (which it also says for a misspelt one): the unknown word or option, and the valid subcommands.
+// Empty when a subcommand was chosen.
+std::string missing_subcommand_message(CLI::App& app) {
+    std::string valid;
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+        if (sub->parsed()) return {};
+        valid += valid.empty() ? "" : ", ";
+        valid += sub->get_name();
+    }
+    const std::vector<std::string> rest = app.remaining();
+    if (rest.empty()) return "boxcyl: a subcommand is required: " + valid;
+    const std::string& first = rest.front();
+    if (!first.empty() && first.front() == '-')
+        return "boxcyl: unknown option '" + first + "' (a subcommand is required: " + valid + ")";
+    return "boxcyl: unknown subcommand '" + first + "'; valid subcommands: " + valid;
 }
 
 int run_on(std::istream& input, std::ostream& out, const RunOptions& options, unsigned threads) {
@@ -131,6 +156,8 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
                           "Threads answering lines (default 1; 0: one per core); the output is the same, in input order")
         ->check(CLI::Range(0u, 1024u));
     intersect->add_option("file", file, "JSON Lines input; '-' or none: standard input");
+    std::size_t max_line_bytes = default_max_line_bytes;
+    add_max_line_bytes_option(*intersect, max_line_bytes);
     ExplainCommand explain;
     add_explain_command(app, explain);
     GridCommand grid;
@@ -139,6 +166,10 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
+        if (const std::string m = missing_subcommand_message(app); !m.empty()) {
+            err << m << "\nRun with --help for more information.\n";
+            return exit_usage;
+        }
         const int code = app.exit(e, out, err);
         return code == 0 ? exit_ok : exit_usage;
     }
@@ -146,7 +177,8 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
     if (explain.app->parsed()) return run_explain(explain, in, out, err);
     if (grid.app->parsed()) return run_grid(grid, in, out, err);
 
-    const RunOptions options = make_run_options(algorithm, arithmetic);
+    RunOptions options = make_run_options(algorithm, arithmetic);
+    options.max_line_bytes = max_line_bytes;
 #if !defined(BOXCYL_HAS_EXACT)
     if (options.query.algorithm == Algorithm::oracle) {
         err << "boxcyl: --algorithm oracle needs the exact backend (GMP); this build has none\n";
@@ -158,6 +190,13 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
     std::optional<std::ifstream> f = open_input(file, err);
     if (!f) return exit_usage;
     return run_on(*f, out, options, threads);
+}
+
+void add_max_line_bytes_option(CLI::App& sub, std::size_t& value) {
+    sub.add_option("--max-line-bytes", value,
+                   "Longest input line read, in bytes (default " + std::to_string(default_max_line_bytes) +
+                       "); a longer line is skipped unread and gets an error line")
+        ->check(CLI::Range(std::size_t{1}, std::numeric_limits<std::size_t>::max() / 2));
 }
 
 std::optional<std::ifstream> open_input(const std::string& file, std::ostream& err) {
@@ -178,7 +217,15 @@ int run_app(int argc, const char* const* argv) {
     // Unsynchronised streams buffer properly; process_stream flushes whenever input runs dry.
     std::ios::sync_with_stdio(false);
     std::cin.tie(nullptr);  // no flush per read: process_stream decides
-    return run_app(argc, argv, std::cin, std::cout, std::cerr);
+    try {
+        return run_app(argc, argv, std::cin, std::cout, std::cerr);
+    } catch (const std::exception& e) {
+        // Lines report their own failures (memory included); this is what is left, e.g. no memory
+        // for a thread. The answers written so far stand, in order.
+        std::cout.flush();
+        std::cerr << "boxcyl: stopped: " << e.what() << "\n";
+        return exit_usage;
+    }
 }
 
 }  // namespace boxcyl::cli

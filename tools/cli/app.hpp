@@ -1,10 +1,15 @@
 // The command line of `boxcyl`: options, help text, input selection and exit codes.
 #pragma once
 
+#include <cstddef>   // std::size_t
 #include <fstream>   // std::ifstream
 #include <iosfwd>    // std::istream, std::ostream
 #include <optional>  // open_input's failure
 #include <string>    // file names
+
+namespace CLI {
+class App;
+}
 
 namespace boxcyl::cli {
 
@@ -18,6 +23,9 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
 
 // The same on the process's standard streams.
 int run_app(int argc, const char* const* argv);
+
+// Adds --max-line-bytes (the longest input line kept; default_max_line_bytes) to a subcommand.
+void add_max_line_bytes_option(CLI::App& sub, std::size_t& value);
 
 // Opens a subcommand's input file (binary), or says on `err` why not ("boxcyl: cannot open 'F': ...";
 // a directory is refused: it opens but reads nothing) and returns nullopt: exit with exit_usage.

@@ -2,6 +2,7 @@
 // cylinder, error lines) is jsonl_query's, and the geometry is the library's (boxcyl/grid.hpp).
 #include "grid.hpp"
 
+#include <algorithm>   // std::sort
 #include <array>       // the counts
 #include <cstdint>     // std::int64_t, std::uint64_t
 #include <cstring>     // std::strerror
@@ -9,6 +10,7 @@
 #include <fstream>     // input files
 #include <istream>     // std::getline
 #include <limits>      // the int64 range
+#include <new>         // std::bad_alloc
 #include <ostream>     // output lines
 #include <string>      // help text, output lines
 #include <vector>      // the cells
@@ -48,7 +50,10 @@ OUTPUT
   Exactly one JSON line per input line, in input order:
     {"id": ID, "cells": [[i,j,k], ...], "count": N}   the cells, in lexicographic order of (i,j,k)
     {"id": ID, "error": "line N: FIELD: REASON"}       for a bad line, as `boxcyl intersect`
-  ("id" only when the line has a valid one). The tool reports a bad line and goes on.
+  ("id" only when the line has a valid one). The tool reports a bad line and goes on. A line
+  whose answer has more than --max-cells cells (default 1000000) gets the error line
+  "line N: the answer has more than M cells ...", found without listing them all; lines
+  longer than --max-line-bytes, and lines memory does not suffice for, as for intersect.
 
 EXIT STATUS
   0  every line was a good query (also for empty input)
@@ -109,7 +114,27 @@ std::string format_cells(const std::string& id, const std::vector<CellIndex>& ce
 
 }  // namespace
 
-LineAnswer answer_grid_line(std::string_view text, std::size_t line_number) {
+namespace {
+
+#if defined(BOXCYL_HAS_EXACT)
+// Thrown out of the grid walk when the answer would exceed --max-cells.
+struct TooManyCells {};
+
+// for_each_cell's cells, at most max_cells of them, in lexicographic order; throws TooManyCells
+// as soon as there are more, without finishing the walk.
+std::vector<CellIndex> bounded_cells(const Grid& grid, const Cylinder<double>& cylinder, std::int64_t max_cells) {
+    std::vector<CellIndex> out;
+    const auto max = static_cast<std::size_t>(max_cells);
+    for_each_cell(grid, cylinder, [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+        if (out.size() == max) throw TooManyCells{};
+        out.push_back({i, j, k});
+    });
+    std::sort(out.begin(), out.end());
+    return out;
+}
+#endif
+
+LineAnswer answer_grid_line_unguarded(std::string_view text, std::size_t line_number, const GridOptions& opt) {
 #if defined(BOXCYL_HAS_EXACT)
     Grid grid;
     Cylinder<double> cylinder;
@@ -121,20 +146,40 @@ LineAnswer answer_grid_line(std::string_view text, std::size_t line_number) {
         return {};
     });
     if (!o.error.empty()) return {format_error(o.id, o.error), false};
+    const std::string where = "line " + std::to_string(line_number) + ": ";
     try {
-        return {format_cells(o.id, cells(grid, cylinder)), true};
+        return {format_cells(o.id, bounded_cells(grid, cylinder, opt.max_cells)), true};
+    } catch (const TooManyCells&) {
+        return {format_error(o.id, where + "the answer has more than " + std::to_string(opt.max_cells) +
+                                       " cells (--max-cells)"),
+                false};
+    } catch (const std::bad_alloc&) {
+        return {format_error(o.id, where + "out of memory answering the line"), false};
     } catch (const std::exception& e) {
-        // Not expected for validated input (short of memory for a huge answer); reported per line.
-        return {format_error(o.id, "line " + std::to_string(line_number) + ": query failed: " + e.what()), false};
+        // Not expected for validated input; reported per line.
+        return {format_error(o.id, where + "query failed: " + e.what()), false};
     }
 #else
-    (void)text;
+    (void)text, (void)opt;
     return {format_error({}, "line " + std::to_string(line_number) + ": grid needs the exact backend (GMP)"), false};
 #endif
 }
 
-std::size_t process_grid_stream(std::istream& in, std::ostream& out) {
-    return process_lines(in, out, [](std::string_view line, std::size_t n) { return answer_grid_line(line, n); });
+}  // namespace
+
+LineAnswer answer_grid_line(std::string_view text, std::size_t line_number, const GridOptions& opt) {
+    try {
+        return answer_grid_line_unguarded(text, line_number, opt);
+    } catch (const std::bad_alloc&) {
+        return {format_error({}, "line " + std::to_string(line_number) + ": out of memory answering the line"), false};
+    } catch (const std::exception& e) {
+        return {format_error({}, "line " + std::to_string(line_number) + ": " + e.what()), false};
+    }
+}
+
+std::size_t process_grid_stream(std::istream& in, std::ostream& out, const GridOptions& opt) {
+    return process_lines(in, out, opt.max_line_bytes,
+                         [&opt](std::string_view line, std::size_t n) { return answer_grid_line(line, n, opt); });
 }
 
 void add_grid_command(CLI::App& app, GridCommand& cmd) {
@@ -142,6 +187,11 @@ void add_grid_command(CLI::App& app, GridCommand& cmd) {
         "grid", "For each input line (a grid and a cylinder), list the grid cells the cylinder intersects");
     cmd.app->footer(grid_help);
     cmd.app->add_option("file", cmd.file, "JSON Lines input; '-' or none: standard input");
+    add_max_line_bytes_option(*cmd.app, cmd.options.max_line_bytes);
+    cmd.app->add_option("--max-cells", cmd.options.max_cells,
+                        "Most cells one answer may list (default " + std::to_string(default_max_cells) +
+                            "); a line whose answer has more gets an error line")
+        ->check(CLI::Range(std::int64_t{0}, std::numeric_limits<std::int64_t>::max()));
 }
 
 int run_grid(const GridCommand& cmd, std::istream& in, std::ostream& out, std::ostream& err) {
@@ -151,7 +201,7 @@ int run_grid(const GridCommand& cmd, std::istream& in, std::ostream& out, std::o
     return exit_usage;
 #else
     auto run_on = [&](std::istream& input) {
-        const std::size_t bad = process_grid_stream(input, out);
+        const std::size_t bad = process_grid_stream(input, out, cmd.options);
         if (input.bad()) return exit_usage;  // a read error: the output is incomplete
         return bad == 0 ? exit_ok : exit_bad_lines;
     };

@@ -10,12 +10,14 @@
 #include "jsonl_query.hpp"
 
 #include <algorithm>           // std::max
+#include <array>               // read_line's chunk
 #include <condition_variable>  // process_stream's hand-offs between threads
 #include <cstdint>             // integer SAX events
 #include <deque>               // blocks in flight
 #include <exception>           // failures of the library call
-#include <istream>             // std::getline
+#include <istream>             // std::istream::getline
 #include <memory>              // blocks
+#include <new>                 // std::bad_alloc
 #include <mutex>               // process_stream's shared state
 #include <ostream>             // output lines
 #include <thread>              // process_stream's workers
@@ -33,7 +35,8 @@ using json = nlohmann::json;
 // Builds a nlohmann::json value from SAX events, tracking where in the document the parser is.
 class DomBuilder {
 public:
-    explicit DomBuilder(json& root) : root_(root) {}
+    // `budget`: about how many bytes of memory the DOM may take (see charge()).
+    DomBuilder(json& root, std::size_t budget) : root_(root), budget_(budget) {}
 
     bool null() { return put(nullptr) != nullptr; }
     bool boolean(bool b) { return put(b) != nullptr; }
@@ -49,7 +52,7 @@ public:
         note_id_text(text);
         return put(v) != nullptr;
     }
-    bool string(json::string_t& s) { return put(std::move(s)) != nullptr; }
+    bool string(json::string_t& s) { return charge(s.size()) && put(std::move(s)) != nullptr; }
     bool binary(json::binary_t& b) { return put(json::binary(std::move(b))) != nullptr; }
 
     bool start_object(std::size_t) { return open(json::object()); }
@@ -58,6 +61,7 @@ public:
     bool end_array() { return close(); }
 
     bool key(json::string_t& k) {
+        if (!charge(member_cost + k.size())) return false;
         Frame& f = stack_.back();
         f.key = k;
         if (f.node->contains(k)) {
@@ -90,6 +94,7 @@ private:
     // Adds a value where the parser is: the root, the next array element or the current key's value.
     template <class V>
     json* put(V&& v) {
+        if (!charge(value_cost)) return nullptr;
         if (stack_.empty()) {
             root_ = json(std::forward<V>(v));
             return &root_;
@@ -104,6 +109,18 @@ private:
         return &slot;
     }
 
+    // Counts `bytes` against the budget; false (the parse stops) once it is spent. A hostile line of
+    // many small values ("[[],[],..." or {"a":0,"b":0,...}) would otherwise cost ~23 bytes of DOM per
+    // input byte.
+    bool charge(std::size_t bytes) {
+        used_ += bytes;
+        if (used_ <= budget_) return true;
+        if (error_.empty())
+            error_ = "too large to parse: its JSON values would take more than " + std::to_string(budget_) +
+                     " bytes of memory";
+        return false;
+    }
+
     bool open(json&& empty) {
         // A query needs depth 4; the limit keeps a hostile line ("[[[[...") from costing ~100 bytes of
         // DOM and stack per input byte.
@@ -112,6 +129,7 @@ private:
             return false;
         }
         json* p = put(std::move(empty));
+        if (p == nullptr) return false;
         stack_.push_back({p, {}});
         return true;
     }
@@ -161,11 +179,42 @@ private:
     }
 
     static constexpr std::size_t max_depth = 256;
+    // What one value and one object member take, about (a json is 16 bytes; an array element with the
+    // vector's growth up to 32; a member is a map node with its key and value).
+    static constexpr std::size_t value_cost = 32;
+    static constexpr std::size_t member_cost = 96;
 
     json& root_;
+    std::size_t budget_;
+    std::size_t used_ = 0;
     std::vector<Frame> stack_;
     std::string error_;
     std::string id_text_;
+};
+
+// Empties `v` bottom-up without allocating. nlohmann::json's destructor flattens a container's
+// children into a std::vector first, which can fail (and terminate, from a destructor) when memory
+// has just run out; destroying the emptied containers allocates nothing. Recursion depth is bounded
+// by DomBuilder's max_depth.
+void dismantle(json& v) noexcept {
+    if (v.is_array()) {
+        auto& a = v.get_ref<json::array_t&>();
+        while (!a.empty()) {
+            dismantle(a.back());
+            a.pop_back();
+        }
+    } else if (v.is_object()) {
+        auto& o = v.get_ref<json::object_t&>();
+        for (auto it = o.begin(); it != o.end(); it = o.erase(it)) dismantle(it->second);
+    }
+}
+
+struct DismantleOnExit {
+    json& v;
+    explicit DismantleOnExit(json& value) : v(value) {}
+    DismantleOnExit(const DismantleOnExit&) = delete;
+    DismantleOnExit& operator=(const DismantleOnExit&) = delete;
+    ~DismantleOnExit() { dismantle(v); }
 };
 
 // Serialises a string as a JSON string; invalid UTF-8 (possible in echoed input) becomes U+FFFD.
@@ -269,7 +318,9 @@ ObjectLine parse_object_line(std::string_view text, std::size_t line_number,
     }
 
     json root;
-    DomBuilder builder(root);
+    // A query takes about 2 KB of DOM; anything else may take 4 bytes per byte of the line.
+    DomBuilder builder(root, 64 * 1024 + 4 * text.size());
+    const DismantleOnExit dismantle_root(root);
     const bool parsed = json::sax_parse(text.begin(), text.end(), &builder);
     // The id is echoed whenever a valid one was read, even if the line fails later (a scalar enters
     // the DOM whole, so a present id is complete even in a partly parsed line).
@@ -345,7 +396,55 @@ std::string format_error(const std::string& id, const std::string& message) {
     return s;
 }
 
-LineAnswer answer_line(std::string_view text, std::size_t line_number, const RunOptions& opt) {
+LineRead read_line(std::istream& in, std::string& line, std::size_t max_bytes, std::ostream* flush_if_long) {
+    line.clear();
+    // istream::getline into a fixed buffer, chunk by chunk: the bytes beyond max_bytes are read and
+    // dropped, never kept (std::getline would grow the string to the whole line).
+    std::array<char, 64 * 1024> chunk;
+    std::size_t length = 0;  // bytes of the line so far, kept or not
+    LineRead status = LineRead::line;
+    bool flushed = false;
+    for (bool first = true;; first = false) {
+        in.getline(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+        const auto got = static_cast<std::size_t>(in.gcount());
+        const bool newline = !in.fail() && !in.eof();  // the line ended with its newline (extracted)
+        const bool full = in.fail() && !in.eof() && !in.bad();  // the chunk filled up: more follows
+        if (in.bad() || (first && got == 0 && in.eof())) return LineRead::end;
+        const std::size_t n = newline ? got - 1 : got;  // bytes stored in the chunk
+        if (flush_if_long && !flushed && length + n >= risky_line_bytes) {
+            flush_if_long->flush();
+            flushed = true;
+        }
+        length += n;
+        if (status == LineRead::line) {
+            if (length > max_bytes) {
+                status = LineRead::too_long;
+                std::string().swap(line);
+            } else {
+                try {
+                    line.append(chunk.data(), n);
+                } catch (const std::bad_alloc&) {
+                    status = LineRead::no_memory;
+                    std::string().swap(line);
+                }
+            }
+        }
+        if (!full) return status;  // newline or end of input
+        in.clear(in.rdstate() & ~std::ios::failbit);
+    }
+}
+
+LineAnswer unread_line_answer(LineRead r, std::size_t line_number, std::size_t max_bytes) {
+    const std::string where = "line " + std::to_string(line_number) + ": ";
+    if (r == LineRead::too_long)
+        return {format_error({}, where + "line is longer than " + std::to_string(max_bytes) + " bytes (--max-line-bytes)"),
+                false};
+    return {format_error({}, where + "out of memory reading the line"), false};
+}
+
+namespace {
+
+LineAnswer answer_line_unguarded(std::string_view text, std::size_t line_number, const RunOptions& opt) {
     ParsedLine p = parse_line(text, line_number);
     if (!p.query) return {format_error(p.id, p.error), false};
     const std::string where = "line " + std::to_string(line_number) + ": ";
@@ -359,16 +458,37 @@ LineAnswer answer_line(std::string_view text, std::size_t line_number, const Run
     }
 }
 
+}  // namespace
+
+LineAnswer answer_line(std::string_view text, std::size_t line_number, const RunOptions& opt) {
+    try {
+        return answer_line_unguarded(text, line_number, opt);
+    } catch (const std::bad_alloc&) {
+        // The parse of a long line needs ~23 bytes per byte; what it held is freed by now.
+        return {format_error({}, "line " + std::to_string(line_number) + ": out of memory answering the line"), false};
+    } catch (const std::exception& e) {
+        return {format_error({}, "line " + std::to_string(line_number) + ": " + e.what()), false};
+    }
+}
+
 namespace {
 
 std::size_t process_stream_serial(std::istream& in, std::ostream& out, const RunOptions& opt) {
-    return process_lines(in, out, [&opt](std::string_view line, std::size_t n) { return answer_line(line, n, opt); });
+    return process_lines(in, out, opt.max_line_bytes,
+                         [&opt](std::string_view line, std::size_t n) { return answer_line(line, n, opt); });
 }
 
 // Consecutive input lines and, once a worker has answered them, their output lines.
 struct Block {
+    Block() {
+        // Reserved up front, so that adding a line (whose text may have taken most of the memory
+        // left) never allocates.
+        lines.reserve(stream_block_lines);
+        status.reserve(stream_block_lines);
+    }
     std::size_t first_line = 0;  // the number of lines[0], from 1
     std::vector<std::string> lines;
+    std::vector<LineRead> status;  // per line: LineRead::line, or why lines[i] is empty
     std::size_t bytes = 0;
     std::string out;  // one newline-terminated output line per input line
     std::size_t bad = 0;
@@ -403,7 +523,10 @@ std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const R
             }
             try {
                 for (std::size_t i = 0; i < b->lines.size(); ++i) {
-                    const LineAnswer a = answer_line(b->lines[i], b->first_line + i, opt);
+                    const std::size_t n = b->first_line + i;
+                    const LineAnswer a = b->status[i] == LineRead::line
+                                             ? answer_line(b->lines[i], n, opt)
+                                             : unread_line_answer(b->status[i], n, opt.max_line_bytes);
                     b->out += a.text;
                     b->out += '\n';
                     if (!a.good) ++b->bad;
@@ -412,6 +535,7 @@ std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const R
                 b->failure = std::current_exception();
             }
             b->lines = {};  // the input is no longer needed
+            b->status = {};
             {
                 std::lock_guard lk(m);
                 b->done = true;
@@ -486,14 +610,21 @@ std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const R
             // Hand over a partial block before a read could block: an interactive caller waits for it.
             if (!block->lines.empty() && (in.rdbuf() == nullptr || in.rdbuf()->in_avail() <= 0) && !dispatch(block))
                 break;
-            if (!std::getline(in, line)) {
+            const LineRead r = read_line(in, line, opt.max_line_bytes);
+            if (r == LineRead::end) {
                 if (!block->lines.empty()) dispatch(block);
                 break;
             }
+            // A long line (or one not kept) gets a block of its own: the lines before it are answered
+            // and written whatever happens to it.
+            if (r != LineRead::line || line.size() >= risky_line_bytes)
+                if (!block->lines.empty() && !dispatch(block)) break;
             if (block->lines.empty()) block->first_line = line_number + 1;
             ++line_number;
             block->bytes += line.size();
-            block->lines.push_back(std::move(line));
+            block->lines.push_back(std::move(line));  // no allocation: the block reserved its lines
+            block->status.push_back(r);
+            line = std::string();
             if ((block->lines.size() >= stream_block_lines || block->bytes >= stream_block_bytes) && !dispatch(block))
                 break;
         }

@@ -6,7 +6,7 @@
 
 #include <cstddef>      // std::size_t
 #include <functional>   // parse_object_line's field reader
-#include <istream>      // std::istream, std::getline (process_lines)
+#include <istream>      // std::istream (process_lines)
 #include <ostream>      // std::ostream
 #include <optional>     // a line may not yield a query
 #include <string>       // JSON text, messages
@@ -67,27 +67,56 @@ bool run_query(const Query& q, const QueryOptions& opt);
 std::string format_answer(const std::string& id, bool intersect);
 std::string format_error(const std::string& id, const std::string& message);
 
-// Answers one line: the output line (without newline) and whether the input line was good.
+// Answers one line: the output line (without newline) and whether the input line was good. Never
+// throws: running out of memory on a line (or any other failure) is that line's error.
 struct LineAnswer {
     std::string text;
     bool good;
 };
 LineAnswer answer_line(std::string_view text, std::size_t line_number, const RunOptions& opt);
 
+// Reading lines with a bound on memory. A line's parse needs about 23 bytes of memory per input byte,
+// so one huge line could exhaust memory and take the answers of every other line with it; the tool
+// instead reads at most max_line_bytes of a line (--max-line-bytes), skips the rest of a longer one
+// without keeping it, and answers it with an error line in place (default_max_line_bytes: options.hpp).
+// Before reading or answering a line this long, the answers so far are flushed (it may fail).
+inline constexpr std::size_t risky_line_bytes = std::size_t{1} << 20;
+
+enum class LineRead {
+    line,       // `line` holds the line (without its newline)
+    too_long,   // longer than max_bytes: skipped to its newline, `line` empty
+    no_memory,  // memory ran out while keeping it: skipped to its newline, `line` empty
+    end,        // no more input (or a read error: see in.bad())
+};
+
+// Reads one line of `in` into `line` (as std::getline does, a last line without newline included),
+// keeping at most `max_bytes` bytes of it. When the line reaches risky_line_bytes and `flush_if_long`
+// is set, flushes that stream first.
+LineRead read_line(std::istream& in, std::string& line, std::size_t max_bytes, std::ostream* flush_if_long = nullptr);
+
+// The error line for a line that read_line could not keep (too_long or no_memory).
+LineAnswer unread_line_answer(LineRead r, std::size_t line_number, std::size_t max_bytes);
+
 // The serial line loop shared by the subcommands: answer(line, line_number) → LineAnswer for each
-// input line, in order; flushes `out` before a read could block, so that a caller feeding lines one by
-// one sees each answer. Returns the number of bad lines.
+// input line, in order (lines longer than max_line_bytes get an error line instead); flushes `out`
+// before a read could block, so that a caller feeding lines one by one sees each answer, and before a
+// long line. `answer` must not throw (answer_line reports a resource error as the line's error).
+// Returns the number of bad lines.
 template <class Answer>
-std::size_t process_lines(std::istream& in, std::ostream& out, Answer&& answer) {
+std::size_t process_lines(std::istream& in, std::ostream& out, std::size_t max_line_bytes, Answer&& answer) {
     std::size_t line_number = 0;
     std::size_t bad = 0;
     std::string line;
     for (;;) {
         if (in.rdbuf() == nullptr || in.rdbuf()->in_avail() <= 0) out.flush();
-        if (!std::getline(in, line)) break;
-        const LineAnswer a = answer(std::string_view(line), ++line_number);
+        const LineRead r = read_line(in, line, max_line_bytes, &out);
+        if (r == LineRead::end) break;
+        ++line_number;
+        const LineAnswer a = r == LineRead::line ? answer(std::string_view(line), line_number)
+                                                 : unread_line_answer(r, line_number, max_line_bytes);
         out << a.text << '\n';
         if (!a.good) ++bad;
+        if (line.capacity() > risky_line_bytes) std::string().swap(line);  // do not keep a long line's memory
     }
     out.flush();
     return bad;
@@ -96,10 +125,11 @@ std::size_t process_lines(std::istream& in, std::ostream& out, Answer&& answer) 
 // Reads `in` line by line, writes one output line per input line in input order. Returns the number
 // of bad lines. Flushes `out` whenever no more input is buffered (threads == 1) or no further answer
 // is ready (threads > 1), so that the tool also works as an interactive filter.
-// threads == 1: one line at a time, memory bounded by the longest line. threads > 1: that many
+// threads == 1: one line at a time, memory bounded by opt.max_line_bytes. threads > 1: that many
 // workers answer blocks of up to stream_block_lines lines (or stream_block_bytes bytes) while this
 // thread reads; at most 2 * threads blocks are in flight, so memory stays bounded too, and the
-// output is byte for byte the single-threaded one. threads == 0: std::thread::hardware_concurrency().
+// output is byte for byte the single-threaded one. A line of risky_line_bytes or more starts a block
+// of its own. threads == 0: std::thread::hardware_concurrency().
 inline constexpr std::size_t stream_block_lines = 4096;
 inline constexpr std::size_t stream_block_bytes = std::size_t{1} << 20;
 std::size_t process_stream(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads = 1);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>        // the tables
+#include <cstddef>      // std::size_t
 #include <optional>     // lookups that may fail
 #include <string>       // help text
 #include <string_view>  // names
@@ -61,11 +62,15 @@ inline const ArithmeticChoice* find_arithmetic(std::string_view name) {
     return nullptr;
 }
 
+// The longest input line the tool keeps (--max-line-bytes; see read_line in jsonl_query.hpp).
+inline constexpr std::size_t default_max_line_bytes = std::size_t{16} << 20;  // 16 MiB
+
 // What the tool runs with: the library's options plus whether the chosen algorithm rounds its inputs
 // to float (then inputs must survive that rounding, see check_arithmetic in jsonl_query.hpp).
 struct RunOptions {
     QueryOptions query;
     bool rounds_to_float = false;
+    std::size_t max_line_bytes = default_max_line_bytes;  // --max-line-bytes
 };
 
 // Both names must be table entries (the command line checks that first).

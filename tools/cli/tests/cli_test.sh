@@ -223,6 +223,11 @@ exit_codes)
     run 2
     contains "$work/err" "subcommand"
     run 2 frobnicate
+    contains "$work/err" "unknown subcommand 'frobnicate'; valid subcommands: intersect, explain, grid"
+    run 2 query "$examples/queries.jsonl"
+    contains "$work/err" "unknown subcommand 'query'; valid subcommands: intersect, explain, grid"
+    run 2 --frobnicate
+    contains "$work/err" "unknown option '--frobnicate'"
     run 2 intersect --frobnicate
     run 2 --frobnicate intersect
     run 2 intersect --algorithm nonsense
