@@ -3,6 +3,7 @@
 # GoogleTest, pybind11 or Google Benchmark, hidden here), a build, an install, then a program built
 # against the installed compiled library with pkg-config. Checks that the configure chose a Release
 # build and left tests, benchmarks and the Python module off.
+cmake_minimum_required(VERSION 3.25)  # policies for script mode (IN_LIST)
 file(REMOVE_RECURSE ${WORK_DIR})
 set(build ${WORK_DIR}/build)
 set(prefix ${WORK_DIR}/prefix)
