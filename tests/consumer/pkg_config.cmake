@@ -11,7 +11,10 @@ endif()
 # The include directory, relocatable (found from the .pc file's place), and each package's own flags.
 set(expect "-I${PREFIX}/${LIBDIR}/pkgconfig/[./]*/include")
 if(PACKAGE STREQUAL "boxcyl")
-  list(APPEND expect "-lboxcyl( |$)" "-lboxcyl_batch_dispatch" "-lgmpxx")
+  list(APPEND expect "-lboxcyl( |$)")
+  if(EXISTS ${PREFIX}/${LIBDIR}/libboxcyl.a)  # static: its dependencies follow it on the link line
+    list(APPEND expect "-lboxcyl_batch_dispatch" "-lgmpxx")
+  endif()
 elseif(PACKAGE STREQUAL "boxcyl-exact")
   list(APPEND expect "-DBOXCYL_HAS_EXACT=1" "-DBOXCYL_HEADER_ONLY=1" "-lgmpxx")
 elseif(PACKAGE STREQUAL "boxcyl-batch-dispatch")
@@ -30,6 +33,7 @@ execute_process(COMMAND ${CXX} -std=c++20 -O2 ${SOURCE} -o ${OUTPUT} ${flags} RE
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "compiling ${SOURCE} with those flags failed (${rc})")
 endif()
+set(ENV{LD_LIBRARY_PATH} ${PREFIX}/${LIBDIR})  # for a shared libboxcyl
 execute_process(COMMAND ${OUTPUT} RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "${OUTPUT} failed (${rc})")
