@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh
 build="${BUILD_DIR:-build-test}"
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g" >/dev/null
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g" -DBOXCYL_BUILD_TESTS=ON >/dev/null
 cmake --build "$build" -j "$(nproc)" --target accuracy_report >/dev/null
 n="${1:-20000}"
 pairs="${2:-300}"

@@ -8,7 +8,7 @@ build="${BUILD_DIR:-build-test}"
 jobs="${JOBS:-$(nproc)}"
 # RelWithDebInfo with assertions kept on (no -DNDEBUG): preconditions are checked while testing.
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g" \
-      -DBOXCYL_BUILD_TESTS=ON -DBOXCYL_BUILD_TOOLS=ON
+      -DBOXCYL_BUILD_TESTS=ON -DBOXCYL_BUILD_TOOLS=ON -DBOXCYL_BUILD_PYTHON=ON
 cmake --build "$build" -j "$jobs"
 ctest --test-dir "$build" --output-on-failure -j "$jobs" -LE long --timeout 1500
 # Then ASan + UBSan on the input-facing tests and a 20 s libFuzzer run per target, in a separate clang

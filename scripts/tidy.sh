@@ -5,7 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh clang-tidy libfcl-dev libbullet-dev libode-dev pkg-config
 build="${1:-build-tidy}"
-cmake -S . -B "$build" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_BUILD_TYPE=Debug -DBOXCYL_BUILD_BENCHMARKS=ON -DBOXCYL_BENCH_PEERS=ON >/dev/null
+cmake -S . -B "$build" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_BUILD_TYPE=Debug -DBOXCYL_BUILD_TESTS=ON -DBOXCYL_BUILD_TOOLS=ON \
+      -DBOXCYL_BUILD_PYTHON=ON -DBOXCYL_BUILD_BENCHMARKS=ON -DBOXCYL_BENCH_PEERS=ON >/dev/null
 files=$(git ls-files '*.cpp')
 out=$(for f in $files; do clang-tidy -p "$build" --quiet "$f" 2>/dev/null; done | grep -E "warning:|error:" | sort -u || true)
 if [ -n "$out" ]; then echo "$out"; echo "clang-tidy: $(echo "$out" | wc -l) warnings"; exit 1; fi

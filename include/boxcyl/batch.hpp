@@ -38,7 +38,7 @@
 #pragma once
 
 #if !defined(BOXCYL_HAS_EXACT)
-#error "boxcyl/batch.hpp answers exactly and needs the exact backend: link boxcyl::exact (GMP)"
+#error "boxcyl/batch.hpp answers exactly and needs the exact backend: link boxcyl::exact (GMP), or link the compiled boxcyl::boxcyl and include <boxcyl/boxcyl.hpp>"
 #endif
 
 #include <cstddef>           // std::size_t

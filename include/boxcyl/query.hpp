@@ -41,6 +41,7 @@
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/reduce.hpp"
 #include "boxcyl/geometry/validate.hpp"
+#include "boxcyl/options.hpp"
 #if defined(BOXCYL_HAS_EXACT)
 #include "boxcyl/exact_paths.hpp"
 #include "boxcyl/filtered.hpp"
@@ -48,14 +49,6 @@
 #endif
 
 namespace boxcyl {
-
-enum class Algorithm { inequalities, hull, lcp, oracle };
-enum class Arithmetic { float32, float64, exact, filtered };
-
-struct QueryOptions {
-    Algorithm algorithm = Algorithm::inequalities;
-    Arithmetic arithmetic = Arithmetic::filtered;
-};
 
 namespace detail {
 

@@ -1,4 +1,4 @@
-// A consumer of boxcyl::boxcyl alone (no GMP): validation and an explicitly chosen float64 query.
+// A consumer of boxcyl::header_only alone (no GMP): validation and an explicitly chosen float64 query.
 // Exits non-zero, saying why, when an answer is wrong.
 #include <cstdio>  // std::printf
 

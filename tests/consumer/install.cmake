@@ -1,6 +1,8 @@
-# cmake -DBUILD_DIR=... -DWORK_DIR=... [-DCONFIG=...] -DEXACT=ON|OFF -P install.cmake
+# cmake -DBUILD_DIR=... -DWORK_DIR=... [-DCONFIG=...] -DEXACT=ON|OFF -DLIBDIR=lib -P install.cmake
 # Fixture of the consumer tests: empties WORK_DIR (prefix and consumer builds from earlier runs), installs
-# BUILD_DIR into WORK_DIR/prefix with `cmake --install`, and checks the package files are there.
+# BUILD_DIR into WORK_DIR/prefix with `cmake --install`, and checks the package files are there: the
+# headers, the CMake package, the libraries, and a .pc file per library in LIBDIR/pkgconfig (where
+# pkg-config looks for a prefix's packages), none in share/pkgconfig.
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 set(config_args)
@@ -12,11 +14,19 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefi
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "cmake --install failed (${rc})")
 endif()
-set(expected include/boxcyl/boxcyl.hpp include/boxcyl/version.hpp share/pkgconfig/boxcyl.pc)
+set(expected include/boxcyl/boxcyl.hpp include/boxcyl/compiled.hpp include/boxcyl/version.hpp
+             ${LIBDIR}/pkgconfig/boxcyl-header-only.pc)
 set(cmake_files boxcylConfig.cmake boxcylConfigVersion.cmake boxcylTargets.cmake)
 if(EXACT)
-  list(APPEND expected share/pkgconfig/boxcyl-exact.pc)
+  list(APPEND expected ${LIBDIR}/pkgconfig/boxcyl.pc ${LIBDIR}/pkgconfig/boxcyl-exact.pc
+                       ${LIBDIR}/pkgconfig/boxcyl-batch-dispatch.pc)
   list(APPEND cmake_files boxcylExactTargets.cmake FindGMP.cmake)
+  foreach(lib boxcyl boxcyl_batch_dispatch)
+    file(GLOB found ${prefix}/${LIBDIR}/lib${lib}.*)
+    if(NOT found)
+      message(FATAL_ERROR "not installed: ${LIBDIR}/lib${lib}.*")
+    endif()
+  endforeach()
 endif()
 file(GLOB_RECURSE config_file RELATIVE ${prefix} ${prefix}/*/boxcylConfig.cmake)
 if(NOT config_file)
@@ -31,4 +41,7 @@ foreach(f ${expected})
     message(FATAL_ERROR "not installed: ${f}")
   endif()
 endforeach()
+if(EXISTS ${prefix}/share/pkgconfig)
+  message(FATAL_ERROR "installed share/pkgconfig: the .pc files belong in ${LIBDIR}/pkgconfig")
+endif()
 message(STATUS "installed into ${prefix}")

@@ -1,4 +1,4 @@
-// Must NOT compile: the no-options query is exact and needs boxcyl::exact; with boxcyl::boxcyl alone
+// Must NOT compile: the no-options query is exact and needs boxcyl::exact; with boxcyl::header_only alone
 // it fails with a message naming the fix (checked by find_package/CMakeLists.txt).
 #include <boxcyl/boxcyl.hpp>
 

@@ -1,22 +1,39 @@
-# cmake -DPREFIX=... -DSOURCE=... -DOUTPUT=... -DCXX=... -P pkg_config.cmake
-# Consumer test: compiles SOURCE with `pkg-config --cflags --libs boxcyl-exact` from the installed
-# PREFIX (and -std=c++20, which boxcyl.pc cannot impose), then runs it.
+# cmake -DPREFIX=... -DLIBDIR=lib -DPACKAGE=... -DSOURCE=... -DOUTPUT=... -DCXX=... -P pkg_config.cmake
+# Consumer test: compiles SOURCE as the README says, `c++ -std=c++20 -O2 SOURCE $(pkg-config --cflags
+# --libs PACKAGE)` with the installed PREFIX's LIBDIR/pkgconfig on PKG_CONFIG_PATH, then runs it.
 find_program(PKG_CONFIG pkg-config REQUIRED)
-set(ENV{PKG_CONFIG_PATH} ${PREFIX}/share/pkgconfig)
-execute_process(COMMAND ${PKG_CONFIG} --cflags --libs boxcyl-exact
+set(ENV{PKG_CONFIG_PATH} ${PREFIX}/${LIBDIR}/pkgconfig)
+execute_process(COMMAND ${PKG_CONFIG} --cflags --libs ${PACKAGE}
                 OUTPUT_VARIABLE flags OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "pkg-config boxcyl-exact failed (${rc})")
+  message(FATAL_ERROR "pkg-config ${PACKAGE} failed (${rc})")
 endif()
-if(NOT flags MATCHES "-I${PREFIX}/share/pkgconfig/\\.\\./\\.\\./include" OR NOT flags MATCHES "-lgmpxx")
-  message(FATAL_ERROR "unexpected flags: ${flags}")
+# The include directory, relocatable (found from the .pc file's place), and each package's own flags.
+set(expect "-I${PREFIX}/${LIBDIR}/pkgconfig/[./]*/include")
+if(PACKAGE STREQUAL "boxcyl")
+  list(APPEND expect "-lboxcyl( |$)")
+  if(EXISTS ${PREFIX}/${LIBDIR}/libboxcyl.a)  # static: its dependencies follow it on the link line
+    list(APPEND expect "-lboxcyl_batch_dispatch" "-lgmpxx")
+  endif()
+elseif(PACKAGE STREQUAL "boxcyl-exact")
+  list(APPEND expect "-DBOXCYL_HAS_EXACT=1" "-DBOXCYL_HEADER_ONLY=1" "-lgmpxx")
+elseif(PACKAGE STREQUAL "boxcyl-batch-dispatch")
+  list(APPEND expect "-DBOXCYL_BATCH_DISPATCH=1" "-DBOXCYL_HAS_EXACT=1" "-lboxcyl_batch_dispatch" "-lgmpxx")
+elseif(PACKAGE STREQUAL "boxcyl-header-only")
+  list(APPEND expect "-DBOXCYL_HEADER_ONLY=1")
 endif()
-message(STATUS "pkg-config --cflags --libs boxcyl-exact: ${flags}")
+foreach(e ${expect})
+  if(NOT flags MATCHES "${e}")
+    message(FATAL_ERROR "pkg-config --cflags --libs ${PACKAGE}: expected ${e} in: ${flags}")
+  endif()
+endforeach()
+message(STATUS "pkg-config --cflags --libs ${PACKAGE}: ${flags}")
 separate_arguments(flags UNIX_COMMAND "${flags}")
-execute_process(COMMAND ${CXX} -std=c++20 ${SOURCE} -o ${OUTPUT} ${flags} RESULT_VARIABLE rc)
+execute_process(COMMAND ${CXX} -std=c++20 -O2 ${SOURCE} -o ${OUTPUT} ${flags} RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "compiling ${SOURCE} with those flags failed (${rc})")
 endif()
+set(ENV{LD_LIBRARY_PATH} ${PREFIX}/${LIBDIR})  # for a shared libboxcyl
 execute_process(COMMAND ${OUTPUT} RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "${OUTPUT} failed (${rc})")

@@ -1,0 +1,98 @@
+// The compiled library boxcyl::boxcyl (libboxcyl): the double and float queries, declared here and
+// compiled once in the library (src/), so that a file using them includes only the shapes, the
+// options and validation. <boxcyl/boxcyl.hpp> includes this header unless BOXCYL_HEADER_ONLY is
+// defined (by boxcyl::header_only and boxcyl::exact), in which case it gives the header-only templates.
+//
+// The answers are those of the header-only templates for T = double or float (boxcyl/query.hpp,
+// boxcyl/batch.hpp, boxcyl/grid.hpp, where each is documented): the same exact default, options,
+// preconditions and exceptions. The library is built with the exact backend (GMP, linked privately)
+// and with boxcyl::batch_dispatch, so the batch calls use the widest SIMD kernel the CPU runs.
+// Other number types (rationals, intervals, long double) need the header-only templates.
+//
+// Everything here is in the inline namespace boxcyl::compiled, so that it is boxcyl::intersects etc.
+// to its users and does not collide with the templates' definitions at link time. One file should use
+// either this header or boxcyl/batch.hpp and boxcyl/grid.hpp: with both, the batch and grid calls
+// that exist in both forms are ambiguous.
+#pragma once
+
+#include <cstddef>  // std::size_t
+#include <cstdint>  // std::int64_t, std::uint64_t
+#include <span>     // batch inputs and outputs
+#include <type_traits>  // std::remove_reference_t
+#include <utility>  // std::forward
+#include <vector>   // cells()
+
+#include "boxcyl/batch/types.hpp"
+#include "boxcyl/geometry/box.hpp"
+#include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/validate.hpp"
+#include "boxcyl/grid_types.hpp"
+#include "boxcyl/options.hpp"
+#include "boxcyl/version.hpp"
+
+namespace boxcyl {
+inline namespace compiled {
+
+// ---- One box, one cylinder (boxcyl/query.hpp). Default options: the exact answer. ----
+bool intersects(const AlignedBox<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt = {});
+bool intersects(const OrientedBox<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt = {});
+bool intersects(const CanonicalBox<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt = {});
+bool intersects(const AlignedBox<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
+bool intersects(const OrientedBox<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
+bool intersects(const CanonicalBox<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
+
+// ---- The grid query (boxcyl/grid.hpp). ----
+// for_each_cell's compiled part: f(context, i, j, k) for every cell.
+using CellCallback = void (*)(void* context, std::int64_t i, std::int64_t j, std::int64_t k);
+void for_each_cell_erased(const Grid& g, const Cylinder<double>& c, CellCallback f, void* context,
+                          GridStats* stats);
+
+// Calls f(i, j, k) (std::int64_t each) once for every cell of g that the closed cylinder c meets.
+template <class F>
+void for_each_cell(const Grid& g, const Cylinder<double>& c, F&& f, GridStats* stats = nullptr) {
+    using Fn = std::remove_reference_t<F>;
+    for_each_cell_erased(
+        g, c, [](void* context, std::int64_t i, std::int64_t j, std::int64_t k) { (*static_cast<Fn*>(context))(i, j, k); },
+        const_cast<void*>(static_cast<const void*>(&f)), stats);
+}
+
+// The cells of for_each_cell, in lexicographic order of (i, j, k).
+std::vector<CellIndex> cells(const Grid& g, const Cylinder<double>& c, GridStats* stats = nullptr);
+
+}  // namespace compiled
+
+// ---- One cylinder, many boxes (boxcyl/batch.hpp). ----
+namespace batch {
+inline namespace compiled {
+
+// Whether intersects() can run kernel k here.
+bool available(Kernel k);
+
+Stats intersects(const Cylinder<double>& cyl, const AlignedBoxes<double>& boxes, std::span<std::uint64_t> mask,
+                 const Options& opt = {});
+Stats intersects(const Cylinder<double>& cyl, const AlignedBoxes<double>& boxes, std::span<bool> out,
+                 const Options& opt = {});
+Stats intersects(const Cylinder<double>& cyl, const AlignedBoxes<float>& boxes, std::span<std::uint64_t> mask,
+                 const Options& opt = {});
+Stats intersects(const Cylinder<double>& cyl, const AlignedBoxes<float>& boxes, std::span<bool> out,
+                 const Options& opt = {});
+Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<double>> boxes,
+                 std::span<std::uint64_t> mask, const Options& opt = {});
+Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<double>> boxes, std::span<bool> out,
+                 const Options& opt = {});
+Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<float>> boxes,
+                 std::span<std::uint64_t> mask, const Options& opt = {});
+Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<float>> boxes, std::span<bool> out,
+                 const Options& opt = {});
+
+// A float cylinder is widened to double exactly, like the boxes.
+template <class Boxes, class Out>
+Stats intersects(const Cylinder<float>& cyl, const Boxes& boxes, Out&& out, const Options& opt = {}) {
+    auto d = [](const Vec3<float>& v) { return Vec3<double>{v[0], v[1], v[2]}; };
+    return intersects(Cylinder<double>{d(cyl.center), d(cyl.axis), cyl.radius, cyl.height}, boxes,
+                      std::forward<Out>(out), opt);
+}
+
+}  // namespace compiled
+}  // namespace batch
+}  // namespace boxcyl

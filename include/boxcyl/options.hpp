@@ -1,0 +1,15 @@
+// The query's options: which algorithm, in which arithmetic (documented in boxcyl/query.hpp). A header
+// of its own so that the compiled library's declarations (boxcyl/compiled.hpp) need nothing heavier.
+#pragma once
+
+namespace boxcyl {
+
+enum class Algorithm { inequalities, hull, lcp, oracle };
+enum class Arithmetic { float32, float64, exact, filtered };
+
+struct QueryOptions {
+    Algorithm algorithm = Algorithm::inequalities;
+    Arithmetic arithmetic = Arithmetic::filtered;
+};
+
+}  // namespace boxcyl

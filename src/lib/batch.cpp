@@ -1,0 +1,77 @@
+// boxcyl::boxcyl: the batch queries of boxcyl/compiled.hpp, those of boxcyl/batch.hpp compiled once
+// here (with boxcyl::batch_dispatch linked: the AVX2 and AVX-512 kernels are chosen at run time).
+#include "boxcyl/batch.hpp"
+
+// The calls into boxcyl/batch.hpp come before boxcyl/compiled.hpp is included: after it, a call
+// naming boxcyl::batch::intersects would also find the compiled overloads (same signatures).
+namespace {
+
+using boxcyl::Cylinder;
+using boxcyl::OrientedBox;
+using boxcyl::batch::AlignedBoxes;
+using boxcyl::batch::Options;
+using boxcyl::batch::Stats;
+using Mask = std::span<std::uint64_t>;
+using Bools = std::span<bool>;
+
+bool header_available(boxcyl::batch::Kernel k) { return boxcyl::batch::available(k); }
+
+Stats header_aligned(const Cylinder<double>& c, const AlignedBoxes<double>& b, Mask out, const Options& o) {
+    return boxcyl::batch::intersects(c, b, out, o);
+}
+Stats header_aligned(const Cylinder<double>& c, const AlignedBoxes<double>& b, Bools out, const Options& o) {
+    return boxcyl::batch::intersects(c, b, out, o);
+}
+Stats header_aligned(const Cylinder<double>& c, const AlignedBoxes<float>& b, Mask out, const Options& o) {
+    return boxcyl::batch::intersects(c, b, out, o);
+}
+Stats header_aligned(const Cylinder<double>& c, const AlignedBoxes<float>& b, Bools out, const Options& o) {
+    return boxcyl::batch::intersects(c, b, out, o);
+}
+Stats header_oriented(const Cylinder<double>& c, std::span<const OrientedBox<double>> b, Mask out, const Options& o) {
+    return boxcyl::batch::intersects(c, b, out, o);
+}
+Stats header_oriented(const Cylinder<double>& c, std::span<const OrientedBox<double>> b, Bools out, const Options& o) {
+    return boxcyl::batch::intersects(c, b, out, o);
+}
+Stats header_oriented(const Cylinder<double>& c, std::span<const OrientedBox<float>> b, Mask out, const Options& o) {
+    return boxcyl::batch::intersects(c, b, out, o);
+}
+Stats header_oriented(const Cylinder<double>& c, std::span<const OrientedBox<float>> b, Bools out, const Options& o) {
+    return boxcyl::batch::intersects(c, b, out, o);
+}
+
+}  // namespace
+
+#include "boxcyl/compiled.hpp"
+
+namespace boxcyl::batch::compiled {
+
+bool available(Kernel k) { return header_available(k); }
+
+Stats intersects(const Cylinder<double>& c, const AlignedBoxes<double>& b, Mask out, const Options& o) {
+    return header_aligned(c, b, out, o);
+}
+Stats intersects(const Cylinder<double>& c, const AlignedBoxes<double>& b, Bools out, const Options& o) {
+    return header_aligned(c, b, out, o);
+}
+Stats intersects(const Cylinder<double>& c, const AlignedBoxes<float>& b, Mask out, const Options& o) {
+    return header_aligned(c, b, out, o);
+}
+Stats intersects(const Cylinder<double>& c, const AlignedBoxes<float>& b, Bools out, const Options& o) {
+    return header_aligned(c, b, out, o);
+}
+Stats intersects(const Cylinder<double>& c, std::span<const OrientedBox<double>> b, Mask out, const Options& o) {
+    return header_oriented(c, b, out, o);
+}
+Stats intersects(const Cylinder<double>& c, std::span<const OrientedBox<double>> b, Bools out, const Options& o) {
+    return header_oriented(c, b, out, o);
+}
+Stats intersects(const Cylinder<double>& c, std::span<const OrientedBox<float>> b, Mask out, const Options& o) {
+    return header_oriented(c, b, out, o);
+}
+Stats intersects(const Cylinder<double>& c, std::span<const OrientedBox<float>> b, Bools out, const Options& o) {
+    return header_oriented(c, b, out, o);
+}
+
+}  // namespace boxcyl::batch::compiled

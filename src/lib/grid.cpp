@@ -1,0 +1,36 @@
+// boxcyl::boxcyl: the grid query of boxcyl/compiled.hpp, that of boxcyl/grid.hpp compiled once here.
+#include "boxcyl/grid.hpp"
+
+// The calls into boxcyl/grid.hpp come before boxcyl/compiled.hpp is included: after it, a call
+// naming boxcyl::for_each_cell or boxcyl::cells would also find the compiled ones (same signatures).
+namespace {
+
+using Callback = void (*)(void*, std::int64_t, std::int64_t, std::int64_t);
+
+void header_for_each_cell(const boxcyl::Grid& g, const boxcyl::Cylinder<double>& c, Callback f, void* context,
+                          boxcyl::GridStats* stats) {
+    boxcyl::for_each_cell(
+        g, c, [&](std::int64_t i, std::int64_t j, std::int64_t k) { f(context, i, j, k); }, stats);
+}
+
+std::vector<boxcyl::CellIndex> header_cells(const boxcyl::Grid& g, const boxcyl::Cylinder<double>& c,
+                                            boxcyl::GridStats* stats) {
+    return boxcyl::cells(g, c, stats);
+}
+
+}  // namespace
+
+#include "boxcyl/compiled.hpp"
+
+namespace boxcyl::compiled {
+
+void for_each_cell_erased(const Grid& g, const Cylinder<double>& c, CellCallback f, void* context,
+                          GridStats* stats) {
+    header_for_each_cell(g, c, f, context, stats);
+}
+
+std::vector<CellIndex> cells(const Grid& g, const Cylinder<double>& c, GridStats* stats) {
+    return header_cells(g, c, stats);
+}
+
+}  // namespace boxcyl::compiled
