@@ -393,7 +393,7 @@ std::string mixed_input(std::size_t n, bool final_newline) {
         switch (i == n ? 1 : i % 13) {  // the last line is a query: empty and unterminated is no line
             case 0: break;                 // empty line
             case 5: s += id + kBox; break;  // truncated
-            case 7: s += id + "\"note\": \"\xff\", " + kBox + ", " + kCyl + "}"; break;
+            case 7: s += id; s += "\"note\": \"\xff\", "; s += kBox; s += ", "; s += kCyl; s += "}"; break;
             case 11: s += id + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 0], "radius": 1, "height": 1}})"; break;
             default: {
                 // The cylinder's x slides across the box face x = 1 in steps of 1/8: hits, touches, misses.
@@ -450,7 +450,7 @@ std::string error_text(const LineAnswer& a, const std::string& prefix) {
         ADD_FAILURE() << "no error in " << a.text;
         return {};
     }
-    const std::string e = j["error"].get<std::string>();
+    std::string e = j["error"].get<std::string>();
     EXPECT_EQ(e.rfind(prefix, 0), 0u) << "error '" << e << "' does not start with '" << prefix << "'";
     return e;
 }
@@ -564,7 +564,7 @@ TEST(JsonlHostile, HugeLinesOf10MB) {
 // read_line gives std::getline's lines, whatever their length against its 64 KiB chunks, and keeps
 // none longer than its limit.
 TEST(JsonlLines, ReadLineMatchesGetlineAcrossChunkSizes) {
-    const std::size_t chunk = 64 * 1024;
+    const std::size_t chunk = std::size_t{64} * 1024;
     for (const std::size_t n : {std::size_t{0}, std::size_t{1}, chunk - 2, chunk - 1, chunk, chunk + 1, 3 * chunk - 1, 3 * chunk}) {
         for (const bool final_newline : {false, true}) {
             std::string input = "a\n" + std::string(n, 'x') + "\nb";
@@ -615,7 +615,7 @@ TEST(JsonlLines, ManySmallValuesAreRefusedBeforeTheyExhaustMemory) {
     std::string many = R"({"id": 5, "pad": [)";
     while (many.size() < (1u << 20)) many += "[],";
     many += "[]], " + kBox + ", " + kCyl + "}";
-    const std::string budget = std::to_string(64 * 1024 + 4 * many.size());
+    const std::string budget = std::to_string(std::size_t{64} * 1024 + 4 * many.size());
     EXPECT_EQ(answer_line(many, 5, opt).text,
               "{\"id\": 5, \"error\": \"line 5: too large to parse: its JSON values would take more than " + budget +
                   " bytes of memory\"}");
