@@ -255,13 +255,13 @@ help_version)
         '"id"' '"intersect": true' '"error"' "touching counts as intersecting" "closed" \
         "need not be unit length" "orthonormal within" "1e-4" "parallelepiped" "nearest double" \
         "17 significant digits" "EXIT STATUS" "0  every line" "1  at least one line" "2  usage error" \
-        "one JSON line per input line" "empty line" "standard input" "--threads"; do
+        "one JSON line per input line" "empty line" "standard input" "--threads" "--max-line-bytes"; do
         contains "$work/out" "$phrase"
     done
     run 0 -h
     contains "$work/out" "EXIT STATUS"
     run 0 intersect --help
-    for phrase in "--algorithm" "--arithmetic" "--threads" "inequalities" "oracle" "EXIT STATUS" "parallelepiped"; do
+    for phrase in "--algorithm" "--arithmetic" "--threads" "--max-line-bytes" "inequalities" "oracle" "EXIT STATUS" "parallelepiped"; do
         contains "$work/out" "$phrase"
     done
     ;;
