@@ -106,8 +106,15 @@ inline exact::Method exact_method(Algorithm a) {
 
 template <class Box, class T>
 bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
-    assert(is_valid(box) && "boxcyl::intersects: invalid box (see boxcyl::validate)");
-    assert(is_valid(cyl) && "boxcyl::intersects: invalid cylinder (see boxcyl::validate)");
+#if defined(BOXCYL_HAS_EXACT)
+    // The default path's filtered::query asserts the same preconditions itself: checked once.
+    [[maybe_unused]] const bool asserted_later =
+        opt.arithmetic == Arithmetic::filtered && opt.algorithm == Algorithm::inequalities;
+#else
+    [[maybe_unused]] const bool asserted_later = false;
+#endif
+    assert((asserted_later || is_valid(box)) && "boxcyl::intersects: invalid box (see boxcyl::validate)");
+    assert((asserted_later || is_valid(cyl)) && "boxcyl::intersects: invalid cylinder (see boxcyl::validate)");
     const bool rounded_arithmetic = opt.arithmetic == Arithmetic::float32 || opt.arithmetic == Arithmetic::float64;
     if (opt.algorithm != Algorithm::oracle && rounded_arithmetic) {
         const std::optional<bool> r = opt.arithmetic == Arithmetic::float32 ? rounded<float>(opt.algorithm, box, cyl)

@@ -166,7 +166,7 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        if (const std::string m = missing_subcommand_message(app); !m.empty()) {
+        if (const std::string m = e.get_exit_code() == 0 ? std::string() : missing_subcommand_message(app); !m.empty()) {
             err << m << "\nRun with --help for more information.\n";
             return exit_usage;
         }

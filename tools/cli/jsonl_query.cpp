@@ -319,7 +319,7 @@ ObjectLine parse_object_line(std::string_view text, std::size_t line_number,
 
     json root;
     // A query takes about 2 KB of DOM; anything else may take 4 bytes per byte of the line.
-    DomBuilder builder(root, 64 * 1024 + 4 * text.size());
+    DomBuilder builder(root, std::size_t{64} * 1024 + 4 * text.size());
     const DismantleOnExit dismantle_root(root);
     const bool parsed = json::sax_parse(text.begin(), text.end(), &builder);
     // The id is echoed whenever a valid one was read, even if the line fails later (a scalar enters
@@ -400,7 +400,7 @@ LineRead read_line(std::istream& in, std::string& line, std::size_t max_bytes, s
     line.clear();
     // istream::getline into a fixed buffer, chunk by chunk: the bytes beyond max_bytes are read and
     // dropped, never kept (std::getline would grow the string to the whole line).
-    std::array<char, 64 * 1024> chunk;
+    std::array<char, std::size_t{64} * 1024> chunk;
     std::size_t length = 0;  // bytes of the line so far, kept or not
     LineRead status = LineRead::line;
     bool flushed = false;

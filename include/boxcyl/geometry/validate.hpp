@@ -227,9 +227,11 @@ Validity describe(const OrientedBox<T>& b, const std::string& prefix) {
         for (std::size_t j = i; j < 3; ++j) {
             if (gram_entry_ok(b.axes, i, j)) continue;
             const std::string si = std::to_string(i), sj = std::to_string(j);
-            std::string what = (i == j) ? "is not unit length (|axes[" + si + "]|² = "
-                                        : "are not orthogonal (axes[" + si + "]·axes[" + sj + "] = ";
-            what += gram_text(gram(b.axes, i, j), i == j) + ", tolerance 1e-4)";
+            std::string what = (i == j) ? "is not unit length (|axes[" : "are not orthogonal (axes[";
+            what += si;
+            what += (i == j) ? "]|² = " : "]·axes[" + sj + "] = ";
+            what += gram_text(gram(b.axes, i, j), i == j);
+            what += ", tolerance 1e-4)";
             return {prefix + ".axes" + (i == j ? "[" + si + "]" : std::string()), what};
         }
     return v;

@@ -255,13 +255,13 @@ help_version)
         '"id"' '"intersect": true' '"error"' "touching counts as intersecting" "closed" \
         "need not be unit length" "orthonormal within" "1e-4" "parallelepiped" "nearest double" \
         "17 significant digits" "EXIT STATUS" "0  every line" "1  at least one line" "2  usage error" \
-        "one JSON line per input line" "empty line" "standard input" "--threads"; do
+        "one JSON line per input line" "empty line" "standard input" "--threads" "--max-line-bytes"; do
         contains "$work/out" "$phrase"
     done
     run 0 -h
     contains "$work/out" "EXIT STATUS"
     run 0 intersect --help
-    for phrase in "--algorithm" "--arithmetic" "--threads" "inequalities" "oracle" "EXIT STATUS" "parallelepiped"; do
+    for phrase in "--algorithm" "--arithmetic" "--threads" "--max-line-bytes" "inequalities" "oracle" "EXIT STATUS" "parallelepiped"; do
         contains "$work/out" "$phrase"
     done
     ;;
@@ -450,6 +450,102 @@ grid_vs_intersect)
         same_bytes "$work/grid_cells" "$work/intersect_cells"
         [[ -s $work/grid_cells ]] || fail "cylinder $n: no cells (the case is meant to hit)"
     done
+    ;;
+memory_limit)
+    # Under a 1 GiB address-space limit, a huge line between two good ones: the good lines are
+    # answered in order, the huge one gets an error line in place, exit status 1 (a bad line).
+    # An AddressSanitizer build cannot start under an address-space limit (its shadow memory): there
+    # the same input runs unlimited, which still checks the line limit.
+    limit=1048576
+    if nm "$exe" 2>/dev/null | grep -q __asan_init; then limit=unlimited; fi
+    good1='{"id": 1, "box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [2, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}}'
+    good3='{"id": 3, "box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [5, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}}'
+    # huge_line BYTES string|values: a JSON line of about BYTES bytes, one long string or many "[]".
+    huge_line() {
+        if [[ $2 == string ]]; then
+            printf '{"id": 2, "pad": "'
+            head -c "$1" /dev/zero | tr '\0' x
+            printf '"}\n'
+        else
+            printf '{"id": 2, "pad": ['
+            yes '[],' | tr -d '\n' | head -c "$1"
+            printf '[]]}\n'
+        fi
+    }
+    # run_limited EXPECTED_RC ARGS...: the tool under the limit, input from the function `input`.
+    run_limited() {
+        local want=$1
+        shift
+        input | bash -c 'ulimit -v "$1" || exit 97; shift; exec "$@"' limited "$limit" "$exe" "$@" \
+            >"$work/out" 2>"$work/err"
+        rc=${PIPESTATUS[1]}
+        [[ $rc == "$want" ]] || fail "'boxcyl $*' under ulimit -v $limit exited $rc, expected $want; stderr: $(head -c 500 "$work/err")"
+    }
+    check_lines() {  # check_lines WHAT LINE2_PATTERN
+        [[ $(wc -l <"$work/out") == 3 ]] || fail "$1: $(wc -l <"$work/out") output lines, expected 3"
+        sed -n 1p "$work/out" | grep -qx '{"id": 1, "intersect": true}' || fail "$1: line 1: $(sed -n 1p "$work/out" | head -c 200)"
+        sed -n 2p "$work/out" | grep -qx -- "$2" || fail "$1: line 2: $(sed -n 2p "$work/out" | head -c 200)"
+        sed -n 3p "$work/out" | grep -qx '{"id": 3, "intersect": false}' || fail "$1: line 3: $(sed -n 3p "$work/out" | head -c 200)"
+    }
+    # A 256 MiB line: longer than --max-line-bytes (default 16 MiB), skipped without being kept.
+    input() { echo "$good1"; huge_line 268435456 string; echo "$good3"; }
+    for t in 1 2; do
+        run_limited 1 intersect --threads "$t"
+        check_lines "256 MiB line, --threads $t" '{"error": "line 2: line is longer than 16777216 bytes (--max-line-bytes)"}'
+    done
+    # The same line allowed by --max-line-bytes: read, then its parse (which copies the string twice)
+    # runs out of memory or, where it fits, finds no box; an error line in place either way.
+    for t in 1 2; do
+        run_limited 1 intersect --threads "$t" --max-line-bytes 2000000000
+        check_lines "256 MiB line allowed, --threads $t" \
+            '{\("id": 2, \)\?"error": "line 2: \(out of memory \(reading\|answering\) the line\|box: missing\)"}'
+    done
+    # 96 MiB of small values ("[],"): the parse would need ~1 GiB; refused by the parse budget
+    # (4 bytes per byte of the line) or by memory running out, the other lines answered either way.
+    input() { echo "$good1"; huge_line 100663296 values; echo "$good3"; }
+    for t in 1 2; do
+        run_limited 1 intersect --threads "$t" --max-line-bytes 200000000
+        check_lines "96 MiB of small values, --threads $t" \
+            '{\("id": 2, \)\?"error": "line 2: \(too large to parse: .*\|out of memory answering the line\)"}'
+    done
+    # A small --max-line-bytes, and the grid subcommand under the same limit.
+    input() { echo "$good1"; echo "$good3"; }
+    run_limited 1 intersect --max-line-bytes 100
+    grep -qxF '{"error": "line 1: line is longer than 100 bytes (--max-line-bytes)"}' "$work/out" || fail "--max-line-bytes 100"
+    input() {
+        echo '{"id": 1, "grid": {"origin": [0, 0, 0], "cell_size": [1, 1, 1], "counts": [1, 1, 1]}, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 1, "height": 1}}'
+        huge_line 268435456 string
+        echo '{"id": 3, "grid": {"origin": [0, 0, 0], "cell_size": [1, 1, 1], "counts": [1, 1, 1]}, "cylinder": {"center": [5, 0, 0], "axis": [0, 0, 1], "radius": 1, "height": 1}}'
+    }
+    run_limited 1 grid
+    printf '%s\n' '{"id": 1, "cells": [[0, 0, 0]], "count": 1}' \
+        '{"error": "line 2: line is longer than 16777216 bytes (--max-line-bytes)"}' '{"id": 3, "cells": [], "count": 0}' >"$work/want"
+    same_bytes "$work/out" "$work/want"
+    ;;
+grid_max_cells)
+    # One answer is bounded: ~4e14 cells in reach is an error line in place, found without listing them.
+    g='"grid": {"origin": [0, 0, 0], "cell_size": [1, 1, 1]'
+    {
+        echo "{\"id\": 1, $g, \"counts\": [2, 2, 2]}, \"cylinder\": {\"center\": [1, 1, 1], \"axis\": [0, 0, 1], \"radius\": 0.5, \"height\": 1}}"
+        echo "{\"id\": 2, $g, \"counts\": [10000000, 10000000, 4000000]}, \"cylinder\": {\"center\": [5000000, 5000000, 2000000], \"axis\": [0, 0, 1], \"radius\": 1e8, \"height\": 1e8}}"
+        echo "{\"id\": 3, $g, \"counts\": [2, 2, 2]}, \"cylinder\": {\"center\": [1, 1, 1], \"axis\": [0, 0, 1], \"radius\": 0, \"height\": 0}}"
+    } >"$work/in"
+    all='[[0, 0, 0], [0, 0, 1], [0, 1, 0], [0, 1, 1], [1, 0, 0], [1, 0, 1], [1, 1, 0], [1, 1, 1]]'
+    run 1 grid "$work/in"
+    printf '%s\n' "{\"id\": 1, \"cells\": $all, \"count\": 8}" \
+        '{"id": 2, "error": "line 2: the answer has more than 1000000 cells (--max-cells)"}' \
+        "{\"id\": 3, \"cells\": $all, \"count\": 8}" >"$work/want"
+    same_bytes "$work/out" "$work/want"
+    run 1 grid --max-cells 8 "$work/in"
+    sed -n 1p "$work/out" | grep -qxF "{\"id\": 1, \"cells\": $all, \"count\": 8}" || fail "--max-cells 8: line 1"
+    sed -n 2p "$work/out" | grep -qxF '{"id": 2, "error": "line 2: the answer has more than 8 cells (--max-cells)"}' || fail "--max-cells 8: line 2"
+    head -n 1 "$work/in" >"$work/one"
+    run 1 grid --max-cells 7 "$work/one"
+    grep -qxF '{"id": 1, "error": "line 1: the answer has more than 7 cells (--max-cells)"}' "$work/out" || fail "--max-cells 7"
+    run 0 grid --help
+    contains "$work/out" "--max-cells"
+    contains "$work/out" "--max-line-bytes"
+    run 2 grid --max-cells -1 "$work/in"
     ;;
 *)
     echo "unknown case $case_name" >&2

@@ -393,7 +393,7 @@ std::string mixed_input(std::size_t n, bool final_newline) {
         switch (i == n ? 1 : i % 13) {  // the last line is a query: empty and unterminated is no line
             case 0: break;                 // empty line
             case 5: s += id + kBox; break;  // truncated
-            case 7: s += id + "\"note\": \"\xff\", " + kBox + ", " + kCyl + "}"; break;
+            case 7: s += id; s += "\"note\": \"\xff\", "; s += kBox; s += ", "; s += kCyl; s += "}"; break;
             case 11: s += id + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 0], "radius": 1, "height": 1}})"; break;
             default: {
                 // The cylinder's x slides across the box face x = 1 in steps of 1/8: hits, touches, misses.
@@ -450,7 +450,7 @@ std::string error_text(const LineAnswer& a, const std::string& prefix) {
         ADD_FAILURE() << "no error in " << a.text;
         return {};
     }
-    const std::string e = j["error"].get<std::string>();
+    std::string e = j["error"].get<std::string>();
     EXPECT_EQ(e.rfind(prefix, 0), 0u) << "error '" << e << "' does not start with '" << prefix << "'";
     return e;
 }
@@ -559,6 +559,71 @@ TEST(JsonlHostile, HugeLinesOf10MB) {
     error_text({r.lines[1], false}, "line 2: invalid JSON: column 1: syntax error");
     EXPECT_LT(r.lines[1].size(), 300u);  // the message quotes only a short piece of the line
     EXPECT_EQ(r.lines[2], R"({"id": 1, "intersect": true})");
+}
+
+// read_line gives std::getline's lines, whatever their length against its 64 KiB chunks, and keeps
+// none longer than its limit.
+TEST(JsonlLines, ReadLineMatchesGetlineAcrossChunkSizes) {
+    const std::size_t chunk = std::size_t{64} * 1024;
+    for (const std::size_t n : {std::size_t{0}, std::size_t{1}, chunk - 2, chunk - 1, chunk, chunk + 1, 3 * chunk - 1, 3 * chunk}) {
+        for (const bool final_newline : {false, true}) {
+            std::string input = "a\n" + std::string(n, 'x') + "\nb";
+            if (final_newline) input += '\n';
+            std::istringstream in(input);
+            std::string line;
+            std::vector<std::string> got;
+            for (LineRead r; (r = read_line(in, line, 4 * chunk)) != LineRead::end;) {
+                EXPECT_EQ(r, LineRead::line) << "n = " << n;
+                got.push_back(line);
+            }
+            EXPECT_EQ(got, (std::vector<std::string>{"a", std::string(n, 'x'), "b"})) << "n = " << n;
+            // The same with a limit just below the long line: it is skipped, the others kept.
+            if (n < 2) continue;
+            std::istringstream in2(input);
+            EXPECT_EQ(read_line(in2, line, n - 1), LineRead::line);
+            EXPECT_EQ(line, "a");
+            EXPECT_EQ(read_line(in2, line, n - 1), LineRead::too_long) << "n = " << n;
+            EXPECT_TRUE(line.empty());
+            EXPECT_EQ(read_line(in2, line, n - 1), LineRead::line);
+            EXPECT_EQ(line, "b");
+            EXPECT_EQ(read_line(in2, line, n - 1), LineRead::end);
+        }
+    }
+}
+
+TEST(JsonlLines, LinesBeyondTheLimitGetAnErrorLineInPlace) {
+    RunOptions opt = make_run_options("inequalities", "filtered");
+    opt.max_line_bytes = kGood.size();
+    const std::string input = kGood + "\n" + kGood + " \n" + kGood + "\n" + std::string(3 * 64 * 1024 + 5, 'y');
+    for (const unsigned threads : {1u, 2u}) {
+        std::istringstream in(input);
+        std::ostringstream out;
+        EXPECT_EQ(process_stream(in, out, opt, threads), 2u) << threads << " threads";
+        const auto too_long = [](int line) {
+            return "{\"error\": \"line " + std::to_string(line) + ": line is longer than " + std::to_string(kGood.size()) +
+                   " bytes (--max-line-bytes)\"}";
+        };
+        EXPECT_EQ(lines_of(out.str()), (std::vector<std::string>{R"({"id": 1, "intersect": true})", too_long(2),
+                                                                 R"({"id": 1, "intersect": true})", too_long(4)}))
+            << threads << " threads";
+    }
+}
+
+TEST(JsonlLines, ManySmallValuesAreRefusedBeforeTheyExhaustMemory) {
+    // 1 MB of "[]," would make a DOM of ~32 MB; the parse stops at 4 bytes per byte of the line.
+    const RunOptions opt = make_run_options("inequalities", "filtered");
+    std::string many = R"({"id": 5, "pad": [)";
+    while (many.size() < (1u << 20)) many += "[],";
+    many += "[]], " + kBox + ", " + kCyl + "}";
+    const std::string budget = std::to_string(std::size_t{64} * 1024 + 4 * many.size());
+    EXPECT_EQ(answer_line(many, 5, opt).text,
+              "{\"id\": 5, \"error\": \"line 5: too large to parse: its JSON values would take more than " + budget +
+                  " bytes of memory\"}");
+    // A thousand of them fit in the 64 KiB every line may use.
+    std::string some = R"({"id": 6, "pad": [)";
+    for (int i = 0; i < 1000; ++i) some += "[],";
+    some += "[]], " + kBox + ", " + kCyl + "}";
+    EXPECT_EQ(answer_line(some, 6, opt).text, R"({"id": 6, "intersect": true})");
 }
 
 TEST(JsonlHostile, DuplicateKeysAnywhereMakeTheLineBad) {
