@@ -147,9 +147,10 @@ def test_shape_errors():
         boxcyl.intersects_aligned(unit_box(), (np.zeros((4, 3)), (0, 0, 1), np.ones((4, 1)), 1.0))
     with pytest.raises(ValueError, match=re.escape("leading lengths [4, 5] differ")):
         boxcyl.intersects_aligned((np.zeros((5, 3)), np.ones((5, 3))), (np.zeros((4, 3)), (0, 0, 1), 1.0, 1.0))
-    with pytest.raises(ValueError, match=re.escape("cylinders: expected 4 arrays")):
+    with pytest.raises(ValueError, match=re.escape("cylinders: expected a tuple of 4 arrays (center, axis, radius, "
+                                                   "height), got 3")):
         boxcyl.intersects_aligned(unit_box(), ((0, 0, 0), (0, 0, 1), 1.0))
-    with pytest.raises(TypeError):
+    with pytest.raises(ValueError, match=re.escape("boxes: expected an OrientedBox, a list of them, or a tuple")):
         boxcyl.intersects_oriented(np.zeros((3, 3)), cyl)
 
 
