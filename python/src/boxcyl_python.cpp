@@ -227,18 +227,27 @@ private:
     std::string message_;
 };
 
-// How often the calling thread looks for signals (Ctrl-C) while the workers run.
+// How often the calling thread looks for signals (Ctrl-C) while the threads run.
 constexpr auto kSignalPeriod = std::chrono::milliseconds(10);
 
-// Runs work(scratch, begin, end) over [0, n) in chunks of `chunk` elements on `threads` threads (the
-// calling one and threads - 1 more, each with its own Scratch), with the GIL released. Called with the
-// GIL held. Every kSignalPeriod the calling thread takes the GIL and runs Python's signal handlers;
-// when one raises (KeyboardInterrupt for Ctrl-C), the threads stop after their current chunk and the
-// exception propagates. Chunks after a recorded failure are skipped.
+// Chunk sizes: a chunk lasts about a millisecond, whatever one element costs (from a few nanoseconds in
+// the batch API's filter to a fraction of a millisecond for an exactly touching pair answered by the
+// exact fallback), so that Ctrl-C is prompt and the gathered boxes stay in the core's cache. Each thread
+// starts at `first`, then doubles or shrinks its chunk from the time the last one took.
+struct ChunkSizes {
+    Index first, min, max;
+};
+constexpr auto kChunkFast = std::chrono::microseconds(500);  // below: double the chunk
+constexpr auto kChunkSlow = std::chrono::milliseconds(2);    // above: shrink it to about kChunkFast
+
+// Runs work(scratch, begin, end) over [0, n) in chunks on `threads` threads (the calling one and
+// threads - 1 more, each with its own Scratch), with the GIL released. Called with the GIL held. Every
+// kSignalPeriod the calling thread takes the GIL and runs Python's signal handlers; when one raises
+// (KeyboardInterrupt for Ctrl-C), the threads stop after their current chunk and the exception
+// propagates. Chunks are taken in order, so those after a recorded failure are skipped.
 template <class Scratch, class Work>
-void run_chunks(Index n, Index chunk, unsigned threads, FirstFailure& failure, Work work) {
-    const Index chunks = (n + chunk - 1) / chunk;
-    threads = static_cast<unsigned>(std::min<Index>(std::max(1u, threads), std::max<Index>(1, chunks)));
+void run_chunks(Index n, ChunkSizes sizes, unsigned threads, FirstFailure& failure, Work work) {
+    threads = static_cast<unsigned>(std::min<Index>(std::max(1u, threads), std::max<Index>(1, n / sizes.min)));
     std::atomic<Index> next{0};
     std::atomic<bool> stop{false};
     std::mutex mutex;
@@ -252,12 +261,18 @@ void run_chunks(Index n, Index chunk, unsigned threads, FirstFailure& failure, W
             try {
                 require_fp_environment();
                 Scratch scratch;
-                for (;;) {
-                    const Index c = next.fetch_add(1);
-                    if (c >= chunks || stop.load(std::memory_order_relaxed)) break;
-                    const Index begin = c * chunk;
-                    if (failure.before(begin)) break;  // chunks are taken in order: all later ones are after it
-                    work(scratch, begin, std::min(n, begin + chunk));
+                Index size = sizes.first;
+                while (!stop.load(std::memory_order_relaxed)) {
+                    const Index begin = next.fetch_add(size);
+                    if (begin >= n || failure.before(begin)) break;
+                    const auto t0 = std::chrono::steady_clock::now();
+                    work(scratch, begin, std::min(n, begin + size));
+                    const auto took = std::chrono::steady_clock::now() - t0;
+                    if (took < kChunkFast)
+                        size = std::min(sizes.max, 2 * size);
+                    else if (took > kChunkSlow)
+                        size = std::max(sizes.min, static_cast<Index>(static_cast<double>(size) *
+                                                                      (std::chrono::duration<double>(kChunkFast) / took)));
                     between_chunks();
                 }
             } catch (...) {
@@ -286,7 +301,7 @@ void run_chunks(Index n, Index chunk, unsigned threads, FirstFailure& failure, W
             }
         };
         take_chunks(0, [&] {
-            if (chunks > 1 && std::chrono::steady_clock::now() - last_check >= kSignalPeriod) check_signals();
+            if (std::chrono::steady_clock::now() - last_check >= kSignalPeriod) check_signals();
         });
         for (;;) {
             {
@@ -309,12 +324,10 @@ unsigned thread_count(unsigned requested, Index n, Index min_per_thread) {
     return static_cast<unsigned>(t);
 }
 
-// Elements per chunk: a chunk is a few hundred microseconds of work at most (so that Ctrl-C is prompt)
-// and its gathered boxes stay in the core's cache.
-constexpr Index kAlignedChunk = 16384;   // batch API, 48 bytes per box gathered
-constexpr Index kOrientedChunk = 4096;   // batch API, 120 bytes per box gathered
-constexpr Index kScalarChunk = 512;      // scalar query: up to tens of microseconds each (exact, oracle)
-constexpr Index kScalarPerThread = 2048;  // below this many elements per thread, fewer threads
+constexpr ChunkSizes kAlignedChunks{256, 16, 16384};   // batch API: 48 bytes per box gathered
+constexpr ChunkSizes kOrientedChunks{256, 16, 4096};   // batch API: 120 bytes per box gathered
+constexpr ChunkSizes kScalarChunks{16, 1, 4096};       // scalar query
+constexpr Index kScalarPerThread = 2048;               // below this many elements per thread, fewer threads
 
 bool is_default(boxcyl::Algorithm algorithm, boxcyl::Arithmetic arithmetic) {
     return algorithm == boxcyl::Algorithm::inequalities && arithmetic == boxcyl::Arithmetic::filtered;
@@ -355,7 +368,7 @@ void scalar_chunk(const BoxAt& box_at, bool box_single, const CylinderFields& cy
 template <class BoxAt, class BatchChunk>
 py::array_t<bool> run_batch(Index n, const BoxAt& box_at, bool box_single, const CylinderFields& cyl_at,
                             bool cylinder_single, boxcyl::Algorithm algorithm, boxcyl::Arithmetic arithmetic,
-                            unsigned threads, Index batch_chunk, BatchChunk batch_chunk_work) {
+                            unsigned threads, ChunkSizes batch_chunks, BatchChunk batch_chunk_work) {
     if (box_single) validate_single(box_at(0), "box");
     if (cylinder_single) validate_single(cyl_at(0), "cylinder");
     py::array_t<bool> out(n);
@@ -364,14 +377,14 @@ py::array_t<bool> run_batch(Index n, const BoxAt& box_at, bool box_single, const
     if (cylinder_single && !box_single && is_default(algorithm, arithmetic)) {
         const Cylinder cyl = cyl_at(0);
         run_chunks<typename BatchChunk::Scratch>(
-            n, batch_chunk, thread_count(threads, n, boxcyl::batch::split::kMinBoxesPerThread), failure,
+            n, batch_chunks, thread_count(threads, n, boxcyl::batch::split::kMinBoxesPerThread), failure,
             [&](typename BatchChunk::Scratch& scratch, Index begin, Index end) {
                 batch_chunk_work(scratch, cyl, result, failure, begin, end);
             });
     } else {
         const boxcyl::QueryOptions opt{algorithm, arithmetic};
         struct None {};
-        run_chunks<None>(n, kScalarChunk, thread_count(threads, n, kScalarPerThread), failure,
+        run_chunks<None>(n, kScalarChunks, thread_count(threads, n, kScalarPerThread), failure,
                          [&](None&, Index begin, Index end) {
                              scalar_chunk(box_at, box_single, cyl_at, cylinder_single, opt, result, failure, begin, end);
                          });
@@ -515,7 +528,7 @@ py::array_t<bool> intersects_aligned(const py::array& min, const py::array& max,
     const AlignedFields boxes{field(min, "min", {3}), field(max, "max", {3})};
     const CylinderFields cyls = cylinder_fields(center, axis, radius, height);
     const Index n = batch_length({&boxes.min, &boxes.max, &cyls.center, &cyls.axis, &cyls.radius, &cyls.height});
-    return run_batch(n, boxes, box_single, cyls, cylinder_single, algorithm, arithmetic, threads, kAlignedChunk,
+    return run_batch(n, boxes, box_single, cyls, cylinder_single, algorithm, arithmetic, threads, kAlignedChunks,
                      AlignedBatchChunk{boxes});
 }
 
@@ -528,11 +541,11 @@ py::array_t<bool> intersects_oriented(const py::array& box_center, const py::arr
     const CylinderFields cyls = cylinder_fields(center, axis, radius, height);
     const Index n = batch_length(
         {&boxes.center, &boxes.axes, &boxes.extents, &cyls.center, &cyls.axis, &cyls.radius, &cyls.height});
-    return run_batch(n, boxes, box_single, cyls, cylinder_single, algorithm, arithmetic, threads, kOrientedChunk,
+    return run_batch(n, boxes, box_single, cyls, cylinder_single, algorithm, arithmetic, threads, kOrientedChunks,
                      OrientedBatchChunk{boxes});
 }
 
-// ---- The C++ batch alone, timed: what the batch forms wrap (python/bench_batch.py compares). ----
+// ---- The C++ batch alone, timed: what the batch forms wrap (bench/python_batch.py compares). ----
 
 using F64Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
