@@ -30,14 +30,17 @@
 #include <array>      // the approximate axes
 #include <cassert>    // debug-build precondition checks
 #include <cmath>      // std::fabs, std::sqrt, std::ilogb, std::ldexp
+#include <limits>     // infinity
 #include <optional>   // undecided
 #include <stdexcept>  // std::logic_error (BOXCYL_CHECK_FILTER)
 #include <string>     // its message
 
 #include "boxcyl/algo/convex_hull.hpp"
+#include "boxcyl/algo/linear_inequalities.hpp"
 #include "boxcyl/filtered.hpp"  // filtered::Result
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
+#include "boxcyl/geometry/reduce.hpp"  // CanonicalQuery
 #include "boxcyl/geometry/reduce_exact.hpp"
 #include "boxcyl/geometry/validate.hpp"
 #include "boxcyl/number/bounded.hpp"
@@ -180,10 +183,92 @@ bool cylinder_point_inside(const Problem<N>& p, double t, double rho, const Vec3
     });
 }
 
+// ---- Nearly orthogonal axes of any lengths: §4 in the frame of the unit axes. ----
+//
+// With Lᵢ = |Wᵢ| and Aᵢ = Wᵢ/Lᵢ (enclosures of the real numbers), the solid is exactly
+// {K + Σ yᵢAᵢ : |yᵢ| ≤ eᵢLᵢ}: an oriented box with the real frame A. When ‖AᵀA − I‖₂ ≤ g (bounded from
+// the enclosures), the canonical problem (cᵢ = Aᵢ·(C − K), the axis Aᵀu normalised, extents eᵢLᵢ) is
+// widened by η = g·(|e'|₁ + |C − K|₁ + 2H + 2r) exactly as for an oriented box whose frame is
+// orthonormal only up to rounding (filtered.hpp, docs/robustness.md): §4 on the inflated problem
+// certifies misses, on the deflated one hits. Exactly orthogonal axes ((3,4,0), (−4,3,0), (0,0,5))
+// leave g at the enclosures' width, so only queries within a few ulps of touching stay undecided.
+template <class N>
+std::optional<bool> run_section4(const CanonicalQuery<N>& q) {
+    UncertaintyScope scope;
+    const bool answer = algo::linear_inequalities(q.box, q.cylinder);
+    if (!scope.certain()) return std::nullopt;
+    return answer;
+}
+template <class N>
+double upper(const N& x) {
+    return std::max(-x.lo(), x.hi());
+}
+template <class N>
+std::optional<bool> frame_stage(const Problem<N>& p, const Cylinder<double>& c) {
+    Vec3<N> a[3];
+    CanonicalQuery<N> q;
+    for (int i = 0; i < 3; ++i) {
+        const N len = sqrt(norm2(p.w[i]));
+        if (!(len.lo() > 0)) return std::nullopt;  // a zero (or tiny) axis: a flat solid
+        a[i] = {p.w[i][0] / len, p.w[i][1] / len, p.w[i][2] / len};
+        q.box.extents[i] = p.e[i] * len;
+    }
+    double g = 0;
+    for (int i = 0; i < 3; ++i) {
+        N row(0);
+        for (int j = 0; j < 3; ++j) {
+            N gij = dot(a[i], a[j]);
+            if (i == j) gij -= N(1);
+            row += N(upper(gij));
+        }
+        g = std::max(g, row.hi());
+    }
+    if (!(g <= 0x1p-10)) return std::nullopt;  // skewed: not a rotated frame
+    Vec3<N> v;
+    for (int i = 0; i < 3; ++i) {
+        q.cylinder.center[i] = dot(a[i], p.delta);
+        v[i] = dot(a[i], p.u);
+    }
+    const N vlen = sqrt(norm2(v));
+    q.cylinder.direction = {v[0] / vlen, v[1] / vlen, v[2] / vlen};
+    q.cylinder.radius = p.r;
+    q.cylinder.half_height = p.h;
+    N lengths(0);
+    for (int i = 0; i < 3; ++i) lengths += N(upper(q.box.extents[i])) + N(upper(p.delta[i]));
+    lengths += N(2) * N(upper(p.h)) + N(2) * N(upper(p.r));
+    const double eta = (N(g) * lengths).hi();
+    if (!(eta < std::numeric_limits<double>::infinity())) return std::nullopt;
+    // η split as in filtered.hpp: on the cylinder up to min(r, H), the rest on the box.
+    const double on_cyl = std::min(std::min(p.r.lo(), p.h.lo()), eta);
+    const double on_box = on_cyl == eta ? 0.0 : (N(eta) - N(on_cyl)).hi();
+    // Sizes as points: outer ones rounded up after adding, inner ones down after subtracting.
+    bool has_inner = true;
+    auto up = [](const N& x, double by) { return N(by == 0 ? x.hi() : (N(x.hi()) + N(by)).hi()); };
+    auto down = [&has_inner](const N& x, double by) {
+        if (by == 0) return N(x.lo());
+        if (!(x.lo() >= by)) has_inner = false;
+        return N(std::max(0.0, (N(x.lo()) - N(by)).lo()));
+    };
+    CanonicalQuery<N> outer = q, inner = q;
+    outer.cylinder.radius = up(q.cylinder.radius, on_cyl);
+    outer.cylinder.half_height = up(q.cylinder.half_height, on_cyl);
+    inner.cylinder.radius = down(q.cylinder.radius, on_cyl);
+    inner.cylinder.half_height = down(q.cylinder.half_height, on_cyl);
+    for (int i = 0; i < 3; ++i) {
+        outer.box.extents[i] = up(q.box.extents[i], on_box);
+        inner.box.extents[i] = down(q.box.extents[i], on_box);
+    }
+    (void)c;
+    if (has_inner)
+        if (const std::optional<bool> r = run_section4(inner); r && *r) return true;
+    if (const std::optional<bool> r = run_section4(outer); r && !*r) return false;
+    return std::nullopt;
+}
+
 // ---- Candidates, in plain double (any value is sound; only the certificates decide). ----
 
 struct Candidates {
-    static constexpr int max = 24;
+    static constexpr int max = 40;
     Vec3<double> dirs[max];
     int n_dirs = 0;
     Vec3<double> box_points[max];  // box coordinates x, |xᵢ| ≤ eᵢ exactly
@@ -294,8 +379,17 @@ inline void fixed_candidates(const Approx& a, const Cylinder<double>& c, Candida
     cs.cyl(t, a.r * 0.9, to_k);
 }
 
-// Alternating projections from the box centre; candidates after steps 1, 2, 4, 8, 16.
-inline void searched_candidates(const Approx& a, Candidates& cs) {
+// Alternating projections between the solids shrunk about their centres to `shrink` of their sizes,
+// from the box centre: for overlapping solids the iterates approach a point of the shrunk
+// intersection, which lies inside both full solids with a margin (unshrunk, they would approach the
+// intersection's boundary, where no certificate has room); for disjoint ones, a nearest pair.
+// Candidates after steps 1, 2, 4, 8, 16.
+inline void searched_candidates(const Approx& full, double shrink, Candidates& cs) {
+    Approx a = full;
+    a.r = full.r * shrink;
+    a.h = full.h * shrink;
+    a.height = full.height * shrink;
+    for (int i = 0; i < 3; ++i) a.e[i] = full.e[i] * shrink;
     Vec3<double> x{0, 0, 0};
     for (int step = 1; step <= 16; ++step) {
         const Vec3<double> p = box_point(a, x);
@@ -304,12 +398,9 @@ inline void searched_candidates(const Approx& a, Candidates& cs) {
         x = onto_box(a, y, x, 3);
         if ((step & (step - 1)) != 0) continue;
         const Vec3<double> pb = box_point(a, x);
-        cs.box(x);
-        cs.cyl(q.t, q.rho * 0.999, q.m);
+        cs.box(clamp_coords(x, full.e));
+        cs.cyl(q.t, q.rho, q.m);
         cs.dir(y - pb);
-        const Candidates::CylPoint q2 = onto_cylinder(a, pb);
-        cs.dir(cylinder_point(a, q2) - pb);
-        cs.cyl(q2.t, q2.rho * 0.999, q2.m);
     }
 }
 
@@ -331,10 +422,13 @@ inline std::optional<bool> filter(const Parallelepiped<double>& b, const Cylinde
     fixed_candidates(a, c, cs);
     const Problem<Bounded> pb = problem<Bounded>(b, c);
     if (const std::optional<bool> r = certify(pb, cs)) return r;
+    if (const std::optional<bool> r = frame_stage(pb, c)) return r;
     Candidates searched;
-    searched_candidates(a, searched);
+    searched_candidates(a, 0.9, searched);
+    searched_candidates(a, 0.999, searched);
     if (const std::optional<bool> r = certify(pb, searched)) return r;
     const Problem<Interval> pi = problem<Interval>(b, c);
+    if (const std::optional<bool> r = frame_stage(pi, c)) return r;
     if (const std::optional<bool> r = certify(pi, cs)) return r;
     return certify(pi, searched);
 }
