@@ -12,6 +12,8 @@
 //   is then exactly the parallelepiped they span (a frame orthonormal only up to rounding is fine).
 //   Anything further off is almost surely a caller bug (a scaled or non-rotation matrix), so it is
 //   refused with a message rather than guessed at.
+// - Parallelepiped: finite fields and non-negative extents; the axes may be any vectors (zero,
+//   parallel, any lengths and angles), so nothing about them is checked.
 // - Magnitudes: every finite double is accepted, subnormals to ±DBL_MAX; the default query answers
 //   exactly there too (no intermediate overflow turns into a wrong answer).
 // For valid input, boxcyl::intersects() with default options never throws; it asserts validity in
@@ -24,6 +26,7 @@
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
 
 namespace boxcyl {
 
@@ -138,6 +141,19 @@ Validity validate(const OrientedBox<T>& b, const std::string& prefix = "box") {
                 return {prefix + ".axes" + (i == j ? "[" + std::to_string(i) + "]" : std::string()), what};
             }
         }
+    return v;
+}
+
+// Any axes are valid: zero or parallel ones give the flat solid they span.
+template <class T>
+Validity validate(const Parallelepiped<T>& b, const std::string& prefix = "box") {
+    Validity v;
+    if (!detail::check_finite(v, prefix + ".center", b.center)) return v;
+    for (std::size_t i = 0; i < 3; ++i)
+        if (!detail::check_finite(v, prefix + ".axes[" + std::to_string(i) + "]", b.axes[i])) return v;
+    for (std::size_t i = 0; i < 3; ++i)
+        if (!detail::check_nonnegative(v, prefix + ".extents[" + std::to_string(i) + "]", b.extents[i]))
+            return v;
     return v;
 }
 

@@ -74,6 +74,18 @@ examples_every_algorithm)
     done
     run 0 intersect --algorithm hull --arithmetic exact "$work/in"
     ;;
+parallelepipeds)
+    # "kind": "parallelepiped" (any axes): the default, the oracle and exact §3 agree, in every
+    # arithmetic that answers exactly; §2/§4 in exact arithmetic refuse these axes, line by line.
+    for args in "" "--algorithm oracle" "--algorithm hull --arithmetic exact" "--algorithm hull" "--algorithm lcp" \
+                "--algorithm oracle --arithmetic double"; do
+        # shellcheck disable=SC2086
+        run 0 intersect $args "$examples/parallelepipeds.jsonl"
+        same_bytes "$work/out" "$expected/parallelepipeds.out"
+    done
+    run 1 intersect --algorithm inequalities --arithmetic exact "$examples/parallelepipeds.jsonl"
+    contains "$work/out" '"error": "line 1: query failed: boxcyl: §2/§4 need an orthonormal box frame'
+    ;;
 examples_bad_lines)
     run 1 intersect "$examples/bad_lines.jsonl"
     same_bytes "$work/out" "$expected/bad_lines.out"
