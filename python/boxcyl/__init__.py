@@ -37,9 +37,11 @@ __all__ = [
     "Arithmetic",
     "Cylinder",
     "OrientedBox",
+    "Parallelepiped",
     "intersects",
     "intersects_aligned",
     "intersects_oriented",
+    "intersects_parallelepiped",
     "__version__",
 ]
 
@@ -164,6 +166,51 @@ def _shape_text(a):
     return "one number" if a.shape == () else f"shape {a.shape}"
 
 
+def _one_of(what, **named):
+    """The one keyword of `named` given (not None), as (name, value); a ValueError naming them otherwise."""
+    given = [(k, v) for k, v in named.items() if v is not None]
+    if len(given) != 1:
+        names = " or ".join(f"{k}=" for k in named)
+        raise ValueError(f"{what}: give exactly one of {names}")
+    return given[0]
+
+
+def _quaternion(wxyz, xyzw):
+    """(w, x, y, z) from whichever order was named."""
+    order, q = _one_of("quaternion", wxyz=wxyz, xyzw=xyzw)
+    q = _real_array(order, q)
+    if q.shape != (4,):
+        raise ValueError(f"{order}: expected 4 numbers, got {_shape_text(q)}")
+    w, x, y, z = q.tolist() if order == "wxyz" else np.roll(q, 1).tolist()
+    return (w, x, y, z)
+
+
+def _transform(value):
+    t = _real_array("transform", value)
+    if t.shape != (4, 4):
+        raise ValueError(f"transform: expected a 4×4 matrix, got {_shape_text(t)}")
+    return tuple(tuple(row) for row in t.tolist())
+
+
+def _box_sizes(half_extents, size):
+    name, value = _one_of("box", half_extents=half_extents, size=size)
+    return _vector(name, value), name == "size"
+
+
+def _cylinder_length(height, half_height):
+    name, value = _one_of("cylinder", height=height, half_height=half_height)
+    return _scalar(name, value), name == "half_height"
+
+
+_AXES = {"x": 0, "y": 1, "z": 2}
+
+
+def _along(along):
+    if along not in _AXES:
+        raise ValueError(f"along: expected 'x', 'y' or 'z', got {along!r}")
+    return _AXES[along]
+
+
 # ---- The shapes: immutable, validated, equal by value, picklable, printed as built. ---------------
 
 class AlignedBox(_core.AlignedBox):
@@ -212,6 +259,60 @@ class OrientedBox(_core.OrientedBox):
     def __reduce__(self):
         return (OrientedBox, self._key())
 
+    @classmethod
+    def from_rotation(cls, center, rotation, *, half_extents=None, size=None):
+        """The box at ``center`` whose axes are the **columns** of the 3×3 rotation matrix
+        (``x_world = rotation @ x_local + center``: FCL/Coal and Eigen, MuJoCo's ``xmat`` reshaped
+        to 3×3, scipy's ``as_matrix()``, trimesh's ``transform[:3, :3]``), with ``half_extents``
+        (half side lengths: MuJoCo, Bullet, Jolt) or ``size`` (full side lengths: FCL/Coal,
+        trimesh) — exactly one, by name."""
+        sizes, full = _box_sizes(half_extents, size)
+        b = _core._box_from_rotation(_vector("center", center), _matrix("rotation", rotation), sizes, full)
+        return cls(b.center, b.axes, b.extents)
+
+    @classmethod
+    def from_quaternion(cls, center, *, wxyz=None, xyzw=None, half_extents=None, size=None):
+        """The box at ``center`` rotated by a quaternion given in the order its keyword names:
+        ``wxyz`` (scalar first: MuJoCo, trimesh, Eigen's constructor) or ``xyzw`` (scalar last:
+        scipy's ``as_quat()``, Bullet, Jolt); it need not be exactly unit length. Sizes as for
+        :meth:`from_rotation`."""
+        sizes, full = _box_sizes(half_extents, size)
+        b = _core._box_from_quaternion(_vector("center", center), _quaternion(wxyz, xyzw), sizes, full)
+        return cls(b.center, b.axes, b.extents)
+
+    @classmethod
+    def from_transform(cls, transform, *, half_extents=None, size=None):
+        """The box posed by a 4×4 rigid transform (rotation in the top-left 3×3 block, columns = axes;
+        the centre in the last column; bottom row 0, 0, 0, 1: trimesh, Eigen's ``Isometry3d``).
+        Sizes as for :meth:`from_rotation`."""
+        sizes, full = _box_sizes(half_extents, size)
+        b = _core._box_from_transform(_transform(transform), sizes, full)
+        return cls(b.center, b.axes, b.extents)
+
+
+class Parallelepiped(_core.Parallelepiped):
+    """The closed solid ``{center + x0*axes[0] + x1*axes[1] + x2*axes[2] : |xi| <= extents[i]}`` for
+    **any** three axes (rows), exactly as given: any lengths and angles, e.g. ``(3, 4, 0), (-4, 3, 0),
+    (0, 0, 5)`` (a box with integer vertices); parallel or zero axes give flat solids. Answered exactly
+    like the other kinds. Immutable; validated when built (finite numbers, extents >= 0)."""
+
+    __slots__ = ()
+
+    def __init__(self, center, axes, extents):
+        super().__init__(_vector("box.center", center), _matrix("box.axes", axes), _vector("box.extents", extents))
+
+    def _key(self):
+        return (self.center, self.axes, self.extents)
+
+    def __eq__(self, other):
+        return self._key() == other._key() if isinstance(other, Parallelepiped) else NotImplemented
+
+    def __hash__(self):
+        return hash(("Parallelepiped",) + self._key())
+
+    def __reduce__(self):
+        return (Parallelepiped, self._key())
+
 
 class Cylinder(_core.Cylinder):
     """A closed finite cylinder: the points within ``radius`` of the axis segment
@@ -235,6 +336,36 @@ class Cylinder(_core.Cylinder):
 
     def __reduce__(self):
         return (Cylinder, self._key())
+
+    @classmethod
+    def from_rotation(cls, center, rotation, *, radius, height=None, half_height=None, along="z"):
+        """The cylinder centred at ``center`` along the local ``along`` axis (``"z"``: FCL/Coal,
+        MuJoCo, trimesh; ``"y"``: Bullet's btCylinderShape, Jolt) of the rotation matrix, i.e. its
+        column ``along`` (columns are the local axes, as for :meth:`OrientedBox.from_rotation`), with
+        ``height`` (full length: FCL/Coal, trimesh) or ``half_height`` (MuJoCo, Bullet, Jolt) —
+        exactly one, by name."""
+        length, half = _cylinder_length(height, half_height)
+        c = _core._cylinder_from_rotation(_vector("center", center), _matrix("rotation", rotation),
+                                          _scalar("radius", radius), length, half, _along(along))
+        return cls(c.center, c.axis, c.radius, c.height)
+
+    @classmethod
+    def from_quaternion(cls, center, *, wxyz=None, xyzw=None, radius, height=None, half_height=None, along="z"):
+        """As :meth:`from_rotation`, the rotation given as a quaternion in the order its keyword
+        names (``wxyz`` or ``xyzw``; see :meth:`OrientedBox.from_quaternion`)."""
+        length, half = _cylinder_length(height, half_height)
+        c = _core._cylinder_from_quaternion(_vector("center", center), _quaternion(wxyz, xyzw),
+                                            _scalar("radius", radius), length, half, _along(along))
+        return cls(c.center, c.axis, c.radius, c.height)
+
+    @classmethod
+    def from_transform(cls, transform, *, radius, height=None, half_height=None, along="z"):
+        """As :meth:`from_rotation`, posed by a 4×4 rigid transform (see
+        :meth:`OrientedBox.from_transform`); the centre is the transform's translation."""
+        length, half = _cylinder_length(height, half_height)
+        c = _core._cylinder_from_transform(_transform(transform), _scalar("radius", radius), length, half,
+                                           _along(along))
+        return cls(c.center, c.axis, c.radius, c.height)
 
 
 # ---- Options. ------------------------------------------------------------------------------------
@@ -276,7 +407,7 @@ def intersects(box, cylinder, *, algorithm=Algorithm.inequalities, arithmetic=Ar
 
     Parameters
     ----------
-    box : AlignedBox or OrientedBox
+    box : AlignedBox, OrientedBox or Parallelepiped
     cylinder : Cylinder
     algorithm : Algorithm or its name, optional
         ``"inequalities"`` (linear inequalities, default), ``"hull"`` (clip, project, convex hull),
@@ -299,9 +430,9 @@ def intersects(box, cylinder, *, algorithm=Algorithm.inequalities, arithmetic=Ar
         only up to rounding, which they cannot treat exactly; the default and ``"hull"`` handle any
         valid box.
     """
-    if not isinstance(box, (_core.AlignedBox, _core.OrientedBox)):
-        raise ValueError(f"box: expected an AlignedBox or an OrientedBox, got {_type_name(box)} (for arrays "
-                         "use intersects_aligned / intersects_oriented)")
+    if not isinstance(box, (_core.AlignedBox, _core.OrientedBox, _core.Parallelepiped)):
+        raise ValueError(f"box: expected an AlignedBox, an OrientedBox or a Parallelepiped, got {_type_name(box)} "
+                         "(for arrays use intersects_aligned / intersects_oriented / intersects_parallelepiped)")
     if not isinstance(cylinder, _core.Cylinder):
         raise ValueError(f"cylinder: expected a Cylinder, got {_type_name(cylinder)}")
     return _core.intersects(box, cylinder, *_options(algorithm, arithmetic))
@@ -335,7 +466,7 @@ def _objects(name, seq, cls):
         return False
     if isinstance(seq, list) and not seq:
         return True
-    shapes = (_core.AlignedBox, _core.OrientedBox, _core.Cylinder)
+    shapes = (_core.AlignedBox, _core.OrientedBox, _core.Parallelepiped, _core.Cylinder)
     if not any(isinstance(x, shapes) for x in seq):
         return False
     for i, x in enumerate(seq):
@@ -380,15 +511,15 @@ def _aligned_boxes(boxes):
     return [b[:, 0, :], b[:, 1, :]], single  # views: the core reads any strides
 
 
-def _oriented_boxes(boxes):
+def _frame_boxes(boxes, cls=_core.OrientedBox):
     """(center, axes, extents) float64 arrays of shapes (M, 3), (M, 3, 3), (M, 3), and whether single."""
-    if isinstance(boxes, _core.OrientedBox):
+    if isinstance(boxes, cls):
         return [np.array([boxes.center]), np.array([boxes.axes]), np.array([boxes.extents])], True
-    if _objects("boxes", boxes, _core.OrientedBox):
+    if _objects("boxes", boxes, cls):
         return [_rows([b.center for b in boxes], (3,)), _rows([b.axes for b in boxes], (3, 3)),
                 _rows([b.extents for b in boxes], (3,))], False
     if not isinstance(boxes, (tuple, list)):
-        raise ValueError(f"boxes: expected an OrientedBox, a list of them, or a tuple (center, axes, extents) of "
+        raise ValueError(f"boxes: expected {_a(cls.__name__)}, a list of them, or a tuple (center, axes, extents) of "
                          f"arrays; got {_type_name(boxes)}")
     return _fields("boxes", ("center", "axes", "extents"), boxes, ((3,), (3, 3), (3,)))
 
@@ -485,8 +616,33 @@ def intersects_oriented(boxes, cylinders, *, algorithm=Algorithm.inequalities, a
     KeyboardInterrupt
         Ctrl-C stops a running batch within milliseconds.
     """
-    box_arrays, box_single = _oriented_boxes(boxes)
+    box_arrays, box_single = _frame_boxes(boxes)
     cyl, cylinder_single = _cylinders(cylinders)
     _check_lengths(box_arrays + cyl)
     return _core._intersects_oriented(*box_arrays, box_single, *cyl, cylinder_single,
                                       *_options(algorithm, arithmetic), _threads(threads))
+
+
+def intersects_parallelepiped(boxes, cylinders, *, algorithm=Algorithm.inequalities, arithmetic=Arithmetic.filtered,
+                              threads=None):
+    """Whether each parallelepiped intersects its cylinder, for arrays of them.
+
+    Parameters
+    ----------
+    boxes : a tuple (center, axes, extents), a Parallelepiped, or a list of them
+        As for :func:`intersects_oriented`, with any axes (rows).
+    cylinders, algorithm, arithmetic, threads :
+        As for :func:`intersects_aligned`.
+
+    Returns
+    -------
+    numpy.ndarray of bool, shape (N,)
+
+    Each pair is answered by the scalar query (exact by default), on ``threads`` threads with the GIL
+    released; Ctrl-C stops it.
+    """
+    box_arrays, box_single = _frame_boxes(boxes, _core.Parallelepiped)
+    cyl, cylinder_single = _cylinders(cylinders)
+    _check_lengths(box_arrays + cyl)
+    return _core._intersects_parallelepiped(*box_arrays, box_single, *cyl, cylinder_single,
+                                            *_options(algorithm, arithmetic), _threads(threads))

@@ -39,9 +39,11 @@
 #include <stdexcept>           // std::domain_error (mapped to ValueError)
 #include <string>              // element names in messages
 #include <thread>              // the workers
+#include <type_traits>         // std::is_same_v: batches without a batch API
 #include <vector>              // per-worker scratch buffers
 
 #include "boxcyl/batch.hpp"            // one cylinder against many boxes: SIMD filter + exact fallback
+#include "boxcyl/geometry/pose.hpp"    // boxes and cylinders from rotations, quaternions, transforms
 #include "boxcyl/number/interval.hpp"  // fp_environment_ok
 #include "boxcyl/query.hpp"
 #include "boxcyl/version.hpp"
@@ -60,6 +62,7 @@ using Array3 = std::array<double, 3>;
 using Cylinder = boxcyl::Cylinder<double>;
 using AlignedBox = boxcyl::AlignedBox<double>;
 using OrientedBox = boxcyl::OrientedBox<double>;
+using Parallelepiped = boxcyl::Parallelepiped<double>;
 using Index = py::ssize_t;
 
 Vec vec(const Array3& a) { return {a[0], a[1], a[2]}; }
@@ -119,6 +122,16 @@ bool plausible(const OrientedBox& b) {
             const double g = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
             ok &= std::fabs(g - (i == j ? 1.0 : 0.0)) <= tol;  // false for NaN (overflowed products)
         }
+    return ok;
+}
+
+// Any axes are valid; only the numbers' finiteness and the extents' sign are checked.
+bool plausible(const Parallelepiped& b) {
+    bool ok = true;
+    for (std::size_t j = 0; j < 3; ++j) {
+        ok &= is_finite(b.center[j]) & is_finite(b.extents[j]) & (b.extents[j] >= 0);
+        for (std::size_t k = 0; k < 3; ++k) ok &= is_finite(b.axes[j][k]);
+    }
     return ok;
 }
 
@@ -188,15 +201,18 @@ struct AlignedFields {
     }
 };
 
-struct OrientedFields {
+// Oriented boxes and parallelepipeds: center, axes (rows), extents.
+template <class Box>
+struct FrameFields {
     Field center, axes, extents;
-    OrientedBox operator()(Index i) const {
+    Box operator()(Index i) const {
         const Field& a = axes;  // row k is axes[k]
         return {{center(i, 0), center(i, 1), center(i, 2)},
                 {Vec{a(i, 0), a(i, 1), a(i, 2)}, Vec{a(i, 3), a(i, 4), a(i, 5)}, Vec{a(i, 6), a(i, 7), a(i, 8)}},
                 {extents(i, 0), extents(i, 1), extents(i, 2)}};
     }
 };
+using OrientedFields = FrameFields<OrientedBox>;
 
 // "boxes[17]" for an element of an array argument, "box" for a single object broadcast.
 std::string element_name(const char* singular, const char* plural, bool single, Index i) {
@@ -374,13 +390,15 @@ py::array_t<bool> run_batch(Index n, const BoxAt& box_at, bool box_single, const
     py::array_t<bool> out(n);
     bool* result = out.mutable_data();
     FirstFailure failure;
-    if (cylinder_single && !box_single && is_default(algorithm, arithmetic)) {
+    constexpr bool batch_api = !std::is_same_v<BatchChunk, std::nullptr_t>;
+    if (batch_api && cylinder_single && !box_single && is_default(algorithm, arithmetic)) {
         const Cylinder cyl = cyl_at(0);
-        run_chunks<typename BatchChunk::Scratch>(
-            n, batch_chunks, thread_count(threads, n, boxcyl::batch::split::kMinBoxesPerThread), failure,
-            [&](typename BatchChunk::Scratch& scratch, Index begin, Index end) {
-                batch_chunk_work(scratch, cyl, result, failure, begin, end);
-            });
+        if constexpr (batch_api)
+            run_chunks<typename BatchChunk::Scratch>(
+                n, batch_chunks, thread_count(threads, n, boxcyl::batch::split::kMinBoxesPerThread), failure,
+                [&](typename BatchChunk::Scratch& scratch, Index begin, Index end) {
+                    batch_chunk_work(scratch, cyl, result, failure, begin, end);
+                });
     } else {
         const boxcyl::QueryOptions opt{algorithm, arithmetic};
         struct None {};
@@ -545,6 +563,69 @@ py::array_t<bool> intersects_oriented(const py::array& box_center, const py::arr
                      OrientedBatchChunk{boxes});
 }
 
+// Parallelepipeds: the scalar query for each (the batch API takes aligned and oriented boxes).
+py::array_t<bool> intersects_parallelepiped(const py::array& box_center, const py::array& axes,
+                                            const py::array& extents, bool box_single, const py::array& center,
+                                            const py::array& axis, const py::array& radius, const py::array& height,
+                                            bool cylinder_single, boxcyl::Algorithm algorithm,
+                                            boxcyl::Arithmetic arithmetic, unsigned threads) {
+    const FrameFields<Parallelepiped> boxes{field(box_center, "box center", {3}), field(axes, "axes", {3, 3}),
+                                            field(extents, "extents", {3})};
+    const CylinderFields cyls = cylinder_fields(center, axis, radius, height);
+    const Index n = batch_length(
+        {&boxes.center, &boxes.axes, &boxes.extents, &cyls.center, &cyls.axis, &cyls.radius, &cyls.height});
+    return run_batch(n, boxes, box_single, cyls, cylinder_single, algorithm, arithmetic, threads, kScalarChunks,
+                     nullptr);
+}
+
+// ---- Poses and sizes (boxcyl/geometry/pose.hpp): the package's named constructors call these. ----
+
+using Matrix3 = std::array<Array3, 3>;
+using Matrix4 = std::array<std::array<double, 4>, 4>;
+
+boxcyl::RotationMatrix<double> rotation_matrix(const Matrix3& rows) { return {rows}; }
+boxcyl::Quaternion<double> quaternion(const std::array<double, 4>& wxyz) {
+    return {wxyz[0], wxyz[1], wxyz[2], wxyz[3]};
+}
+
+// `full`: sizes are full side lengths (Size), else half (HalfExtents).
+OrientedBox box_from(const Vec& center, const boxcyl::RotationMatrix<double>& r, const Array3& sizes, bool full) {
+    if (full) return validated(boxcyl::oriented_box(center, r, boxcyl::Size<double>{sizes[0], sizes[1], sizes[2]}), "box");
+    return validated(boxcyl::oriented_box(center, r, boxcyl::HalfExtents<double>{sizes[0], sizes[1], sizes[2]}), "box");
+}
+
+// `half`: length is half the height (HalfHeight), else the full height (Height).
+Cylinder cylinder_from(const Vec& center, const boxcyl::RotationMatrix<double>& r, double radius, double length,
+                       bool half, int along) {
+    const auto axis = static_cast<boxcyl::LocalAxis>(along);
+    if (half) return validated(boxcyl::cylinder(center, r, radius, boxcyl::HalfHeight<double>{length}, axis), "cylinder");
+    return validated(boxcyl::cylinder(center, r, radius, boxcyl::Height<double>{length}, axis), "cylinder");
+}
+
+void def_poses(py::module_& m) {
+    m.def("_box_from_rotation", [](const Array3& center, const Matrix3& r, const Array3& sizes, bool full) {
+        return box_from(vec(center), rotation_matrix(r), sizes, full);
+    });
+    m.def("_box_from_quaternion", [](const Array3& center, const std::array<double, 4>& wxyz, const Array3& sizes,
+                                     bool full) { return box_from(vec(center), boxcyl::rotation(quaternion(wxyz)), sizes, full); });
+    m.def("_box_from_transform", [](const Matrix4& t, const Array3& sizes, bool full) {
+        const boxcyl::RigidTransform<double> pose{t};
+        return box_from(boxcyl::translation(pose), boxcyl::rotation(pose), sizes, full);
+    });
+    m.def("_cylinder_from_rotation", [](const Array3& center, const Matrix3& r, double radius, double length, bool half,
+                                        int along) {
+        return cylinder_from(vec(center), rotation_matrix(r), radius, length, half, along);
+    });
+    m.def("_cylinder_from_quaternion", [](const Array3& center, const std::array<double, 4>& wxyz, double radius,
+                                          double length, bool half, int along) {
+        return cylinder_from(vec(center), boxcyl::rotation(quaternion(wxyz)), radius, length, half, along);
+    });
+    m.def("_cylinder_from_transform", [](const Matrix4& t, double radius, double length, bool half, int along) {
+        const boxcyl::RigidTransform<double> pose{t};
+        return cylinder_from(boxcyl::translation(pose), boxcyl::rotation(pose), radius, length, half, along);
+    });
+}
+
 // ---- The C++ batch alone, timed: what the batch forms wrap (bench/python_batch.py compares). ----
 
 using F64Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
@@ -682,11 +763,35 @@ PYBIND11_MODULE(_core, m) {
                         tuple(b.extents));
         });
 
+    py::class_<Parallelepiped>(m, "Parallelepiped",
+                               "The closed solid { center + x0*axes[0] + x1*axes[1] + x2*axes[2] : |xi| <= "
+                               "extents[i] } for ANY three axes exactly as given (any lengths and angles; parallel "
+                               "or zero axes give flat solids). Immutable; validated when built.")
+        .def(py::init([](const Array3& center, const std::array<Array3, 3>& axes, const Array3& extents) {
+                 return validated(
+                     Parallelepiped{vec(center), {vec(axes[0]), vec(axes[1]), vec(axes[2])}, vec(extents)}, "box");
+             }),
+             "center"_a, "axes"_a, "extents"_a)
+        .def_property_readonly("center", [](const Parallelepiped& b) { return tuple(b.center); })
+        .def_property_readonly("axes",
+                               [](const Parallelepiped& b) {
+                                   return py::make_tuple(tuple(b.axes[0]), tuple(b.axes[1]), tuple(b.axes[2]));
+                               })
+        .def_property_readonly("extents", [](const Parallelepiped& b) { return tuple(b.extents); })
+        .def("__repr__", [](const Parallelepiped& b) {
+            return py::str("Parallelepiped(center={!r}, axes={!r}, extents={!r})")
+                .format(tuple(b.center), py::make_tuple(tuple(b.axes[0]), tuple(b.axes[1]), tuple(b.axes[2])),
+                        tuple(b.extents));
+        });
+    def_poses(m);
+
     // The query; the package's intersects() checks the argument types and wraps it.
     const char* intersects_doc = "intersects(box, cylinder, algorithm, arithmetic) -> bool, with the GIL released.";
     m.def("intersects", &query<AlignedBox>, "box"_a, "cylinder"_a, "algorithm"_a = boxcyl::Algorithm::inequalities,
           "arithmetic"_a = boxcyl::Arithmetic::filtered, py::call_guard<py::gil_scoped_release>(), intersects_doc);
     m.def("intersects", &query<OrientedBox>, "box"_a, "cylinder"_a, "algorithm"_a = boxcyl::Algorithm::inequalities,
+          "arithmetic"_a = boxcyl::Arithmetic::filtered, py::call_guard<py::gil_scoped_release>(), intersects_doc);
+    m.def("intersects", &query<Parallelepiped>, "box"_a, "cylinder"_a, "algorithm"_a = boxcyl::Algorithm::inequalities,
           "arithmetic"_a = boxcyl::Arithmetic::filtered, py::call_guard<py::gil_scoped_release>(), intersects_doc);
 
     // Batch kernels: the package's intersects_aligned / intersects_oriented shape the arguments.
@@ -695,6 +800,9 @@ PYBIND11_MODULE(_core, m) {
     m.def("_intersects_oriented", &intersects_oriented, "box_center"_a, "axes"_a, "extents"_a, "box_single"_a,
           "center"_a, "axis"_a, "radius"_a, "height"_a, "cylinder_single"_a, "algorithm"_a, "arithmetic"_a,
           "threads"_a);
+    m.def("_intersects_parallelepiped", &intersects_parallelepiped, "box_center"_a, "axes"_a, "extents"_a,
+          "box_single"_a, "center"_a, "axis"_a, "radius"_a, "height"_a, "cylinder_single"_a, "algorithm"_a,
+          "arithmetic"_a, "threads"_a);
     m.def("_timed_batch_aligned", &timed_batch_aligned, "soa"_a, "cylinder"_a, "threads"_a,
           "boxcyl::batch::intersects alone on (6, N) arrays: (answers, wall seconds, CPU seconds). For benchmarks.");
     m.def("_timed_batch_oriented", &timed_batch_oriented, "boxes"_a, "cylinder"_a, "threads"_a,

@@ -33,6 +33,12 @@ GOOD = textwrap.dedent("""
     hits = boxcyl.intersects_aligned([box, box], [cyl, cyl], threads=None)
     hits = boxcyl.intersects_oriented((np.zeros((4, 3)), np.tile(np.eye(3), (4, 1, 1)), np.ones((4, 3))), cyl)
     lazy = boxcyl.dask.intersects_aligned(np.zeros((4, 2, 3)), cyl, threads=1)
+    pbox = boxcyl.Parallelepiped(center=(0, 0, 0), axes=((3, 4, 0), (-4, 3, 0), (0, 0, 5)), extents=(1, 1, 1))
+    hit = boxcyl.intersects(pbox, cyl)
+    hits = boxcyl.intersects_parallelepiped([pbox], cyl)
+    posed: boxcyl.OrientedBox = boxcyl.OrientedBox.from_quaternion((0, 0, 0), xyzw=(0, 0, 0, 1), size=(2, 2, 2))
+    posed = boxcyl.OrientedBox.from_transform(np.eye(4), half_extents=(1, 1, 1))
+    tube: boxcyl.Cylinder = boxcyl.Cylinder.from_rotation((0, 0, 0), np.eye(3), radius=1, half_height=2, along="y")
     same: bool = box == boxcyl.AlignedBox((-1, -1, -1), (1, 1, 1))
     print(boxcyl.__version__, boxcyl.Algorithm.oracle.name, hash(cyl))
 """)
@@ -46,6 +52,7 @@ BAD = textwrap.dedent("""
     boxcyl.intersects(box, box)
     boxcyl.intersects_aligned(box, cyl, threads=1.5)
     n: int = box.min
+    boxcyl.Cylinder.from_rotation((0, 0, 0), ((1, 0, 0), (0, 1, 0), (0, 0, 1)), radius=1, height=1, along="w")
 """)
 
 
@@ -68,7 +75,7 @@ def test_mypy_strict_accepts_documented_use(tmp_path):
 def test_mypy_rejects_misuse_line_by_line(tmp_path):
     done = mypy(tmp_path, BAD)
     lines = sorted({int(line.split(":")[1]) for line in done.stdout.splitlines() if ": error:" in line})
-    assert lines == [5, 6, 7, 8, 9], done.stdout
+    assert lines == [5, 6, 7, 8, 9, 10], done.stdout
 
 
 def test_stubtest_finds_the_stubs_consistent_with_the_module(tmp_path):
