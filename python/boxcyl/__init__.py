@@ -1,8 +1,11 @@
 """Exact box–cylinder intersection queries.
 
 Does this finite cylinder intersect this box? ``boxcyl`` answers exactly for the float64 values
-given (closed solids: touching counts), for axis-aligned and oriented boxes, one query at a time or
-over numpy arrays.
+given (closed solids: touching counts), for axis-aligned boxes, oriented boxes and any
+parallelepipeds, one query at a time or over numpy arrays. Boxes and cylinders can also be built
+from rotation matrices, quaternions and 4×4 transforms with the size convention named
+(``OrientedBox.from_rotation(center, R, size=...)``, ``Cylinder.from_quaternion(center,
+xyzw=..., radius=..., half_height=...)``).
 
 >>> import boxcyl
 >>> box = boxcyl.AlignedBox(min=(-1, -1, -1), max=(1, 1, 1))
@@ -12,8 +15,9 @@ True
 >>> cyl
 Cylinder(center=(3.0, 0.0, 0.0), axis=(0.0, 0.0, 5.0), radius=2.0, height=1.0)
 
-Batch forms take arrays and return a numpy bool array; see :func:`intersects_aligned` and
-:func:`intersects_oriented`; :mod:`boxcyl.dask` answers chunked Dask arrays.
+Batch forms take arrays and return a numpy bool array; see :func:`intersects_aligned`,
+:func:`intersects_oriented` and :func:`intersects_parallelepiped`; :mod:`boxcyl.dask` answers
+chunked Dask arrays.
 
 Input policy: numbers are real numbers, read as float64 (numpy integer and float arrays, Python
 ints and floats, and object arrays of real numbers such as ``Fraction`` or ``Decimal``, each

@@ -1,11 +1,12 @@
 // boxcyl._core: the pybind11 bindings behind the Python package `boxcyl` (python/boxcyl/__init__.py
 // adds the numpy-friendly argument handling, the input policy and the docs users read first).
 //
-// Objects: AlignedBox, OrientedBox, Cylinder (double precision, immutable, validated when built so
-// that an invalid one never exists; the package subclasses them for keyword conversion, equality and
-// pickling). Queries: intersects(box, cylinder[, algorithm, arithmetic]) and the batch forms
-// _intersects_aligned / _intersects_oriented over float64 arrays of any strides whose leading length
-// is N or 1 (broadcast).
+// Objects: AlignedBox, OrientedBox, Parallelepiped, Cylinder (double precision, immutable, validated
+// when built so that an invalid one never exists; the package subclasses them for argument conversion,
+// equality and pickling), and the pose factories (boxcyl/geometry/pose.hpp). Queries:
+// intersects(box, cylinder[, algorithm, arithmetic]) and the batch forms _intersects_aligned /
+// _intersects_oriented / _intersects_parallelepiped over float64 arrays of any strides whose leading
+// length is N or 1 (broadcast).
 //
 // A batch runs in chunks on worker threads with the GIL released, while the calling thread checks for
 // signals every few milliseconds (Ctrl-C raises KeyboardInterrupt promptly; the workers stop after

@@ -108,7 +108,8 @@ def test_refusals_in_batches_name_the_argument_and_element():
 
 @pytest.mark.parametrize("call, message", [
     (lambda: boxcyl.intersects((UNIT.min, UNIT.max), TOUCHING),
-     "box: expected an AlignedBox or an OrientedBox, got tuple (for arrays use intersects_aligned"),
+     "box: expected an AlignedBox, an OrientedBox or a Parallelepiped, got tuple (for arrays use "
+     "intersects_aligned"),
     (lambda: boxcyl.intersects(UNIT, UNIT), "cylinder: expected a Cylinder, got AlignedBox"),
     (lambda: boxcyl.intersects(UNIT, TOUCHING, algorithm=2), "algorithm: expected a boxcyl.Algorithm or one of"),
     (lambda: boxcyl.intersects(UNIT, TOUCHING, arithmetic=None), "arithmetic: expected a boxcyl.Arithmetic"),
