@@ -15,6 +15,8 @@ import boxcyl
 import boxcyl.dask
 
 SEED = 20261126
+# distributed 2022.12 on tornado 6.2 warns at cluster start; nothing of boxcyl.
+pytestmark = pytest.mark.filterwarnings("ignore:make_current is deprecated:DeprecationWarning")
 CYL = boxcyl.Cylinder(center=(0.5, -0.25, 0), axis=(1, 2, 3), radius=1.5, height=4)
 
 
