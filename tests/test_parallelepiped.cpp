@@ -6,10 +6,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
+#include <memory>
+#include <vector>
 #include <random>
 #include <stdexcept>
 #include <string>
 
+#include "boxcyl/batch.hpp"
 #include "boxcyl/boxcyl.hpp"
 #include "boxcyl/filtered/parallelepiped.hpp"
 #include "boxcyl/oracle/oracle.hpp"
@@ -253,6 +257,41 @@ TEST(ParallelepipedOracle, FlatHandCases) {
     const P point{{1, 2, 3}, {Vec3<double>{0, 0, 0}, Vec3<double>{0, 0, 0}, Vec3<double>{0, 0, 0}}, {1, 1, 1}};
     EXPECT_TRUE(check(point, {{1, 2, 4}, {0, 0, 1}, 0, 2}));
     EXPECT_FALSE(check(point, {{1, 2, 4}, {0, 0, 1}, 7, below(2)}));
+}
+
+// The batch API: a span of parallelepipeds, double and float, mask and bools, one and several
+// threads: the answers of the scalar default query.
+TEST(ParallelepipedBatch, SameAnswersAsTheScalarQuery) {
+    std::mt19937_64 rng(55);
+    std::uniform_real_distribution<double> u(-3, 3), pos(0, 1.5);
+    const C cyl{{0.5, -0.25, 0.125}, {1, 2, 2}, 1.25, 2.5};
+    std::vector<P> boxes;
+    std::vector<Parallelepiped<float>> fboxes;
+    for (int n = 0; n < 70000; ++n) {  // above split::kMinBoxesPerThread · 2: two threads do run
+        P b = random_box(rng, n % 7);
+        b.center = {u(rng), u(rng), u(rng)};
+        auto f = [](const Vec3<double>& v) { return Vec3<float>{float(v[0]), float(v[1]), float(v[2])}; };
+        fboxes.push_back({f(b.center), {f(b.axes[0]), f(b.axes[1]), f(b.axes[2])}, f(b.extents)});
+        boxes.push_back(b);
+    }
+    for (unsigned threads : {1u, 2u}) {
+        std::vector<std::uint64_t> mask(batch::mask_words(boxes.size()), ~std::uint64_t{0});
+        const batch::Stats st = batch::intersects(cyl, boxes, std::span<std::uint64_t>(mask), {threads});
+        EXPECT_EQ(st.boxes, boxes.size());
+        std::unique_ptr<bool[]> bools(new bool[fboxes.size()]);
+        batch::intersects(cyl, fboxes, std::span<bool>(bools.get(), fboxes.size()), {threads});
+        std::size_t exact = 0;
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            const filtered::Result r = filtered::query(boxes[i], cyl);
+            exact += r.exact_used;
+            ASSERT_EQ(bool((mask[i / 64] >> (i % 64)) & 1), r.intersect) << i << ": " << describe(boxes[i], cyl);
+            ASSERT_EQ(bools[i], intersects(batch::parallelepipeds::widened(fboxes[i]), cyl)) << i;
+        }
+        EXPECT_EQ(st.exact_lanes, exact);
+        EXPECT_EQ(mask.back() >> (boxes.size() % 64), 0u);  // unused high bits cleared
+    }
+    std::vector<std::uint64_t> short_mask(1);
+    EXPECT_THROW(batch::intersects(cyl, boxes, std::span<std::uint64_t>(short_mask)), std::invalid_argument);
 }
 
 TEST(ParallelepipedOptions, HullAndOracleOnAnyAxesSection4NeedsOrthonormal) {
