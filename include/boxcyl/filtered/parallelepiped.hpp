@@ -452,8 +452,8 @@ inline std::optional<bool> filter(const Parallelepiped<double>& b, const Cylinde
 
 // The exact answer for any parallelepiped (exact_used: no certificate decided, exact §3 answered).
 inline Result query(const Parallelepiped<double>& box, const Cylinder<double>& cyl) {
-    assert(validate(box).ok() && "boxcyl::filtered::query: invalid box (see boxcyl::validate)");
-    assert(validate(cyl).ok() && "boxcyl::filtered::query: invalid cylinder (see boxcyl::validate)");
+    assert(is_valid(box) && "boxcyl::filtered::query: invalid box (see boxcyl::validate)");
+    assert(is_valid(cyl) && "boxcyl::filtered::query: invalid cylinder (see boxcyl::validate)");
 #if defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT
     return {parallelepiped_detail::exact_answer(box, cyl), true};
 #else
