@@ -224,6 +224,35 @@ TEST(ParallelepipedRandom, GeneralAndFlatAgainstOracle) {
     }
 }
 
+// Extreme magnitudes: the same random queries with every length scaled by 2^k (k from −1060 to
+// +1000: subnormal to near overflow) and the axes by 2^j independently (any scale: only their span
+// with the extents counts), and tiny or huge components mixed in. Enclosures that overflow or
+// underflow must leave the query to the exact stage, never answer wrongly.
+TEST(ParallelepipedRandom, ExtremeMagnitudesAgainstOracle) {
+    std::mt19937_64 rng(909);
+    std::uniform_real_distribution<double> u(-3, 3), pos(0, 1.5);
+    std::uniform_int_distribution<int> scale(-1060, 1000), axis_scale(-600, 600), flavour(0, 6), coin(0, 3);
+    Checker check;
+    for (int n = 0; n < 400; ++n) {
+        P b = random_box(rng, flavour(rng));
+        C c{{u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}, pos(rng), pos(rng)};
+        const int k = scale(rng), j = axis_scale(rng);
+        auto sc = [](const Vec3<double>& v, int e) { return Vec3<double>{std::ldexp(v[0], e), std::ldexp(v[1], e), std::ldexp(v[2], e)}; };
+        b.center = sc(b.center, k);
+        for (auto& a : b.axes) a = sc(a, j);
+        b.extents = sc(b.extents, k - j);
+        c.center = sc(c.center, k);
+        c.radius = std::ldexp(c.radius, k);
+        c.height = std::ldexp(c.height, k);
+        if (coin(rng) == 0) c.axis[n % 3] = std::ldexp(c.axis[n % 3], -1000);  // a tiny axis component
+        if (coin(rng) == 0) b.axes[n % 3][(n + 1) % 3] = std::ldexp(1.0, j - 1070);  // a subnormal one
+        if (!validate(b).ok() || !validate(c).ok()) continue;
+        check(b, c);
+    }
+    EXPECT_GT(check.cases, 300);
+    std::printf("extreme magnitudes: %d cases, %d answered by the exact stage\n", check.cases, check.exact);
+}
+
 // The oracle's entry for flat solids against exact §3 (two independent exact methods).
 TEST(ParallelepipedOracle, FlatSolidsAgreeWithExactHull) {
     for (int flavour = 1; flavour <= 6; ++flavour) {
