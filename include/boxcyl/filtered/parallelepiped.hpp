@@ -393,9 +393,12 @@ inline void fixed_candidates(const Approx& a, const Cylinder<double>& c, Candida
 // Candidates after steps 1, 2, 4, 8, ...
 inline void searched_candidates(const Approx& full, double shrink, Candidates& cs, int steps = 16) {
     Approx a = full;
-    a.r = full.r * shrink;
-    a.h = full.h * shrink;
-    a.height = full.height * shrink;
+    // The cylinder shrunk by one depth along and across its axis (a factor would take a thick disk's
+    // whole thin rim), kept ≤ the true sizes exactly by max(·, 0) of values computed below them.
+    const double depth = (1 - shrink) * std::min(full.r, full.h);
+    a.r = std::max(0.0, full.r - depth * 1.0000001);
+    a.h = std::max(0.0, full.h - depth * 1.0000001);
+    a.height = a.h * 2 <= full.height ? a.h * 2 : full.height * shrink;
     for (int i = 0; i < 3; ++i) a.e[i] = full.e[i] * shrink;
     Vec3<double> x{0, 0, 0};
     for (int step = 1; step <= steps; ++step) {
