@@ -13,6 +13,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>    // std::sqrt, std::cos, std::sin
+#include <cstdint>  // std::int64_t
 #include <cstdio>   // std::printf
 #include <map>      // the data sets by kind
 #include <random>   // std::mt19937_64
@@ -89,25 +90,25 @@ const Set& set_of(const std::string& kind) {
     return it->second;
 }
 
-void default_query(benchmark::State& st, std::string kind) {
+void default_query(benchmark::State& st, const std::string& kind) {
     const Set& s = set_of(kind);
     for (auto _ : st)
         for (std::size_t i = 0; i < kQueries; ++i) benchmark::DoNotOptimize(intersects(s.boxes[i], s.cylinders[i]));
-    st.SetItemsProcessed(st.iterations() * kQueries);
+    st.SetItemsProcessed(st.iterations() * static_cast<std::int64_t>(kQueries));
 }
-void double_hull(benchmark::State& st, std::string kind) {
+void double_hull(benchmark::State& st, const std::string& kind) {
     const Set& s = set_of(kind);
     const QueryOptions opt{Algorithm::hull, Arithmetic::float64};
     for (auto _ : st)
         for (std::size_t i = 0; i < kQueries; ++i) benchmark::DoNotOptimize(intersects(s.boxes[i], s.cylinders[i], opt));
-    st.SetItemsProcessed(st.iterations() * kQueries);
+    st.SetItemsProcessed(st.iterations() * static_cast<std::int64_t>(kQueries));
 }
-void exact_stage(benchmark::State& st, std::string kind) {
+void exact_stage(benchmark::State& st, const std::string& kind) {
     const Set& s = set_of(kind);
     for (auto _ : st)
         for (std::size_t i = 0; i < kSlow; ++i)
             benchmark::DoNotOptimize(filtered::parallelepiped_detail::exact_answer(s.boxes[i], s.cylinders[i]));
-    st.SetItemsProcessed(st.iterations() * kSlow);
+    st.SetItemsProcessed(st.iterations() * static_cast<std::int64_t>(kSlow));
 }
 void as_oriented_box(benchmark::State& st) {
     const Set& s = set_of("rotated");
@@ -115,7 +116,7 @@ void as_oriented_box(benchmark::State& st) {
     for (const P& b : s.boxes) o.push_back({b.center, b.axes, b.extents});
     for (auto _ : st)
         for (std::size_t i = 0; i < kQueries; ++i) benchmark::DoNotOptimize(intersects(o[i], s.cylinders[i]));
-    st.SetItemsProcessed(st.iterations() * kQueries);
+    st.SetItemsProcessed(st.iterations() * static_cast<std::int64_t>(kQueries));
 }
 
 // Untimed: every default answer against the oracle, and the exact-stage fraction.

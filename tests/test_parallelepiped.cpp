@@ -6,10 +6,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
+#include <memory>
+#include <vector>
 #include <random>
 #include <stdexcept>
 #include <string>
 
+#include "boxcyl/batch.hpp"
 #include "boxcyl/boxcyl.hpp"
 #include "boxcyl/filtered/parallelepiped.hpp"
 #include "boxcyl/oracle/oracle.hpp"
@@ -144,6 +148,45 @@ TEST(ParallelepipedRandom, ExactlyTouchingIntegerParallelepipeds) {
     std::printf("exactly touching: %d cases, %d answered by the exact stage\n", check.cases, check.exact);
 }
 
+// Touching constructions (a vertex maximising m·X, the cylinder's side tangent there) moved off
+// touching by a relative 2^(k−52) of the radius (k = 0..40, both ways) and by a relative 1e-9..1e-3 of the centre: the filter's certificates decide many of these
+// close calls, and every answer must still be the oracle's.
+TEST(ParallelepipedRandom, NearTouchingAgainstOracle) {
+    std::mt19937_64 rng(77);
+    std::uniform_int_distribution<int> small(-6, 6), ext(1, 3), kk(0, 40), sign(0, 1);
+    std::uniform_real_distribution<double> u(-1, 1), mag(-9, -3);
+    Checker check;
+    for (int n = 0; n < 600; ++n) {
+        P b;
+        b.center = {double(small(rng)), double(small(rng)), double(small(rng))};
+        for (int i = 0; i < 3; ++i) {
+            b.axes[i] = {double(small(rng)), double(small(rng)), double(small(rng))};
+            b.extents[i] = ext(rng);
+        }
+        if (n % 2 == 0) {  // orthogonal integer axes (the frame stage)
+            const double w = small(rng), x = small(rng), y = small(rng), z = small(rng) + 0.5;
+            b.axes[0] = {w * w + x * x - y * y - z * z, 2 * (x * y + w * z), 2 * (x * z - w * y)};
+            b.axes[1] = {2 * (x * y - w * z), w * w - x * x + y * y - z * z, 2 * (y * z + w * x)};
+            b.axes[2] = {2 * (x * z + w * y), 2 * (y * z - w * x), w * w - x * x - y * y + z * z};
+        }
+        const Vec3<double> m{u(rng), u(rng), u(rng)};
+        Vec3<double> v = b.center;
+        for (int i = 0; i < 3; ++i) v = v + (dot(m, b.axes[i]) >= 0 ? b.extents[i] : -b.extents[i]) * b.axes[i];
+        const double len = std::sqrt(dot(m, m));
+        const double r = 1 + ext(rng);
+        Vec3<double> axis = cross(m, Vec3<double>{u(rng), u(rng), u(rng)});
+        C c{v + (r / len) * m, axis, r, double(ext(rng))};
+        if (n % 3 == 0) {
+            c.radius = r * (1 + (sign(rng) ? 1 : -1) * std::ldexp(1.0, kk(rng) - 52));
+        } else {
+            const double eps = std::pow(10.0, mag(rng));
+            c.center = c.center + eps * Vec3<double>{u(rng), u(rng), u(rng)};
+        }
+        check(b, c);
+    }
+    std::printf("near touching: %d cases, %d answered by the exact stage\n", check.cases, check.exact);
+}
+
 P random_box(std::mt19937_64& rng, int flavour) {
     std::uniform_real_distribution<double> u(-2, 2), pos(0, 1.5);
     P b{{u(rng), u(rng), u(rng)}, {Vec3<double>{u(rng), u(rng), u(rng)}, Vec3<double>{u(rng), u(rng), u(rng)},
@@ -181,6 +224,35 @@ TEST(ParallelepipedRandom, GeneralAndFlatAgainstOracle) {
     }
 }
 
+// Extreme magnitudes: the same random queries with every length scaled by 2^k (k from −1060 to
+// +1000: subnormal to near overflow) and the axes by 2^j independently (any scale: only their span
+// with the extents counts), and tiny or huge components mixed in. Enclosures that overflow or
+// underflow must leave the query to the exact stage, never answer wrongly.
+TEST(ParallelepipedRandom, ExtremeMagnitudesAgainstOracle) {
+    std::mt19937_64 rng(909);
+    std::uniform_real_distribution<double> u(-3, 3), pos(0, 1.5);
+    std::uniform_int_distribution<int> scale(-1060, 1000), axis_scale(-600, 600), flavour(0, 6), coin(0, 3);
+    Checker check;
+    for (int n = 0; n < 400; ++n) {
+        P b = random_box(rng, flavour(rng));
+        C c{{u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}, pos(rng), pos(rng)};
+        const int k = scale(rng), j = axis_scale(rng);
+        auto sc = [](const Vec3<double>& v, int e) { return Vec3<double>{std::ldexp(v[0], e), std::ldexp(v[1], e), std::ldexp(v[2], e)}; };
+        b.center = sc(b.center, k);
+        for (auto& a : b.axes) a = sc(a, j);
+        b.extents = sc(b.extents, k - j);
+        c.center = sc(c.center, k);
+        c.radius = std::ldexp(c.radius, k);
+        c.height = std::ldexp(c.height, k);
+        if (coin(rng) == 0) c.axis[n % 3] = std::ldexp(c.axis[n % 3], -1000);  // a tiny axis component
+        if (coin(rng) == 0) b.axes[n % 3][(n + 1) % 3] = std::ldexp(1.0, j - 1070);  // a subnormal one
+        if (!validate(b).ok() || !validate(c).ok()) continue;
+        check(b, c);
+    }
+    EXPECT_GT(check.cases, 300);
+    std::printf("extreme magnitudes: %d cases, %d answered by the exact stage\n", check.cases, check.exact);
+}
+
 // The oracle's entry for flat solids against exact §3 (two independent exact methods).
 TEST(ParallelepipedOracle, FlatSolidsAgreeWithExactHull) {
     for (int flavour = 1; flavour <= 6; ++flavour) {
@@ -214,6 +286,41 @@ TEST(ParallelepipedOracle, FlatHandCases) {
     const P point{{1, 2, 3}, {Vec3<double>{0, 0, 0}, Vec3<double>{0, 0, 0}, Vec3<double>{0, 0, 0}}, {1, 1, 1}};
     EXPECT_TRUE(check(point, {{1, 2, 4}, {0, 0, 1}, 0, 2}));
     EXPECT_FALSE(check(point, {{1, 2, 4}, {0, 0, 1}, 7, below(2)}));
+}
+
+// The batch API: a span of parallelepipeds, double and float, mask and bools, one and several
+// threads: the answers of the scalar default query.
+TEST(ParallelepipedBatch, SameAnswersAsTheScalarQuery) {
+    std::mt19937_64 rng(55);
+    std::uniform_real_distribution<double> u(-3, 3), pos(0, 1.5);
+    const C cyl{{0.5, -0.25, 0.125}, {1, 2, 2}, 1.25, 2.5};
+    std::vector<P> boxes;
+    std::vector<Parallelepiped<float>> fboxes;
+    for (int n = 0; n < 70000; ++n) {  // above split::kMinBoxesPerThread · 2: two threads do run
+        P b = random_box(rng, n % 7);
+        b.center = {u(rng), u(rng), u(rng)};
+        auto f = [](const Vec3<double>& v) { return Vec3<float>{float(v[0]), float(v[1]), float(v[2])}; };
+        fboxes.push_back({f(b.center), {f(b.axes[0]), f(b.axes[1]), f(b.axes[2])}, f(b.extents)});
+        boxes.push_back(b);
+    }
+    for (unsigned threads : {1u, 2u}) {
+        std::vector<std::uint64_t> mask(batch::mask_words(boxes.size()), ~std::uint64_t{0});
+        const batch::Stats st = batch::intersects(cyl, boxes, std::span<std::uint64_t>(mask), {threads});
+        EXPECT_EQ(st.boxes, boxes.size());
+        std::unique_ptr<bool[]> bools(new bool[fboxes.size()]);
+        batch::intersects(cyl, fboxes, std::span<bool>(bools.get(), fboxes.size()), {threads});
+        std::size_t exact = 0;
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            const filtered::Result r = filtered::query(boxes[i], cyl);
+            exact += r.exact_used;
+            ASSERT_EQ(bool((mask[i / 64] >> (i % 64)) & 1), r.intersect) << i << ": " << describe(boxes[i], cyl);
+            ASSERT_EQ(bools[i], intersects(batch::parallelepipeds::widened(fboxes[i]), cyl)) << i;
+        }
+        EXPECT_EQ(st.exact_lanes, exact);
+        EXPECT_EQ(mask.back() >> (boxes.size() % 64), 0u);  // unused high bits cleared
+    }
+    std::vector<std::uint64_t> short_mask(1);
+    EXPECT_THROW(batch::intersects(cyl, boxes, std::span<std::uint64_t>(short_mask)), std::invalid_argument);
 }
 
 TEST(ParallelepipedOptions, HullAndOracleOnAnyAxesSection4NeedsOrthonormal) {

@@ -193,6 +193,70 @@ TEST(InputPolicy, OrientedAxesWithinToleranceAreAcceptedBeyondAreRejected) {
     EXPECT_EQ(validate(b).field, "box.axes[2]");
 }
 
+// A value just beyond the tolerance is printed with the decimals it takes to read as beyond it.
+TEST(InputPolicy, OrthonormalityMessagesShowTheValueBeyondTheTolerance) {
+    OrientedBox<double> b = unit_obox;
+    b.axes[1] = {std::nextafter(orthonormality_tolerance, 1.0), 1, 0};  // axes[0]·axes[1] = 1e-4 + 1 ulp
+    EXPECT_EQ(validate(b).message(),
+              "box.axes: are not orthogonal (axes[0]·axes[1] = 0.00010000000000000002, tolerance 1e-4)");
+    b.axes[1] = {-1.0000001e-4, 1, 0};
+    EXPECT_EQ(validate(b).message(), "box.axes: are not orthogonal (axes[0]·axes[1] = -0.00010000001, tolerance 1e-4)");
+    b = unit_obox;
+    b.axes[2] = {0, 0, 1.00005000001};  // |axes[2]|² ≈ 1.00010000025, "1.000100" to six decimals
+    EXPECT_EQ(validate(b).message(), "box.axes[2]: is not unit length (|axes[2]|² = 1.000100003, tolerance 1e-4)");
+    b.axes[2] = {0, 0, max_d};  // beyond double: printed in long double
+    EXPECT_EQ(validate(b).message(), "box.axes[2]: is not unit length (|axes[2]|² = 3.2317e+616, tolerance 1e-4)");
+}
+
+// is_valid() is validate().ok() without the text, on valid input, on every field's bad values and on
+// frames on both sides of the tolerance.
+TEST(InputPolicy, IsValidAgreesWithValidate) {
+    const auto agree = [](const auto& shape) { EXPECT_EQ(is_valid(shape), validate(shape).ok()) << validate(shape).message(); };
+    agree(unit_cyl);
+    agree(unit_box);
+    agree(unit_obox);
+    agree(CanonicalBox<double>{{1, 0, -0.0}});
+    agree(CanonicalBox<double>{{1, -1, 0}});
+    for (const double x : {nan, inf, -inf, -1.0, -0.0, 0.0, min_sub, -min_sub, max_d, -max_d, 1.0}) {
+        for (const auto& f : cylinder_fields()) {
+            Cylinder<double> c = unit_cyl;
+            f.set(c, x);
+            agree(c);
+        }
+        for (const auto& f : aligned_fields()) {
+            AlignedBox<double> b = unit_box;
+            f.set(b, x);
+            agree(b);
+        }
+        for (const auto& f : oriented_fields()) {
+            OrientedBox<double> b = unit_obox;
+            f.set(b, x);
+            agree(b);
+        }
+    }
+    // Off-diagonal and diagonal Gram entries stepping across 1e-4 one ulp at a time, in double and float.
+    for (const double t : {orthonormality_tolerance, 0.9 * orthonormality_tolerance}) {
+        double x = std::nextafter(t, 0.0);
+        for (int k = 0; k < 3; ++k, x = std::nextafter(x, 1.0)) {
+            OrientedBox<double> b = unit_obox;
+            b.axes[1] = {x, 1, 0};
+            agree(b);
+            b.axes[1] = {-x, 1, 0};
+            agree(b);
+            OrientedBox<float> bf{{0, 0, 0}, {Vec3<float>{1, 0, 0}, Vec3<float>{static_cast<float>(x), 1, 0}, Vec3<float>{0, 0, 1}}, {1, 1, 1}};
+            agree(bf);
+        }
+    }
+    const double s = std::sqrt(1 + orthonormality_tolerance);
+    for (double z = std::nextafter(s, 0.0), k = 0; k < 5; ++k, z = std::nextafter(z, 2.0)) {
+        OrientedBox<double> b = unit_obox;
+        b.axes[2] = {0, 0, z};
+        agree(b);
+    }
+    EXPECT_TRUE(is_valid(unit_obox));
+    EXPECT_FALSE(is_valid(Cylinder<double>{{0, 0, 0}, {0, 0, 0}, 1, 1}));
+}
+
 // --- the default query on what the policy accepts: the oracle's answer, and the hand-derived one ---
 
 const QueryOptions oracle_options{Algorithm::oracle, Arithmetic::exact};

@@ -734,8 +734,8 @@ inline std::string describe(const Cylinder<double>& c) {
 
 template <class Box>
 Result run(const Box& box, const Cylinder<double>& cyl) {
-    assert(validate(box).ok() && "boxcyl::filtered::query: invalid box (see boxcyl::validate)");
-    assert(validate(cyl).ok() && "boxcyl::filtered::query: invalid cylinder (see boxcyl::validate)");
+    assert(is_valid(box) && "boxcyl::filtered::query: invalid box (see boxcyl::validate)");
+    assert(is_valid(cyl) && "boxcyl::filtered::query: invalid cylinder (see boxcyl::validate)");
 #if defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT
     return {exact_answer(box, cyl), true};
 #else

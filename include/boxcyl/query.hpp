@@ -115,8 +115,8 @@ inline exact::Method exact_method(Algorithm a) {
 
 template <class Box, class T>
 bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
-    assert(validate(box).ok() && "boxcyl::intersects: invalid box (see boxcyl::validate)");
-    assert(validate(cyl).ok() && "boxcyl::intersects: invalid cylinder (see boxcyl::validate)");
+    assert(is_valid(box) && "boxcyl::intersects: invalid box (see boxcyl::validate)");
+    assert(is_valid(cyl) && "boxcyl::intersects: invalid cylinder (see boxcyl::validate)");
     const bool rounded_arithmetic = opt.arithmetic == Arithmetic::float32 || opt.arithmetic == Arithmetic::float64;
     if (opt.algorithm != Algorithm::oracle && rounded_arithmetic) {
         const std::optional<bool> r = opt.arithmetic == Arithmetic::float32 ? rounded<float>(opt.algorithm, box, cyl)
@@ -156,8 +156,8 @@ bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
 // axes throw std::domain_error rather than answer for a different solid.
 template <class T>
 bool dispatch(const Parallelepiped<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
-    assert(validate(box).ok() && "boxcyl::intersects: invalid box (see boxcyl::validate)");
-    assert(validate(cyl).ok() && "boxcyl::intersects: invalid cylinder (see boxcyl::validate)");
+    assert(is_valid(box) && "boxcyl::intersects: invalid box (see boxcyl::validate)");
+    assert(is_valid(cyl) && "boxcyl::intersects: invalid cylinder (see boxcyl::validate)");
     const bool rounded_arithmetic = opt.arithmetic == Arithmetic::float32 || opt.arithmetic == Arithmetic::float64;
     if (opt.algorithm == Algorithm::hull && rounded_arithmetic) {
         auto hull = [&](auto zero) {
@@ -184,7 +184,7 @@ bool dispatch(const Parallelepiped<T>& box, const Cylinder<T>& cyl, const QueryO
     }
 #endif
     const OrientedBox<T> oriented{box.center, box.axes, box.extents};
-    if (!validate(oriented).ok())
+    if (!is_valid(oriented))
         throw std::domain_error(
             "boxcyl: §2/§4 need an orthonormal box frame and these parallelepiped axes are not orthonormal "
             "(use the default options, Algorithm::hull or Algorithm::oracle)");

@@ -156,7 +156,7 @@ std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, c
                          std::size_t count, Stats& st) {
 #ifndef NDEBUG
     for (std::size_t i = begin; i < begin + count; ++i)
-        assert(validate(s.box(i)).ok() && "boxcyl::batch::intersects: invalid box (see boxcyl::validate)");
+        assert(is_valid(s.box(i)) && "boxcyl::batch::intersects: invalid box (see boxcyl::validate)");
 #endif
     std::uint64_t bits = 0, open = 0;
     for (std::size_t k = 0; k < count; k += lane_count) {
@@ -204,7 +204,7 @@ std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, c
 // Runs the blocks over the threads; emit(block, bits, count) stores one block's answers.
 template <class Source, class Emit>
 Stats run(const Cylinder<double>& cyl, const Source& s, std::size_t n, const Options& opt, Emit&& emit) {
-    assert(validate(cyl).ok() && "boxcyl::batch::intersects: invalid cylinder (see boxcyl::validate)");
+    assert(is_valid(cyl) && "boxcyl::batch::intersects: invalid cylinder (see boxcyl::validate)");
     const CylinderFilter f = prepare(cyl);
     const std::size_t blocks = mask_words(n);
     const unsigned threads = split::thread_count(opt.threads, n);

@@ -393,9 +393,12 @@ inline void fixed_candidates(const Approx& a, const Cylinder<double>& c, Candida
 // Candidates after steps 1, 2, 4, 8, ...
 inline void searched_candidates(const Approx& full, double shrink, Candidates& cs, int steps = 16) {
     Approx a = full;
-    a.r = full.r * shrink;
-    a.h = full.h * shrink;
-    a.height = full.height * shrink;
+    // The cylinder shrunk by one depth along and across its axis (a factor would take a thick disk's
+    // whole thin rim), kept ≤ the true sizes exactly by max(·, 0) of values computed below them.
+    const double depth = (1 - shrink) * std::min(full.r, full.h);
+    a.r = std::max(0.0, full.r - depth * 1.0000001);
+    a.h = std::max(0.0, full.h - depth * 1.0000001);
+    a.height = a.h * 2 <= full.height ? a.h * 2 : full.height * shrink;
     for (int i = 0; i < 3; ++i) a.e[i] = full.e[i] * shrink;
     Vec3<double> x{0, 0, 0};
     for (int step = 1; step <= steps; ++step) {
@@ -431,8 +434,43 @@ std::optional<bool> certify(const Problem<N>& p, const Candidates& cs) {
     return std::nullopt;
 }
 
+// The same question at a convenient scale: each axis Wᵢ scaled by 2^-aᵢ to a largest component in
+// [1, 2) with its extent scaled by 2^aᵢ (the same solid), then every length (centres, extents, radius,
+// height) by one 2^-k when the largest is beyond 2^±200 (the same question: the axis direction does
+// not change). A step is taken only where every scaled value is exact (checked by scaling back), so
+// the exact answer is unchanged; the enclosures then neither overflow nor underflow on most inputs.
+inline bool scaled_exactly(double x, int k, double& out) {
+    out = std::ldexp(x, k);
+    return std::ldexp(out, -k) == x;
+}
+inline void normalise(Parallelepiped<double>& b, Cylinder<double>& c) {
+    for (int i = 0; i < 3; ++i) {
+        const double m = std::max({std::fabs(b.axes[i][0]), std::fabs(b.axes[i][1]), std::fabs(b.axes[i][2])});
+        if (!(m > 0) || !(m <= std::numeric_limits<double>::max())) continue;
+        const int a = std::ilogb(m);
+        Vec3<double> w;
+        double e = 0;
+        if (scaled_exactly(b.axes[i][0], -a, w[0]) && scaled_exactly(b.axes[i][1], -a, w[1]) &&
+            scaled_exactly(b.axes[i][2], -a, w[2]) && scaled_exactly(b.extents[i], a, e))
+            b.axes[i] = w, b.extents[i] = e;
+    }
+    double l = std::max({c.radius, c.height, b.extents[0], b.extents[1], b.extents[2]});
+    for (int j = 0; j < 3; ++j) l = std::max({l, std::fabs(b.center[j]), std::fabs(c.center[j])});
+    if (!(l > 0) || !(l <= std::numeric_limits<double>::max())) return;
+    const int k = -std::ilogb(l);
+    if (k >= -200 && k <= 200) return;
+    Parallelepiped<double> nb = b;
+    Cylinder<double> nc = c;
+    bool exact = scaled_exactly(c.radius, k, nc.radius) && scaled_exactly(c.height, k, nc.height);
+    for (int j = 0; j < 3; ++j)
+        exact = exact && scaled_exactly(b.center[j], k, nb.center[j]) && scaled_exactly(c.center[j], k, nc.center[j]) &&
+                scaled_exactly(b.extents[j], k, nb.extents[j]);
+    if (exact) b = nb, c = nc;
+}
+
 // The certified stages: the answer, or nullopt for the exact stage.
-inline std::optional<bool> filter(const Parallelepiped<double>& b, const Cylinder<double>& c) {
+inline std::optional<bool> filter(Parallelepiped<double> b, Cylinder<double> c) {
+    normalise(b, c);
     const Approx a = approx(b, c);
     Candidates cs;
     fixed_candidates(a, c, cs);
@@ -452,8 +490,8 @@ inline std::optional<bool> filter(const Parallelepiped<double>& b, const Cylinde
 
 // The exact answer for any parallelepiped (exact_used: no certificate decided, exact §3 answered).
 inline Result query(const Parallelepiped<double>& box, const Cylinder<double>& cyl) {
-    assert(validate(box).ok() && "boxcyl::filtered::query: invalid box (see boxcyl::validate)");
-    assert(validate(cyl).ok() && "boxcyl::filtered::query: invalid cylinder (see boxcyl::validate)");
+    assert(is_valid(box) && "boxcyl::filtered::query: invalid box (see boxcyl::validate)");
+    assert(is_valid(cyl) && "boxcyl::filtered::query: invalid cylinder (see boxcyl::validate)");
 #if defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT
     return {parallelepiped_detail::exact_answer(box, cyl), true};
 #else

@@ -18,11 +18,20 @@
 //   exactly there too (no intermediate overflow turns into a wrong answer).
 // For valid input, boxcyl::intersects() with default options never throws; it asserts validity in
 // debug builds; in release builds invalid input gets an unspecified answer or an exception.
+//
+// Cost: is_valid() is a few comparisons (no allocation, never throws), and validate() on valid input
+// is is_valid() plus an empty Validity; the strings naming the field are built only when something
+// is wrong (bench/bench_validate.cpp measures both).
 #pragma once
 
-#include <cmath>    // std::isnan, std::isinf, std::fabs
-#include <cstddef>  // std::size_t
-#include <string>   // field names and reasons
+#include <array>        // OrientedBox::axes
+#include <cmath>        // std::fabs, std::isnan, std::isinf
+#include <cstddef>      // std::size_t
+#include <cstdio>       // std::snprintf
+#include <limits>       // std::numeric_limits
+#include <string>       // field names and reasons
+#include <string_view>  // prefixes
+#include <type_traits>  // std::is_floating_point_v
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
@@ -44,6 +53,76 @@ struct Validity {
 inline constexpr double orthonormality_tolerance = 1e-4;
 
 namespace detail {
+
+// --- the checks themselves: booleans, no strings, combined with & rather than && so that valid
+// input (the common case) takes no branch per field ---
+
+template <class T>
+bool finite(T x) noexcept {
+    return std::fabs(x) <= std::numeric_limits<T>::max();  // false for NaN and ±Inf
+}
+
+template <class T>
+bool finite3(const Vec3<T>& p) noexcept {
+    return finite(p[0]) & finite(p[1]) & finite(p[2]);
+}
+
+template <class T>
+bool size_ok(T x) noexcept {
+    return finite(x) & !(x < T(0));
+}
+
+template <class T>
+bool is_zero3(const Vec3<T>& p) noexcept {
+    return (p[0] == T(0)) & (p[1] == T(0)) & (p[2] == T(0));
+}
+
+// The Gram entry Ai·Aj in long double, so that the check itself cannot overflow for finite input of
+// reasonable size; values beyond ~1e2466 would, but then |Ai|² is far from 1 anyway.
+template <class T>
+long double gram(const std::array<Vec3<T>, 3>& a, std::size_t i, std::size_t j) noexcept {
+    long double g = 0;
+    for (std::size_t k = 0; k < 3; ++k) g += static_cast<long double>(a[i][k]) * static_cast<long double>(a[j][k]);
+    return g;
+}
+
+template <class T>
+bool gram_entry_ok(const std::array<Vec3<T>, 3>& a, std::size_t i, std::size_t j) noexcept {
+    const long double target = (i == j) ? 1.0L : 0.0L;
+    return std::fabs(gram(a, i, j) - target) <= orthonormality_tolerance;
+}
+
+// |Ai·Aj − δij| ≤ 1e-4 for all i ≤ j, as gram_entry_ok() decides it.
+template <class T>
+bool gram_ok(const std::array<Vec3<T>, 3>& a) noexcept {
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = i; j < 3; ++j)
+            if (!gram_entry_ok(a, i, j)) return false;
+    return true;
+}
+
+// A sufficient condition for gram_ok(), cheap for float and double: the six entries in double each
+// within 0.9e-4 of their targets. The rows then have length ≤ 1.0001, so the double and the long
+// double entries differ by less than 1e-15 and the latter are within 1e-4 too. When this fails (near
+// the tolerance, overflow, a bad frame), gram_ok() decides.
+template <class T>
+bool gram_clearly_ok(const std::array<Vec3<T>, 3>& a) noexcept {
+    if constexpr (std::is_floating_point_v<T> && sizeof(T) <= sizeof(double)) {
+        bool clear = true;
+        for (std::size_t i = 0; i < 3; ++i)
+            for (std::size_t j = i; j < 3; ++j) {
+                const double g = static_cast<double>(a[i][0]) * static_cast<double>(a[j][0]) +
+                                 static_cast<double>(a[i][1]) * static_cast<double>(a[j][1]) +
+                                 static_cast<double>(a[i][2]) * static_cast<double>(a[j][2]);
+                clear &= std::fabs(g - (i == j ? 1.0 : 0.0)) <= 0.9 * orthonormality_tolerance;
+            }
+        return clear;
+    } else {
+        return false;
+    }
+}
+
+// --- the messages: built only once a check has failed ---
 
 template <class T>
 bool check_finite(Validity& v, const std::string& field, T x) {
@@ -75,26 +154,53 @@ bool check_nonnegative(Validity& v, const std::string& field, T x) {
     return true;
 }
 
-}  // namespace detail
+// Whether the fixed-point decimal `s` ("-0.000200", "1.000100", at least four decimals), read as the
+// decimal number it shows, is more than 1e-4 from `target` (0 or 1).
+inline bool reads_beyond_tolerance(std::string_view s, bool target_is_one) {
+    const bool negative = !s.empty() && s.front() == '-';
+    if (negative) s.remove_prefix(1);
+    const std::size_t dot = s.find('.');
+    const std::string_view whole = s.substr(0, dot), fraction = s.substr(dot + 1);
+    const std::string zeros(fraction.size() - 4, '0');
+    if (!target_is_one) return whole != "0" || fraction > "0001" + zeros;  // |d| > 0.0001
+    if (negative) return true;
+    if (whole == "0") return fraction < "9999" + zeros;                     // d < 0.9999
+    return whole != "1" || fraction > "0001" + zeros;                       // d > 1.0001
+}
 
-// `prefix` names the object in messages ("cylinder", or "cylinders[7]" in a batch).
+// A Gram entry that failed the tolerance, printed with as many decimals as it takes for the printed
+// number itself to read as beyond the tolerance (six at least): 1.0001000003 is not shown as "1.000100".
+inline std::string gram_text(long double g, bool target_is_one) {
+    char buf[64];
+    if (!(std::fabs(g) < 1e6L)) {
+        std::snprintf(buf, sizeof buf, "%.6Lg", g);
+        return buf;
+    }
+    // A failed entry is beyond 1e-4 by at least the excess of the double 1e-4 over 1e-4 (4.8e-21), so
+    // 24 decimals always suffice.
+    for (int decimals = 6; decimals <= 24; ++decimals) {
+        std::snprintf(buf, sizeof buf, "%.*Lf", decimals, g);
+        if (reads_beyond_tolerance(buf, target_is_one)) return buf;
+    }
+    return buf;
+}
+
 template <class T>
-Validity validate(const Cylinder<T>& c, const std::string& prefix = "cylinder") {
+Validity describe(const Cylinder<T>& c, const std::string& prefix) {
     Validity v;
-    if (!detail::check_finite(v, prefix + ".center", c.center)) return v;
-    if (!detail::check_finite(v, prefix + ".axis", c.axis)) return v;
-    if (c.axis[0] == T(0) && c.axis[1] == T(0) && c.axis[2] == T(0))
-        return {prefix + ".axis", "is the zero vector"};
-    if (!detail::check_nonnegative(v, prefix + ".radius", c.radius)) return v;
-    if (!detail::check_nonnegative(v, prefix + ".height", c.height)) return v;
+    if (!check_finite(v, prefix + ".center", c.center)) return v;
+    if (!check_finite(v, prefix + ".axis", c.axis)) return v;
+    if (is_zero3(c.axis)) return {prefix + ".axis", "is the zero vector"};
+    if (!check_nonnegative(v, prefix + ".radius", c.radius)) return v;
+    if (!check_nonnegative(v, prefix + ".height", c.height)) return v;
     return v;
 }
 
 template <class T>
-Validity validate(const AlignedBox<T>& b, const std::string& prefix = "box") {
+Validity describe(const AlignedBox<T>& b, const std::string& prefix) {
     Validity v;
-    if (!detail::check_finite(v, prefix + ".min", b.min)) return v;
-    if (!detail::check_finite(v, prefix + ".max", b.max)) return v;
+    if (!check_finite(v, prefix + ".min", b.min)) return v;
+    if (!check_finite(v, prefix + ".max", b.max)) return v;
     for (std::size_t i = 0; i < 3; ++i)
         if (b.max[i] < b.min[i])
             return {prefix + ".max[" + std::to_string(i) + "]",
@@ -103,58 +209,117 @@ Validity validate(const AlignedBox<T>& b, const std::string& prefix = "box") {
 }
 
 template <class T>
-Validity validate(const CanonicalBox<T>& b, const std::string& prefix = "box") {
+Validity describe(const CanonicalBox<T>& b, const std::string& prefix) {
     Validity v;
     for (std::size_t i = 0; i < 3; ++i)
-        if (!detail::check_nonnegative(v, prefix + ".extents[" + std::to_string(i) + "]", b.extents[i]))
-            return v;
+        if (!check_nonnegative(v, prefix + ".extents[" + std::to_string(i) + "]", b.extents[i])) return v;
     return v;
 }
 
 template <class T>
-Validity validate(const OrientedBox<T>& b, const std::string& prefix = "box") {
+Validity describe(const OrientedBox<T>& b, const std::string& prefix) {
     Validity v;
-    if (!detail::check_finite(v, prefix + ".center", b.center)) return v;
+    if (!check_finite(v, prefix + ".center", b.center)) return v;
     for (std::size_t i = 0; i < 3; ++i)
-        if (!detail::check_finite(v, prefix + ".axes[" + std::to_string(i) + "]", b.axes[i])) return v;
+        if (!check_finite(v, prefix + ".axes[" + std::to_string(i) + "]", b.axes[i])) return v;
     for (std::size_t i = 0; i < 3; ++i)
-        if (!detail::check_nonnegative(v, prefix + ".extents[" + std::to_string(i) + "]", b.extents[i]))
-            return v;
-    for (std::size_t i = 0; i < 3; ++i) {
-        const Vec3<T>& a = b.axes[i];
-        if (a[0] == T(0) && a[1] == T(0) && a[2] == T(0))
-            return {prefix + ".axes[" + std::to_string(i) + "]", "is the zero vector"};
-    }
-    // Computed in long double so that the check itself cannot overflow for finite input of
-    // reasonable size; values beyond ~1e2466 would, but then |Ai|² is far from 1 anyway.
+        if (!check_nonnegative(v, prefix + ".extents[" + std::to_string(i) + "]", b.extents[i])) return v;
+    for (std::size_t i = 0; i < 3; ++i)
+        if (is_zero3(b.axes[i])) return {prefix + ".axes[" + std::to_string(i) + "]", "is the zero vector"};
     for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = i; j < 3; ++j) {
-            long double g = 0;
-            for (std::size_t k = 0; k < 3; ++k)
-                g += static_cast<long double>(b.axes[i][k]) * static_cast<long double>(b.axes[j][k]);
-            const long double target = (i == j) ? 1.0L : 0.0L;
-            if (!(std::fabs(g - target) <= orthonormality_tolerance)) {
-                std::string what = (i == j) ? "is not unit length (|axes[" + std::to_string(i) + "]|² = "
-                                            : "are not orthogonal (axes[" + std::to_string(i) +
-                                                  "]·axes[" + std::to_string(j) + "] = ";
-                what += std::to_string(static_cast<double>(g)) + ", tolerance 1e-4)";
-                return {prefix + ".axes" + (i == j ? "[" + std::to_string(i) + "]" : std::string()), what};
-            }
+            if (gram_entry_ok(b.axes, i, j)) continue;
+            const std::string si = std::to_string(i), sj = std::to_string(j);
+            std::string what = (i == j) ? "is not unit length (|axes[" + si + "]|² = "
+                                        : "are not orthogonal (axes[" + si + "]·axes[" + sj + "] = ";
+            what += gram_text(gram(b.axes, i, j), i == j) + ", tolerance 1e-4)";
+            return {prefix + ".axes" + (i == j ? "[" + si + "]" : std::string()), what};
         }
     return v;
 }
 
 // Any axes are valid: zero or parallel ones give the flat solid they span.
 template <class T>
-Validity validate(const Parallelepiped<T>& b, const std::string& prefix = "box") {
+Validity describe(const Parallelepiped<T>& b, const std::string& prefix) {
     Validity v;
-    if (!detail::check_finite(v, prefix + ".center", b.center)) return v;
+    if (!check_finite(v, prefix + ".center", b.center)) return v;
     for (std::size_t i = 0; i < 3; ++i)
-        if (!detail::check_finite(v, prefix + ".axes[" + std::to_string(i) + "]", b.axes[i])) return v;
+        if (!check_finite(v, prefix + ".axes[" + std::to_string(i) + "]", b.axes[i])) return v;
     for (std::size_t i = 0; i < 3; ++i)
-        if (!detail::check_nonnegative(v, prefix + ".extents[" + std::to_string(i) + "]", b.extents[i]))
-            return v;
+        if (!check_nonnegative(v, prefix + ".extents[" + std::to_string(i) + "]", b.extents[i])) return v;
     return v;
+}
+
+}  // namespace detail
+
+// True when validate() would say ok: the same checks, without building any text.
+template <class T>
+bool is_valid(const Cylinder<T>& c) noexcept {
+    return detail::finite3(c.center) & detail::finite3(c.axis) & !detail::is_zero3(c.axis) &
+           detail::size_ok(c.radius) & detail::size_ok(c.height);
+}
+
+template <class T>
+bool is_valid(const AlignedBox<T>& b) noexcept {
+    return detail::finite3(b.min) & detail::finite3(b.max) & !(b.max[0] < b.min[0]) & !(b.max[1] < b.min[1]) &
+           !(b.max[2] < b.min[2]);
+}
+
+template <class T>
+bool is_valid(const CanonicalBox<T>& b) noexcept {
+    return detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) & detail::size_ok(b.extents[2]);
+}
+
+template <class T>
+bool is_valid(const OrientedBox<T>& b) noexcept {
+    const bool others = detail::finite3(b.center) & detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) &
+                        detail::size_ok(b.extents[2]);
+    // gram_clearly_ok() implies finite, non-zero axes: a NaN or ±Inf component makes a Gram entry NaN
+    // or +Inf, a zero axis makes |Ai|² zero.
+    if (others && detail::gram_clearly_ok(b.axes)) return true;
+    return others && detail::finite3(b.axes[0]) && detail::finite3(b.axes[1]) && detail::finite3(b.axes[2]) &&
+           !detail::is_zero3(b.axes[0]) && !detail::is_zero3(b.axes[1]) && !detail::is_zero3(b.axes[2]) &&
+           detail::gram_ok(b.axes);
+}
+
+// Any axes: only finite fields and non-negative extents are asked.
+template <class T>
+bool is_valid(const Parallelepiped<T>& b) noexcept {
+    return detail::finite3(b.center) & detail::finite3(b.axes[0]) & detail::finite3(b.axes[1]) &
+           detail::finite3(b.axes[2]) & detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) &
+           detail::size_ok(b.extents[2]);
+}
+
+// Names the first bad field and why. `prefix` names the object in messages ("cylinder", or
+// "cylinders[7]" in a batch); it is copied only when something is wrong.
+template <class T>
+Validity validate(const Cylinder<T>& c, std::string_view prefix = "cylinder") {
+    if (is_valid(c)) return {};
+    return detail::describe(c, std::string(prefix));
+}
+
+template <class T>
+Validity validate(const AlignedBox<T>& b, std::string_view prefix = "box") {
+    if (is_valid(b)) return {};
+    return detail::describe(b, std::string(prefix));
+}
+
+template <class T>
+Validity validate(const CanonicalBox<T>& b, std::string_view prefix = "box") {
+    if (is_valid(b)) return {};
+    return detail::describe(b, std::string(prefix));
+}
+
+template <class T>
+Validity validate(const OrientedBox<T>& b, std::string_view prefix = "box") {
+    if (is_valid(b)) return {};
+    return detail::describe(b, std::string(prefix));
+}
+
+template <class T>
+Validity validate(const Parallelepiped<T>& b, std::string_view prefix = "box") {
+    if (is_valid(b)) return {};
+    return detail::describe(b, std::string(prefix));
 }
 
 }  // namespace boxcyl
