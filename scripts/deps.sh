@@ -11,7 +11,8 @@
 set -euo pipefail
 build=(cmake g++ make libgmp-dev nlohmann-json3-dev libcli11-dev)
 python=(g++ libgmp-dev python3-dev python3-pybind11 python3-numpy python3-setuptools python3-pip python3-venv)
-test=("${build[@]}" "${python[@]}" libgtest-dev libgmock-dev libbenchmark-dev pkg-config python3-pytest)
+test=("${build[@]}" "${python[@]}" libgtest-dev libgmock-dev libbenchmark-dev pkg-config python3-pytest
+      python3-mypy python3-dask python3-distributed)
 packages=()
 group=0
 for a in "$@"; do

@@ -13,6 +13,8 @@
 //   OrientedBox<T>    array of structures (std::span<const OrientedBox<T>>), T = float or double: the
 //                     library's own struct, so existing arrays need no copy; the filter gathers each
 //                     vector of lanes from it.
+//   Parallelepiped<T> any axes (std::span<const Parallelepiped<T>>), T = float or double: no SIMD filter,
+//                     the scalar default query per box, over the threads (batch/parallelepiped.hpp).
 // Output: a bit mask (bit i of word i/64 is box i; the unused high bits of the last word are cleared;
 // at least (N + 63)/64 words) or one bool per box. Stats::exact_lanes counts the boxes that the filter
 // left to the scalar query.
@@ -50,6 +52,7 @@
 #include <utility>           // std::forward
 
 #include "boxcyl/batch/kernel.hpp"
+#include "boxcyl/batch/parallelepiped.hpp"
 #include "boxcyl/batch/types.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"

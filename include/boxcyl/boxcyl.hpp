@@ -12,6 +12,8 @@
 #if defined(BOXCYL_HEADER_ONLY) || defined(BOXCYL_HAS_EXACT)
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
+#include "boxcyl/geometry/pose.hpp"
 #include "boxcyl/geometry/validate.hpp"
 #include "boxcyl/query.hpp"
 #include "boxcyl/version.hpp"

@@ -31,7 +31,7 @@
 
 #include <cassert>    // debug-build precondition checks
 #include <optional>   // results of algorithms that may fail
-#include <stdexcept>  // std::invalid_argument for an unavailable option
+#include <stdexcept>  // std::invalid_argument for an unavailable option, std::domain_error
 #include <type_traits>  // std::is_same_v
 
 #include "boxcyl/algo/convex_hull.hpp"
@@ -39,12 +39,14 @@
 #include "boxcyl/algo/quadratic_programming.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
 #include "boxcyl/geometry/reduce.hpp"
 #include "boxcyl/geometry/validate.hpp"
 #include "boxcyl/options.hpp"
 #if defined(BOXCYL_HAS_EXACT)
 #include "boxcyl/exact_paths.hpp"
 #include "boxcyl/filtered.hpp"
+#include "boxcyl/filtered/parallelepiped.hpp"
 #include "boxcyl/oracle/oracle.hpp"
 #endif
 
@@ -66,6 +68,10 @@ AlignedBox<U> cast(const AlignedBox<T>& b) {
 }
 template <class U, class T>
 OrientedBox<U> cast(const OrientedBox<T>& b) {
+    return {cast<U>(b.center), {cast<U>(b.axes[0]), cast<U>(b.axes[1]), cast<U>(b.axes[2])}, cast<U>(b.extents)};
+}
+template <class U, class T>
+Parallelepiped<U> cast(const Parallelepiped<T>& b) {
     return {cast<U>(b.center), {cast<U>(b.axes[0]), cast<U>(b.axes[1]), cast<U>(b.axes[2])}, cast<U>(b.extents)};
 }
 template <class U, class T>
@@ -149,6 +155,48 @@ bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
 #endif
 }
 
+// A Parallelepiped with options. Arithmetic::filtered: the exact answer whatever the algorithm (the
+// fast stage of filtered/parallelepiped.hpp for §4, exact §3 for §2/§3). §3 and the oracle take any
+// parallelepiped in every arithmetic. §2 and §4 need an orthonormal box frame: axes that pass
+// OrientedBox's contract (orthonormal within 1e-4) are that oriented box, with its rules; any other
+// axes throw std::domain_error rather than answer for a different solid.
+template <class T>
+bool dispatch(const Parallelepiped<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
+    assert(is_valid(box) && "boxcyl::intersects: invalid box (see boxcyl::validate)");
+    assert(is_valid(cyl) && "boxcyl::intersects: invalid cylinder (see boxcyl::validate)");
+    const bool rounded_arithmetic = opt.arithmetic == Arithmetic::float32 || opt.arithmetic == Arithmetic::float64;
+    if (opt.algorithm == Algorithm::hull && rounded_arithmetic) {
+        auto hull = [&](auto zero) {
+            using U = decltype(zero);
+            const Parallelepiped<U> b = cast<U>(box);
+            algo::Parallelepiped<U> p;
+            p.center = b.center;
+            for (int i = 0; i < 3; ++i) p.half_edges[i] = b.extents[i] * b.axes[i];
+            return algo::convex_hull(p, to_unit(cast<U>(cyl)));
+        };
+        return opt.arithmetic == Arithmetic::float32 ? hull(0.0f) : hull(0.0);
+    }
+#if defined(BOXCYL_HAS_EXACT)
+    if (opt.arithmetic == Arithmetic::filtered) {
+        if constexpr (std::is_same_v<T, double>)
+            return filtered::query(box, cyl).intersect;
+        else
+            return filtered::query(cast<double>(box), cast<double>(cyl)).intersect;
+    }
+    if (opt.algorithm == Algorithm::oracle || opt.algorithm == Algorithm::hull) {
+        const Parallelepiped<double> b = cast<double>(box);
+        if (opt.algorithm == Algorithm::oracle) return oracle::intersects(to_exact(b), to_exact(cast<double>(cyl)));
+        return filtered::parallelepiped_detail::exact_answer(b, cast<double>(cyl));
+    }
+#endif
+    const OrientedBox<T> oriented{box.center, box.axes, box.extents};
+    if (!is_valid(oriented))
+        throw std::domain_error(
+            "boxcyl: §2/§4 need an orthonormal box frame and these parallelepiped axes are not orthonormal "
+            "(use the default options, Algorithm::hull or Algorithm::oracle)");
+    return dispatch(oriented, cyl, opt);
+}
+
 template <class T>
 inline constexpr bool dependent_false = false;
 
@@ -174,6 +222,11 @@ template <class T>
 bool intersects(const OrientedBox<T>& box, const Cylinder<T>& cyl) {
     BOXCYL_DEFAULT_QUERY(box, cyl);
 }
+// Any parallelepiped, axes exactly as given (geometry/parallelepiped.hpp).
+template <class T>
+bool intersects(const Parallelepiped<T>& box, const Cylinder<T>& cyl) {
+    BOXCYL_DEFAULT_QUERY(box, cyl);
+}
 // The cylinder is given in the canonical box's frame (box centred at the origin, axis-aligned).
 template <class T>
 bool intersects(const CanonicalBox<T>& box, const Cylinder<T>& cyl) {
@@ -188,6 +241,10 @@ bool intersects(const AlignedBox<T>& box, const Cylinder<T>& cyl, const QueryOpt
 }
 template <class T>
 bool intersects(const OrientedBox<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
+    return detail::dispatch(box, cyl, opt);
+}
+template <class T>
+bool intersects(const Parallelepiped<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
     return detail::dispatch(box, cyl, opt);
 }
 template <class T>

@@ -147,9 +147,10 @@ def test_shape_errors():
         boxcyl.intersects_aligned(unit_box(), (np.zeros((4, 3)), (0, 0, 1), np.ones((4, 1)), 1.0))
     with pytest.raises(ValueError, match=re.escape("leading lengths [4, 5] differ")):
         boxcyl.intersects_aligned((np.zeros((5, 3)), np.ones((5, 3))), (np.zeros((4, 3)), (0, 0, 1), 1.0, 1.0))
-    with pytest.raises(ValueError, match=re.escape("cylinders: expected 4 arrays")):
+    with pytest.raises(ValueError, match=re.escape("cylinders: expected a tuple of 4 arrays (center, axis, radius, "
+                                                   "height), got 3")):
         boxcyl.intersects_aligned(unit_box(), ((0, 0, 0), (0, 0, 1), 1.0))
-    with pytest.raises(TypeError):
+    with pytest.raises(ValueError, match=re.escape("boxes: expected an OrientedBox, a list of them, or a tuple")):
         boxcyl.intersects_oriented(np.zeros((3, 3)), cyl)
 
 
@@ -281,14 +282,17 @@ def test_threads_share_the_module_safely():
     assert all(np.array_equal(r, expected) for r in results)
 
 
-def test_readme_example_runs():
+def test_readme_examples_run():
+    """python/README.md's examples, in order, in one scope (later ones use earlier names)."""
     readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
     blocks = re.findall(r"```python\n(.*?)```", readme, re.S)
-    assert blocks
+    assert len(blocks) == 3
+    scope = {}
     for block in blocks:
-        scope = {}
         exec(compile(block, "python/README.md", "exec"), scope)
-        assert scope["hits"].dtype == np.bool_ and scope["hits"].shape == (100_000,)
+    assert scope["hits"].dtype == np.bool_ and scope["hits"].shape == (100_000,)
+    original = scope["boxes"][::10].compute()  # the Dask example repeats each box ten times
+    assert scope["count"] == 10 * boxcyl.intersects_aligned(original, scope["cyl"]).sum() > 0
 
 
 def _random_rotations(rng, n):

@@ -31,6 +31,10 @@ constexpr const char* help_body = R"(INPUT
             or an oriented box
                              {"center": [x,y,z], "axes": [[x,y,z],[x,y,z],[x,y,z]],
                               "extents": [a,b,c]}                           (extents >= 0)
+            or any parallelepiped (axes of any length and angle, zero or parallel ones too)
+                             {"kind": "parallelepiped", "center": [x,y,z],
+                              "axes": [[x,y,z],[x,y,z],[x,y,z]], "extents": [a,b,c]}
+            ("kind" is optional for the other two: "aligned" or "oriented")
   CYLINDER  {"center": [x,y,z], "axis": [x,y,z], "radius": r, "height": h}  (r, h >= 0)
   Other keys are ignored. A number is read as the nearest double (correctly rounded), so
   values written with 17 significant digits round-trip exactly; integers are numbers too.
@@ -44,7 +48,8 @@ SEMANTICS
   is min <= X <= max componentwise (min == max in a component gives a flat box). The
   oriented box is the parallelepiped { center + x0*A0 + x1*A1 + x2*A2 : |xi| <= extents[i] }
   spanned by its axes A0, A1, A2 exactly as given; the axes must be orthonormal within
-  1e-4 (|Ai.Aj - delta_ij| <= 1e-4), else the line is bad. NaN and Inf cannot be written
+  1e-4 (|Ai.Aj - delta_ij| <= 1e-4), else the line is bad. A "parallelepiped" is the same
+  set for any axes (no orthonormality asked; dependent axes give a flat solid). NaN and Inf cannot be written
   in JSON and are never accepted. With --arithmetic float the inputs are rounded to float
   first and must still be valid then (finite, non-zero axis, ...).
 

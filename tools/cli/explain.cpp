@@ -15,6 +15,7 @@
 #include <numbers>    // std::numbers::pi
 #include <sstream>    // reading a whole stream
 #include <string>
+#include <type_traits>  // the box kind in input_lines
 #include <variant>    // std::visit over the box kinds
 #include <vector>
 
@@ -564,9 +565,16 @@ std::vector<std::string> input_lines(const Query& q) {
     if (const auto* a = std::get_if<AlignedBox<double>>(&q.box)) {
         lines.push_back("box (aligned): min " + vec(a->min) + ", max " + vec(a->max));
     } else {
-        const auto& o = std::get<OrientedBox<double>>(q.box);
-        lines.push_back("box (oriented): centre " + vec(o.center) + ", extents " + vec(o.extents));
-        lines.push_back("    axes " + vec(o.axes[0]) + ", " + vec(o.axes[1]) + ", " + vec(o.axes[2]));
+        std::visit(
+            [&](const auto& o) {
+                if constexpr (!std::is_same_v<std::decay_t<decltype(o)>, AlignedBox<double>>) {
+                    const bool oriented = std::is_same_v<std::decay_t<decltype(o)>, OrientedBox<double>>;
+                    lines.push_back(std::string(oriented ? "box (oriented)" : "box (parallelepiped)") + ": centre " +
+                                    vec(o.center) + ", extents " + vec(o.extents));
+                    lines.push_back("    axes " + vec(o.axes[0]) + ", " + vec(o.axes[1]) + ", " + vec(o.axes[2]));
+                }
+            },
+            q.box);
     }
     const Cylinder<double>& c = q.cylinder;
     lines.push_back("cylinder: centre " + vec(c.center) + ", axis " + vec(c.axis) + ", radius " + num(c.radius) +

@@ -245,6 +245,20 @@ std::string read_vec3(const json& obj, const char* key, const std::string& field
     return {};
 }
 
+// center/axes/extents, the fields of oriented boxes and parallelepipeds.
+template <class Box>
+std::string read_frame_box(const json& b, Box& o) {
+    if (auto e = read_vec3(b, "center", "box.center", o.center); !e.empty()) return e;
+    const auto axes = b.find("axes");
+    if (axes == b.end()) return "box.axes: missing";
+    if (!axes->is_array() || axes->size() != 3) return "box.axes: expected an array of 3 axes";
+    for (std::size_t i = 0; i < 3; ++i) {
+        if (!is_vec3((*axes)[i])) return "box.axes[" + std::to_string(i) + "]: expected an array of 3 numbers";
+        o.axes[i] = to_vec3((*axes)[i]);
+    }
+    return read_vec3(b, "extents", "box.extents", o.extents);
+}
+
 std::string read_box(const json& root, AnyBox& out) {
     const auto it = root.find("box");
     if (it == root.end()) return "box: missing";
@@ -252,6 +266,23 @@ std::string read_box(const json& root, AnyBox& out) {
     if (!b.is_object()) return "box: expected an object";
     const bool aligned = b.contains("min") || b.contains("max");
     const bool oriented = b.contains("center") || b.contains("axes") || b.contains("extents");
+    if (const auto kind = b.find("kind"); kind != b.end()) {
+        // An explicit kind: "aligned", "oriented" or "parallelepiped" (any axes, exactly as given).
+        const std::string k = kind->is_string() ? kind->get<std::string>() : std::string();
+        if (k == "parallelepiped") {
+            if (aligned) return "box: a parallelepiped has center/axes/extents, not min/max";
+            Parallelepiped<double> p;
+            if (auto e = read_frame_box(b, p); !e.empty()) return e;
+            out = p;
+            return {};
+        }
+        if (k != "aligned" && k != "oriented")
+            return "box.kind: expected \"aligned\", \"oriented\" or \"parallelepiped\"";
+        if (k == "aligned" && oriented) return "box: an aligned box has min/max, not center/axes/extents";
+        if (k == "oriented" && aligned) return "box: an oriented box has center/axes/extents, not min/max";
+        if (k == "aligned" && !aligned) return "box.min: missing";
+        if (k == "oriented" && !oriented) return "box.center: missing";
+    }
     if (aligned && oriented) return "box: has both min/max and center/axes/extents";
     if (!aligned && !oriented)
         return "box: expected min/max (aligned box) or center/axes/extents (oriented box)";
@@ -263,15 +294,7 @@ std::string read_box(const json& root, AnyBox& out) {
         return {};
     }
     OrientedBox<double> o;
-    if (auto e = read_vec3(b, "center", "box.center", o.center); !e.empty()) return e;
-    const auto axes = b.find("axes");
-    if (axes == b.end()) return "box.axes: missing";
-    if (!axes->is_array() || axes->size() != 3) return "box.axes: expected an array of 3 axes";
-    for (std::size_t i = 0; i < 3; ++i) {
-        if (!is_vec3((*axes)[i])) return "box.axes[" + std::to_string(i) + "]: expected an array of 3 numbers";
-        o.axes[i] = to_vec3((*axes)[i]);
-    }
-    if (auto e = read_vec3(b, "extents", "box.extents", o.extents); !e.empty()) return e;
+    if (auto e = read_frame_box(b, o); !e.empty()) return e;
     out = o;
     return {};
 }
@@ -299,6 +322,11 @@ Cylinder<U> round_shape(const Cylinder<double>& c) {
 template <class U>
 AlignedBox<U> round_shape(const AlignedBox<double>& b) {
     return {round_vec<U>(b.min), round_vec<U>(b.max)};
+}
+template <class U>
+Parallelepiped<U> round_shape(const Parallelepiped<double>& b) {
+    return {round_vec<U>(b.center), {round_vec<U>(b.axes[0]), round_vec<U>(b.axes[1]), round_vec<U>(b.axes[2])},
+            round_vec<U>(b.extents)};
 }
 template <class U>
 OrientedBox<U> round_shape(const OrientedBox<double>& b) {
@@ -363,7 +391,13 @@ ParsedLine parse_line(std::string_view text, std::size_t line_number) {
         if (auto e = read_box(root, q.box); !e.empty()) return e;
         if (auto e = read_cylinder(root, q.cylinder); !e.empty()) return e;
         const Validity vb = std::visit([](const auto& b) { return validate(b); }, q.box);
-        if (!vb.ok()) return vb.message();
+        if (!vb.ok()) {
+            // Axes off orthonormal are a valid parallelepiped: say how to ask for one.
+            if (std::holds_alternative<OrientedBox<double>>(q.box) && vb.field.rfind("box.axes", 0) == 0 &&
+                (vb.reason.find("unit length") != std::string::npos || vb.reason.find("orthogonal") != std::string::npos))
+                return vb.message() + "; for axes of any length and angle use \"kind\": \"parallelepiped\"";
+            return vb.message();
+        }
         if (const Validity vc = validate(q.cylinder); !vc.ok()) return vc.message();
         return {};
     });

@@ -11,18 +11,19 @@
 #include <optional>     // a line may not yield a query
 #include <string>       // JSON text, messages
 #include <string_view>  // input lines
-#include <variant>      // aligned or oriented box
+#include <variant>      // aligned or oriented box, or parallelepiped
 
 #include <nlohmann/json_fwd.hpp>  // nlohmann::json, for the readers shared with other subcommands
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
 #include "boxcyl/geometry/validate.hpp"
 #include "options.hpp"
 
 namespace boxcyl::cli {
 
-using AnyBox = std::variant<AlignedBox<double>, OrientedBox<double>>;
+using AnyBox = std::variant<AlignedBox<double>, OrientedBox<double>, Parallelepiped<double>>;
 
 struct Query {
     AnyBox box;

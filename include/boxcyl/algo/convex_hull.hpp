@@ -22,6 +22,7 @@
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
 #include "boxcyl/geometry/vec3.hpp"
 #include "boxcyl/number/traits.hpp"
 
@@ -184,6 +185,14 @@ struct Parallelepiped {
 // Rational boxes, returning OrientedBox<Rational>, which ADL would prefer for T = Rational.
 template <class T>
 Parallelepiped<T> as_parallelepiped(const OrientedBox<T>& b) {
+    Parallelepiped<T> p;
+    p.center = b.center;
+    for (int i = 0; i < 3; ++i) p.half_edges[i] = b.extents[i] * b.axes[i];
+    return p;
+}
+
+template <class T>
+Parallelepiped<T> as_parallelepiped(const boxcyl::Parallelepiped<T>& b) {
     Parallelepiped<T> p;
     p.center = b.center;
     for (int i = 0; i < 3; ++i) p.half_edges[i] = b.extents[i] * b.axes[i];

@@ -12,6 +12,8 @@
 //   is then exactly the parallelepiped they span (a frame orthonormal only up to rounding is fine).
 //   Anything further off is almost surely a caller bug (a scaled or non-rotation matrix), so it is
 //   refused with a message rather than guessed at.
+// - Parallelepiped: finite fields and non-negative extents; the axes may be any vectors (zero,
+//   parallel, any lengths and angles), so nothing about them is checked.
 // - Magnitudes: every finite double is accepted, subnormals to ±DBL_MAX; the default query answers
 //   exactly there too (no intermediate overflow turns into a wrong answer).
 // For valid input, boxcyl::intersects() with default options never throws; it asserts validity in
@@ -33,6 +35,7 @@
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
 
 namespace boxcyl {
 
@@ -237,6 +240,18 @@ Validity describe(const OrientedBox<T>& b, const std::string& prefix) {
     return v;
 }
 
+// Any axes are valid: zero or parallel ones give the flat solid they span.
+template <class T>
+Validity describe(const Parallelepiped<T>& b, const std::string& prefix) {
+    Validity v;
+    if (!check_finite(v, prefix + ".center", b.center)) return v;
+    for (std::size_t i = 0; i < 3; ++i)
+        if (!check_finite(v, prefix + ".axes[" + std::to_string(i) + "]", b.axes[i])) return v;
+    for (std::size_t i = 0; i < 3; ++i)
+        if (!check_nonnegative(v, prefix + ".extents[" + std::to_string(i) + "]", b.extents[i])) return v;
+    return v;
+}
+
 }  // namespace detail
 
 // True when validate() would say ok: the same checks, without building any text.
@@ -269,6 +284,14 @@ bool is_valid(const OrientedBox<T>& b) noexcept {
            detail::gram_ok(b.axes);
 }
 
+// Any axes: only finite fields and non-negative extents are asked.
+template <class T>
+bool is_valid(const Parallelepiped<T>& b) noexcept {
+    return detail::finite3(b.center) & detail::finite3(b.axes[0]) & detail::finite3(b.axes[1]) &
+           detail::finite3(b.axes[2]) & detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) &
+           detail::size_ok(b.extents[2]);
+}
+
 // Names the first bad field and why. `prefix` names the object in messages ("cylinder", or
 // "cylinders[7]" in a batch); it is copied only when something is wrong.
 template <class T>
@@ -291,6 +314,12 @@ Validity validate(const CanonicalBox<T>& b, std::string_view prefix = "box") {
 
 template <class T>
 Validity validate(const OrientedBox<T>& b, std::string_view prefix = "box") {
+    if (is_valid(b)) return {};
+    return detail::describe(b, std::string(prefix));
+}
+
+template <class T>
+Validity validate(const Parallelepiped<T>& b, std::string_view prefix = "box") {
     if (is_valid(b)) return {};
     return detail::describe(b, std::string(prefix));
 }

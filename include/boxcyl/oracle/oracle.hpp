@@ -28,6 +28,7 @@
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
 #include "boxcyl/geometry/vec3.hpp"
 #include "boxcyl/number/qfield.hpp"
 #include "boxcyl/number/rational.hpp"
@@ -44,6 +45,10 @@ inline Cylinder<Rational> to_exact(const Cylinder<double>& c) {
 inline AlignedBox<Rational> to_exact(const AlignedBox<double>& b) { return {to_exact(b.min), to_exact(b.max)}; }
 inline CanonicalBox<Rational> to_exact(const CanonicalBox<double>& b) { return {to_exact(b.extents)}; }
 inline OrientedBox<Rational> to_exact(const OrientedBox<double>& b) {
+    return {to_exact(b.center), {to_exact(b.axes[0]), to_exact(b.axes[1]), to_exact(b.axes[2])},
+            to_exact(b.extents)};
+}
+inline Parallelepiped<Rational> to_exact(const Parallelepiped<double>& b) {
     return {to_exact(b.center), {to_exact(b.axes[0]), to_exact(b.axes[1]), to_exact(b.axes[2])},
             to_exact(b.extents)};
 }
@@ -243,6 +248,118 @@ inline bool intersects(const OrientedBox<Rational>& box, const Cylinder<Rational
             if (along <= Q(0) || along >= len2) continue;  // foot outside: an endpoint is nearest
             // dist² = |pᵢ|² − (pᵢ·ab)²/|ab|² ≤ R²
             if (norm2[i] * len2 - along * along <= R2 * len2) return true;
+        }
+    return false;
+}
+
+// Any parallelepiped { K + Σ ξᵢWᵢ : |ξᵢ| ≤ eᵢ }, the Wᵢ exactly as given. Linearly independent axes
+// are the solid above. Dependent ones (a zero or parallel axis, or three coplanar axes) span a flat
+// solid; for it the same facts (1), (2) hold — P = B ∩ slab is the image of the cube ∩ (the slab pulled
+// back to ξ-space), so S is built as above — while (3) and (4) are done without the frame:
+//  (3') the axis segment meets B ⇔ 0 ∈ Z = {(K − C) + Σ ξᵢaᵢ − τD : |ξᵢ| ≤ 1, |τ| ≤ σ/d}, a zonotope
+//       with generators a₀, a₁, a₂, D. 0 ∉ Z ⇔ some direction n has |n·(K − C)| > Σ|n·aᵢ| + (σ/d)|n·D|,
+//       and one such n is among the facet normals of Z whatever its dimension: gᵢ × gⱼ (3-D),
+//       (gᵢ × gⱼ) × gₖ (edge normals within a plane), gᵢ × Eₖ and gᵢ (a segment), Eₖ (a point).
+//  (4') π(P) is the hull of π(S), so its boundary is covered by segments between points of S, each
+//       lying in P: every pair is tested (no tags needed).
+inline bool intersects(const Parallelepiped<Rational>& box, const Cylinder<Rational>& cyl) {
+    using detail::Q;
+    const Rational det = dot(box.axes[0], cross(box.axes[1], box.axes[2]));
+    if (sgn(det) != 0) return intersects(OrientedBox<Rational>{box.center, box.axes, box.extents}, cyl);
+
+    const Vec3<Rational>& D = cyl.axis;
+    const Rational d = dot(D, D);
+    if (sgn(d) == 0) throw std::invalid_argument("oracle: cylinder axis is the zero vector");
+    if (sgn(cyl.radius) < 0 || sgn(cyl.height) < 0) throw std::invalid_argument("oracle: negative r or h");
+    for (int i = 0; i < 3; ++i)
+        if (sgn(box.extents[i]) < 0) throw std::invalid_argument("oracle: negative extent");
+    const QuadraticField<Rational> field(d);
+    const Rational half_h = cyl.height / 2;
+    const Q sigma(Rational(0), half_h, field);
+    const Rational sigma2 = half_h * half_h * d;
+    std::array<Vec3<Rational>, 3> a;
+    for (int i = 0; i < 3; ++i) a[i] = box.extents[i] * box.axes[i];
+    const Vec3<Rational> g = box.center - cyl.center;
+
+    // (3')
+    {
+        const std::array<Vec3<Rational>, 4> gen{a[0], a[1], a[2], D};
+        std::vector<Vec3<Rational>> normals;
+        for (int k = 0; k < 3; ++k) {
+            Vec3<Rational> unit{0, 0, 0};
+            unit[k] = 1;
+            normals.push_back(unit);
+            for (const Vec3<Rational>& gi : gen) normals.push_back(cross(gi, unit));
+        }
+        for (std::size_t i = 0; i < gen.size(); ++i) {
+            normals.push_back(gen[i]);
+            for (std::size_t j = i + 1; j < gen.size(); ++j) {
+                const Vec3<Rational> m = cross(gen[i], gen[j]);
+                normals.push_back(m);
+                for (const Vec3<Rational>& gk : gen) normals.push_back(cross(m, gk));
+            }
+        }
+        bool separated = false;
+        for (const Vec3<Rational>& n : normals) {
+            const Rational reach = abs(dot(n, a[0])) + abs(dot(n, a[1])) + abs(dot(n, a[2]));
+            const Q lhs(Rational(abs(dot(n, g)) - reach));
+            const Q rhs(Rational(0), Rational(half_h * abs(dot(n, D)) / d), field);  // (σ/d)|n·D|
+            if (lhs > rhs) {
+                separated = true;
+                break;
+            }
+        }
+        if (!separated) return true;
+    }
+
+    // (2) the point set S (no tags): vertices in the slab, edge-plane crossings.
+    std::array<Vec3<Rational>, 8> vy;
+    std::array<Rational, 8> vt;
+    for (int s = 0; s < 8; ++s) {
+        Vec3<Rational> y = g;
+        for (int i = 0; i < 3; ++i) y = (s >> i & 1) ? y + a[i] : y - a[i];
+        vt[s] = dot(D, y);
+        vy[s] = std::move(y);
+    }
+    std::vector<Vec3<Q>> S;
+    for (int s = 0; s < 8; ++s)
+        if (vt[s] * vt[s] <= sigma2) S.push_back(detail::lift(vy[s]));
+    for (int k = 0; k < 3; ++k) {
+        const Rational dak = dot(D, a[k]);
+        if (sgn(dak) == 0) continue;
+        for (int s = 0; s < 8; ++s) {
+            if (s >> k & 1) continue;
+            for (int p : {+1, -1}) {
+                // the crossing μ ∈ [0, 2] of D·Y = pσ along Y = vy[s] + μ·aₖ
+                const Q m = ((p > 0 ? sigma : Q(-sigma)) - Q(vt[s])) / Q(dak);
+                if (m < Q(0) || m > Q(2)) continue;
+                Vec3<Q> y = detail::lift(vy[s]);
+                for (int i = 0; i < 3; ++i) y[i] += m * Q(a[k][i]);
+                S.push_back(std::move(y));
+            }
+        }
+    }
+    if (S.empty()) return false;
+
+    // (4') distances in the plane ⊥ D, scaled by d as above.
+    const Q qd(d);
+    const Vec3<Q> Dq = detail::lift(D);
+    const Q R2(cyl.radius * cyl.radius * d * d);
+    std::vector<Vec3<Q>> proj;
+    for (const Vec3<Q>& y : S) {
+        const Q t = dot(Dq, y);
+        Vec3<Q> p{qd * y[0] - t * Dq[0], qd * y[1] - t * Dq[1], qd * y[2] - t * Dq[2]};
+        if (dot(p, p) <= R2) return true;
+        proj.push_back(std::move(p));
+    }
+    for (std::size_t i = 0; i < proj.size(); ++i)
+        for (std::size_t j = i + 1; j < proj.size(); ++j) {
+            const Vec3<Q> ab = proj[j] - proj[i];
+            const Q len2 = dot(ab, ab);
+            if (len2 == Q(0)) continue;
+            const Q along = -dot(proj[i], ab);
+            if (along <= Q(0) || along >= len2) continue;
+            if (dot(proj[i], proj[i]) * len2 - along * along <= R2 * len2) return true;
         }
     return false;
 }

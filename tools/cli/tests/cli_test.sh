@@ -74,6 +74,62 @@ examples_every_algorithm)
     done
     run 0 intersect --algorithm hull --arithmetic exact "$work/in"
     ;;
+parallelepipeds)
+    # "kind": "parallelepiped" (any axes): the default, the oracle and exact §3 agree, in every
+    # arithmetic that answers exactly; §2/§4 in exact arithmetic refuse these axes, line by line.
+    for args in "" "--algorithm oracle" "--algorithm hull --arithmetic exact" "--algorithm hull" "--algorithm lcp" \
+                "--algorithm oracle --arithmetic double"; do
+        # shellcheck disable=SC2086
+        run 0 intersect $args "$examples/parallelepipeds.jsonl"
+        same_bytes "$work/out" "$expected/parallelepipeds.out"
+    done
+    run 1 intersect --algorithm inequalities --arithmetic exact "$examples/parallelepipeds.jsonl"
+    contains "$work/out" '"error": "line 1: query failed: boxcyl: §2/§4 need an orthonormal box frame'
+    ;;
+parallelepipeds_touching)
+    # Exactly touching integer parallelepipeds (any axes, flat ones included): the plane m·X = m·V
+    # through the vertex V maximising m·X touches the box (|m| an integer, a Pythagorean quadruple); a
+    # cylinder of radius k|m| whose axis is ⊥ m through V + k·m touches the box at V. Each line "t…"
+    # must answer true, and its twin "m…", with the radius one ulp or so smaller, false.
+    awk 'BEGIN {
+        srand(7)
+        split("1 2 2 3|2 3 6 7|1 4 8 9|4 4 7 9|2 6 9 11|6 6 7 11", quads, "|")
+        for (n = 0; n < 300; ++n) {
+            for (j = 1; j <= 3; ++j) c[j] = int(rand() * 13) - 6
+            for (i = 1; i <= 3; ++i) { e[i] = int(rand() * 4); for (j = 1; j <= 3; ++j) w[i, j] = int(rand() * 13) - 6 }
+            if (n % 3 == 0) {  # orthogonal axes of equal length from an integer quaternion
+                qw = int(rand() * 7) - 3; qx = int(rand() * 7) - 3; qy = int(rand() * 7) - 3; qz = int(rand() * 7) - 3
+                w[1,1] = qw*qw + qx*qx - qy*qy - qz*qz; w[1,2] = 2*(qx*qy + qw*qz); w[1,3] = 2*(qx*qz - qw*qy)
+                w[2,1] = 2*(qx*qy - qw*qz); w[2,2] = qw*qw - qx*qx + qy*qy - qz*qz; w[2,3] = 2*(qy*qz + qw*qx)
+                w[3,1] = 2*(qx*qz + qw*qy); w[3,2] = 2*(qy*qz - qw*qx); w[3,3] = qw*qw - qx*qx - qy*qy + qz*qz
+            }
+            split(quads[int(rand() * 6) + 1], q, " ")
+            p = int(rand() * 3)
+            for (j = 1; j <= 3; ++j) { m[j] = q[(j + p - 1) % 3 + 1]; if (rand() < 0.5) m[j] = -m[j] }
+            for (j = 1; j <= 3; ++j) v[j] = c[j]
+            for (i = 1; i <= 3; ++i) {
+                d = m[1] * w[i,1] + m[2] * w[i,2] + m[3] * w[i,3]; s = d >= 0 ? e[i] : -e[i]
+                for (j = 1; j <= 3; ++j) v[j] += s * w[i,j]
+            }
+            do { for (j = 1; j <= 3; ++j) z[j] = int(rand() * 7) - 3
+                 a1 = m[2]*z[3] - m[3]*z[2]; a2 = m[3]*z[1] - m[1]*z[3]; a3 = m[1]*z[2] - m[2]*z[1] } while (a1 == 0 && a2 == 0 && a3 == 0)
+            k = int(rand() * 3) + 1; r = k * q[4]; h = int(rand() * 4)
+            box = sprintf("{\"kind\": \"parallelepiped\", \"center\": [%d, %d, %d], \"axes\": [[%d, %d, %d], [%d, %d, %d], [%d, %d, %d]], \"extents\": [%d, %d, %d]}",
+                          c[1], c[2], c[3], w[1,1], w[1,2], w[1,3], w[2,1], w[2,2], w[2,3], w[3,1], w[3,2], w[3,3], e[1], e[2], e[3])
+            cyl = sprintf("\"center\": [%d, %d, %d], \"axis\": [%d, %d, %d]", v[1] + k*m[1], v[2] + k*m[2], v[3] + k*m[3], a1, a2, a3)
+            printf "{\"id\": \"t%d\", \"box\": %s, \"cylinder\": {%s, \"radius\": %d, \"height\": %d}}\n", n, box, cyl, r, h
+            printf "{\"id\": \"m%d\", \"box\": %s, \"cylinder\": {%s, \"radius\": %.17g, \"height\": %d}}\n", n, box, cyl, r * (1 - 2^-53), h
+        }
+    }' >"$work/in"
+    run 0 intersect --threads 2 "$work/in"
+    [[ $(wc -l <"$work/out") == 600 ]] || fail "expected 600 answers"
+    [[ $(grep -c '"id": "t[0-9]*", "intersect": true}' "$work/out") == 300 ]] || fail "a touching case did not answer true"
+    [[ $(grep -c '"id": "m[0-9]*", "intersect": false}' "$work/out") == 300 ]] || fail "a near miss did not answer false"
+    run 0 intersect --algorithm oracle "$work/in"
+    cp "$work/out" "$work/oracle"
+    run 0 intersect "$work/in"
+    same_bytes "$work/out" "$work/oracle"
+    ;;
 examples_bad_lines)
     run 1 intersect "$examples/bad_lines.jsonl"
     same_bytes "$work/out" "$expected/bad_lines.out"

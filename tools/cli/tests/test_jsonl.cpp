@@ -659,5 +659,59 @@ TEST(JsonlHostile, NumbersOutOfRangeNameTheirField) {
     EXPECT_EQ(bits(parse_number(std::string("-") + std::string(308, '9'))), bits(-1e308));
 }
 
+// --- "kind": "parallelepiped": any axes, exactly as given ---
+
+TEST(JsonlParallelepiped, MessagesNameTheField) {
+    const std::string c = kCyl;
+    const std::string frame = R"("center": [0, 0, 0], "axes": [[3, 4, 0], [-4, 3, 0], [0, 0, 5]], "extents": [1, 1, 1])";
+    EXPECT_EQ(error_of(R"({"box": {"kind": "cube", )" + frame + "}, " + c + "}"),
+              R"(line 7: box.kind: expected "aligned", "oriented" or "parallelepiped")");
+    EXPECT_EQ(error_of(R"({"box": {"kind": 3, )" + frame + "}, " + c + "}"),
+              R"(line 7: box.kind: expected "aligned", "oriented" or "parallelepiped")");
+    EXPECT_EQ(error_of(R"({"box": {"kind": "parallelepiped", "min": [0, 0, 0], "max": [1, 1, 1]}, )" + c + "}"),
+              "line 7: box: a parallelepiped has center/axes/extents, not min/max");
+    EXPECT_EQ(error_of(R"({"box": {"kind": "parallelepiped", "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [1, 1, 1]}, )" + c + "}"),
+              "line 7: box.center: missing");
+    EXPECT_EQ(error_of(R"({"box": {"kind": "parallelepiped", "center": [0, 0, 0], "axes": [[1, 0, 0], [0, 1], [0, 0, 1]], "extents": [1, 1, 1]}, )" + c + "}"),
+              "line 7: box.axes[1]: expected an array of 3 numbers");
+    EXPECT_EQ(error_of(R"({"box": {"kind": "parallelepiped", "center": [0, 0, 0], "axes": [[1, 0, 0], [0, 1, 0]], "extents": [1, 1, 1]}, )" + c + "}"),
+              "line 7: box.axes: expected an array of 3 axes");
+    EXPECT_EQ(error_of(R"({"box": {"kind": "parallelepiped", "center": [0, 0, 0], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}, )" + c + "}"),
+              "line 7: box.extents: missing");
+    EXPECT_EQ(error_of(R"({"box": {"kind": "parallelepiped", "center": [0, 0, 0], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [1, -1, 1]}, )" + c + "}"),
+              "line 7: box.extents[1]: is negative");
+    EXPECT_EQ(error_of(R"({"box": {"kind": "parallelepiped", "center": [0, 1e999, 0], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [1, 1, 1]}, )" + c + "}"),
+              "line 7: box.center[1]: out of double range");
+    EXPECT_EQ(error_of(R"({"box": {"kind": "aligned", )" + frame + "}, " + c + "}"),
+              "line 7: box: an aligned box has min/max, not center/axes/extents");
+    EXPECT_EQ(error_of(R"({"box": {"kind": "oriented", "min": [0, 0, 0], "max": [1, 1, 1]}, )" + c + "}"),
+              "line 7: box: an oriented box has center/axes/extents, not min/max");
+    // The same axes as an oriented box are refused, with a pointer to the parallelepiped.
+    EXPECT_EQ(error_of(R"({"box": {)" + frame + "}, " + c + "}"),
+              R"(line 7: box.axes[0]: is not unit length (|axes[0]|² = 25.000000, tolerance 1e-4); for axes of any length and angle use "kind": "parallelepiped")");
+}
+
+TEST(JsonlParallelepiped, GoodLinesAndAnswers) {
+    const ParsedLine p = parse_line(
+        R"({"box": {"kind": "parallelepiped", "center": [1, 2, 3], "axes": [[3, 4, 0], [-4, 3, 0], [0, 0, 0]], "extents": [1, 0.5, 7]}, )" + kCyl + "}",
+        1);
+    ASSERT_TRUE(p.query) << p.error;
+    const auto& b = std::get<Parallelepiped<double>>(p.query->box);
+    EXPECT_EQ(b.center, (Vec3<double>{1, 2, 3}));
+    EXPECT_EQ(b.axes[0], (Vec3<double>{3, 4, 0}));
+    EXPECT_EQ(b.axes[2], (Vec3<double>{0, 0, 0}));
+    EXPECT_EQ(b.extents, (Vec3<double>{1, 0.5, 7}));
+    // The box with integer vertices ±(3,4,0) ± (−4,3,0) ± (0,0,5): its face W0·X = 25 is touched by a
+    // cylinder of radius 5 at distance 10, missed by one of radius 4.999.
+    const std::string box = R"("box": {"kind": "parallelepiped", "center": [0, 0, 0], "axes": [[3, 4, 0], [-4, 3, 0], [0, 0, 5]], "extents": [1, 1, 1]})";
+    for (const char* alg : {"inequalities", "hull", "oracle"}) {
+        const RunOptions opt = make_run_options(alg, "filtered");
+        EXPECT_EQ(answer_line("{\"id\": 1, " + box + R"(, "cylinder": {"center": [6, 8, 0], "axis": [0, 0, 1], "radius": 5, "height": 2}})", 1, opt).text,
+                  R"({"id": 1, "intersect": true})") << alg;
+        EXPECT_EQ(answer_line("{\"id\": 2, " + box + R"(, "cylinder": {"center": [6, 8, 0], "axis": [0, 0, 1], "radius": 4.999, "height": 2}})", 2, opt).text,
+                  R"({"id": 2, "intersect": false})") << alg;
+    }
+}
+
 }  // namespace
 }  // namespace boxcyl::cli

@@ -1,0 +1,99 @@
+// Parallelepipeds in the batch API: one cylinder against a span of boxcyl::Parallelepiped<T>.
+//
+// No SIMD filter: each box is answered by the scalar default query (filtered/parallelepiped.hpp, its
+// own certified stages and exact fallback), in contiguous 64-box blocks over the threads of
+// Options::threads (batch/split.hpp). So Options::kernel has no effect, Stats::kernel is
+// Kernel::compiled with Stats::lanes = 1, and Stats::exact_lanes counts the boxes that reached the
+// exact stage (as filtered::Result::exact_used). The answers are those of boxcyl::intersects(box, cyl).
+#pragma once
+
+#if !defined(BOXCYL_HAS_EXACT)
+#error "boxcyl/batch/parallelepiped.hpp answers exactly and needs the exact backend: link boxcyl::exact (GMP)"
+#endif
+
+#include <algorithm>  // std::min
+#include <cstddef>    // std::size_t
+#include <cstdint>    // std::uint64_t
+#include <span>       // inputs and outputs
+#include <stdexcept>  // std::invalid_argument for short outputs
+#include <vector>     // per-thread counts
+
+#include "boxcyl/batch/split.hpp"
+#include "boxcyl/batch/types.hpp"
+#include "boxcyl/filtered/parallelepiped.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
+
+namespace boxcyl::batch::parallelepipeds {
+
+template <class T>
+Parallelepiped<double> widened(const Parallelepiped<T>& b) {
+    auto d = [](const Vec3<T>& v) { return Vec3<double>{double(v[0]), double(v[1]), double(v[2])}; };
+    return {d(b.center), {d(b.axes[0]), d(b.axes[1]), d(b.axes[2])}, d(b.extents)};
+}
+
+// emit(block, bits, count) for each 64-box block.
+template <class T, class Emit>
+Stats run(const Cylinder<double>& cyl, std::span<const Parallelepiped<T>> boxes, const Options& opt, Emit&& emit) {
+    const std::size_t n = boxes.size(), blocks = (n + 63) / 64;
+    const unsigned threads = split::thread_count(opt.threads, n);
+    std::vector<std::size_t> exact(threads, 0);
+    split::for_each_range(blocks, threads, [&](std::size_t first, std::size_t last, unsigned t) {
+        for (std::size_t blk = first; blk < last; ++blk) {
+            const std::size_t begin = blk * 64, count = std::min<std::size_t>(64, n - begin);
+            std::uint64_t bits = 0;
+            for (std::size_t l = 0; l < count; ++l) {
+                const filtered::Result r = filtered::query(widened(boxes[begin + l]), cyl);
+                bits |= std::uint64_t(r.intersect) << l;
+                exact[t] += r.exact_used;
+            }
+            emit(blk, bits, count);
+        }
+    });
+    Stats st;
+    st.boxes = n;
+    st.lanes = 1;
+    st.kernel = Kernel::compiled;
+    for (std::size_t e : exact) st.exact_lanes += e;
+    return st;
+}
+
+template <class T>
+Stats to_mask(const Cylinder<double>& cyl, std::span<const Parallelepiped<T>> boxes, std::span<std::uint64_t> mask,
+              const Options& opt) {
+    if (mask.size() < mask_words(boxes.size()))
+        throw std::invalid_argument("boxcyl::batch::intersects: mask has too few words");
+    return run(cyl, boxes, opt, [&](std::size_t blk, std::uint64_t bits, std::size_t) { mask[blk] = bits; });
+}
+template <class T>
+Stats to_bools(const Cylinder<double>& cyl, std::span<const Parallelepiped<T>> boxes, std::span<bool> out,
+               const Options& opt) {
+    if (out.size() < boxes.size())
+        throw std::invalid_argument("boxcyl::batch::intersects: output has fewer elements than boxes");
+    return run(cyl, boxes, opt, [&](std::size_t blk, std::uint64_t bits, std::size_t count) {
+        for (std::size_t l = 0; l < count; ++l) out[blk * 64 + l] = (bits >> l) & 1u;
+    });
+}
+
+}  // namespace boxcyl::batch::parallelepipeds
+
+namespace boxcyl::batch {
+
+// (Overloads rather than a template, so that a std::vector of boxes converts to the span.)
+inline Stats intersects(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes,
+                        std::span<std::uint64_t> mask, const Options& opt = {}) {
+    return parallelepipeds::to_mask(cyl, boxes, mask, opt);
+}
+inline Stats intersects(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes, std::span<bool> out,
+                        const Options& opt = {}) {
+    return parallelepipeds::to_bools(cyl, boxes, out, opt);
+}
+inline Stats intersects(const Cylinder<double>& cyl, std::span<const Parallelepiped<float>> boxes,
+                        std::span<std::uint64_t> mask, const Options& opt = {}) {
+    return parallelepipeds::to_mask(cyl, boxes, mask, opt);
+}
+inline Stats intersects(const Cylinder<double>& cyl, std::span<const Parallelepiped<float>> boxes, std::span<bool> out,
+                        const Options& opt = {}) {
+    return parallelepipeds::to_bools(cyl, boxes, out, opt);
+}
+
+}  // namespace boxcyl::batch

@@ -1,0 +1,509 @@
+// The exact default query for any parallelepiped (boxcyl::Parallelepiped: axes of any length and
+// angle, exactly as given), fast where the answer is not close: certified separating directions and
+// witness points first, exact §3 on the exact solid only when none certifies.
+//
+// Stages (each certificate decided on enclosures inside an UncertaintyScope, first with Bounded — a
+// double and a running error bound — then, if that left it undecided, with outward-rounded Interval;
+// a certificate counts only when every comparison in it was decided):
+//   misses: a direction n (any double vector: every real direction is a valid separating-axis
+//           candidate, so n itself needs no error bound) with
+//             |n·(C − K)| − Σ eᵢ|n·Wᵢ| − H|n·u| > r·|n × u|   (support functions, |u| = 1),
+//           i.e. s > 0 and s² > r²|n × u|². Candidates: the face normals Wⱼ × Wₖ, the cylinder axis,
+//           Wᵢ × axis, and the direction between the nearest points found by a double iteration;
+//   hits:   a box point P = K + Σ xᵢWᵢ for doubles |xᵢ| ≤ eᵢ (so exactly a point of the solid) with
+//           |u·(P − C)| ≤ H and |(P − C) × u|² ≤ r²; or a cylinder point X = C + t·u + ρ·w/|w|
+//           (double t with |t| ≤ H, double ρ ≤ r, w = m − (m·u)u ⊥ u for a double m: the real point
+//           for the exact u is a cylinder point, and its enclosure contains it) whose box coordinates
+//           A⁻¹(X − K) (Cramer's rule; only for certainly non-singular A) are within ±eᵢ.
+//           Candidates: the box centre, the cylinder centre and the axis point nearest to the box
+//           centre, then the iterates.
+//   frame:  for nearly orthogonal axes of any lengths (integer-vertex boxes like (3,4,0), (−4,3,0),
+//           (0,0,5); scaled rotations), §4 on the enclosed canonical problem of the unit frame
+//           Wᵢ/|Wᵢ|, widened by the frame's distance from orthonormal (frame_stage below): complete
+//           but for queries within rounding of touching.
+// Order: the fixed candidates (Bounded), the frame stage (Bounded), the searched candidates
+// (Bounded), then the frame stage and all candidates again in Interval.
+// The search, in plain double and unchecked (only the certificates are): alternating projections
+// between the cylinder and the parallelepiped (the latter by coordinate descent on the box
+// coordinates, exact in one sweep for orthogonal axes), both shrunk about their centres (0.9, 0.99,
+// 0.9999: a witness needs room), certificates tested after steps 1, 2, 4, 8, ... of each phase.
+// Undecided queries (touching or within rounding of it, thin overlaps of skewed or flat solids) go to
+// exact §3 on the exact solid (algo::convex_hull on rationals, the unit axis in Q(√d)): the answer is always exact.
+// No magnitude is out of range: overflow and underflow make enclosures undecided, never wrong.
+// Needs the exact backend (boxcyl::exact).
+#pragma once
+
+#include <algorithm>  // std::min, std::max
+#include <array>      // the approximate axes
+#include <cassert>    // debug-build precondition checks
+#include <cmath>      // std::fabs, std::sqrt, std::ilogb, std::ldexp
+#include <limits>     // infinity
+#include <optional>   // undecided
+#include <stdexcept>  // std::logic_error (BOXCYL_CHECK_FILTER)
+#include <string>     // its message
+
+#include "boxcyl/algo/convex_hull.hpp"
+#include "boxcyl/algo/linear_inequalities.hpp"
+#include "boxcyl/filtered.hpp"  // filtered::Result
+#include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
+#include "boxcyl/geometry/reduce.hpp"  // CanonicalQuery
+#include "boxcyl/geometry/reduce_exact.hpp"
+#include "boxcyl/geometry/validate.hpp"
+#include "boxcyl/number/bounded.hpp"
+#include "boxcyl/number/interval.hpp"
+#include "boxcyl/number/qfield.hpp"
+#include "boxcyl/number/rational.hpp"
+#include "boxcyl/oracle/oracle.hpp"  // to_exact: the rationals the doubles denote
+
+namespace boxcyl::filtered {
+
+namespace parallelepiped_detail {
+
+// ---- Exact stage: §3 on the exact solid. ----
+
+inline bool exact_answer(const Parallelepiped<double>& b, const Cylinder<double>& c) {
+    const Parallelepiped<Rational> eb = to_exact(b);
+    const Cylinder<Rational> ec = to_exact(c);
+    const QuadraticField<Rational> field(dot(ec.axis, ec.axis));
+    algo::Parallelepiped<QFRational> p;
+    p.center = lift(eb.center);
+    for (int i = 0; i < 3; ++i) p.half_edges[i] = lift(Vec3<Rational>(eb.extents[i] * eb.axes[i]));
+    return algo::convex_hull(p, to_unit(ec, field));
+}
+
+// ---- Enclosed data. ----
+
+// |v|² as a sum of squares of magnitudes: never below 0, also for components that straddle 0.
+template <class N>
+N norm2(const Vec3<N>& v) {
+    const N a = abs_value(v[0]), b = abs_value(v[1]), c = abs_value(v[2]);
+    return a * a + b * b + c * c;
+}
+
+// x·2^k as an enclosure: a point when exact, else the neighbours of the rounded value.
+template <class N>
+N scaled(double x, int k) {
+    const double y = std::ldexp(x, k);
+    if (std::ldexp(y, -k) == x) return N(y);
+    return N::range(boxcyl::detail::next_down(y), boxcyl::detail::next_up(y));
+}
+
+// An enclosure of the exact unit axis D/|D| (the axis first scaled by a power of two to a largest
+// component in [1, 2), so D·D neither overflows nor vanishes; a single non-zero component gives ±1).
+template <class N>
+Vec3<N> unit_axis(const Vec3<double>& a) {
+    int nonzero = 0, which = 0;
+    double m = 0;
+    for (int i = 0; i < 3; ++i) {
+        if (a[i] != 0) ++nonzero, which = i;
+        m = std::max(m, std::fabs(a[i]));
+    }
+    if (nonzero == 1) {
+        Vec3<N> d{N(0), N(0), N(0)};
+        d[which] = N(a[which] > 0 ? 1.0 : -1.0);
+        return d;
+    }
+    const int k = -std::ilogb(m);
+    const Vec3<N> s{scaled<N>(a[0], k), scaled<N>(a[1], k), scaled<N>(a[2], k)};
+    const N len = sqrt(norm2(s));
+    return {s[0] / len, s[1] / len, s[2] / len};
+}
+
+template <class N>
+Vec3<N> enclose(const Vec3<double>& v) {
+    return {N(v[0]), N(v[1]), N(v[2])};
+}
+
+template <class N>
+struct Problem {
+    Vec3<N> delta;   // C − K
+    Vec3<N> w[3];    // the axes (exact)
+    Vec3<N> e;       // the extents (exact)
+    Vec3<N> u;       // the unit axis
+    N r, h;          // radius (exact), half height
+    N det;           // det[W0 W1 W2]
+};
+
+template <class N>
+Problem<N> problem(const Parallelepiped<double>& b, const Cylinder<double>& c) {
+    Problem<N> p;
+    p.delta = enclose<N>(c.center) - enclose<N>(b.center);
+    for (int i = 0; i < 3; ++i) p.w[i] = enclose<N>(b.axes[i]);
+    p.e = enclose<N>(b.extents);
+    p.u = unit_axis<N>(c.axis);
+    p.r = N(c.radius);
+    p.h = N(c.height) * N(0.5);
+    p.det = dot(p.w[0], cross(p.w[1], p.w[2]));
+    return p;
+}
+
+template <class Test>
+bool certainly(Test&& test) {
+    UncertaintyScope scope;
+    const bool ok = test();
+    return ok && scope.certain();
+}
+
+// n separates: s = |n·δ| − Σ eᵢ|n·Wᵢ| − H|n·u| > 0 and s² > r²|n × u|².
+template <class N>
+bool separates(const Problem<N>& p, const Vec3<double>& nd) {
+    return certainly([&] {
+        const Vec3<N> n = enclose<N>(nd);
+        const N s = abs_value(dot(n, p.delta)) -
+                    (p.e[0] * abs_value(dot(n, p.w[0])) + p.e[1] * abs_value(dot(n, p.w[1])) +
+                     p.e[2] * abs_value(dot(n, p.w[2]))) -
+                    p.h * abs_value(dot(n, p.u));
+        if (!(N(0) < s)) return false;
+        return p.r * p.r * norm2(cross(n, p.u)) < s * s;
+    });
+}
+
+// The box point K + Σ xᵢWᵢ (|xᵢ| ≤ eᵢ exactly, checked by the caller) lies in the cylinder.
+template <class N>
+bool box_point_inside(const Problem<N>& p, const Vec3<double>& x) {
+    return certainly([&] {
+        const Vec3<N> v = N(x[0]) * p.w[0] + N(x[1]) * p.w[1] + N(x[2]) * p.w[2] - p.delta;  // P − C
+        if (!(abs_value(dot(p.u, v)) <= p.h)) return false;
+        return norm2(cross(v, p.u)) <= p.r * p.r;
+    });
+}
+
+// The cylinder point X = C + t·u + ρ·w/|w|, w = m − (m·u)u (|t| ≤ H and 0 ≤ ρ ≤ r exactly, checked by
+// the caller; ρ = 0: an axis point) lies in the box: |det(·)/det| ≤ eᵢ for X − K (Cramer).
+template <class N>
+bool cylinder_point_inside(const Problem<N>& p, double t, double rho, const Vec3<double>& m) {
+    return certainly([&] {
+        if (!(N(0) < abs_value(p.det))) return false;
+        Vec3<N> y = p.delta + N(t) * p.u;  // X − K
+        if (rho != 0) {
+            const Vec3<N> mn = enclose<N>(m);
+            const Vec3<N> w = mn - dot(mn, p.u) * p.u;
+            const N len = sqrt(norm2(w));
+            if (!(N(0) < len)) return false;
+            y = y + (N(rho) / len) * w;
+        }
+        const N x0 = dot(y, cross(p.w[1], p.w[2])) / p.det;
+        const N x1 = dot(p.w[0], cross(y, p.w[2])) / p.det;
+        const N x2 = dot(p.w[0], cross(p.w[1], y)) / p.det;
+        return abs_value(x0) <= p.e[0] && abs_value(x1) <= p.e[1] && abs_value(x2) <= p.e[2];
+    });
+}
+
+// ---- Nearly orthogonal axes of any lengths: §4 in the frame of the unit axes. ----
+//
+// With Lᵢ = |Wᵢ| and Aᵢ = Wᵢ/Lᵢ (enclosures of the real numbers), the solid is exactly
+// {K + Σ yᵢAᵢ : |yᵢ| ≤ eᵢLᵢ}: an oriented box with the real frame A. When ‖AᵀA − I‖₂ ≤ g (bounded from
+// the enclosures), the canonical problem (cᵢ = Aᵢ·(C − K), the axis Aᵀu normalised, extents eᵢLᵢ) is
+// widened by η = g·(|e'|₁ + |C − K|₁ + 2H + 2r) exactly as for an oriented box whose frame is
+// orthonormal only up to rounding (filtered.hpp, docs/robustness.md): §4 on the inflated problem
+// certifies misses, on the deflated one hits. Exactly orthogonal axes ((3,4,0), (−4,3,0), (0,0,5))
+// leave g at the enclosures' width, so only queries within a few ulps of touching stay undecided.
+template <class N>
+std::optional<bool> run_section4(const CanonicalQuery<N>& q) {
+    UncertaintyScope scope;
+    const bool answer = algo::linear_inequalities(q.box, q.cylinder);
+    if (!scope.certain()) return std::nullopt;
+    return answer;
+}
+template <class N>
+double upper(const N& x) {
+    return std::max(-x.lo(), x.hi());
+}
+template <class N>
+std::optional<bool> frame_stage(const Problem<N>& p, const Cylinder<double>& c) {
+    Vec3<N> a[3];
+    CanonicalQuery<N> q;
+    for (int i = 0; i < 3; ++i) {
+        const N len = sqrt(norm2(p.w[i]));
+        if (!(len.lo() > 0)) return std::nullopt;  // a zero (or tiny) axis: a flat solid
+        a[i] = {p.w[i][0] / len, p.w[i][1] / len, p.w[i][2] / len};
+        q.box.extents[i] = p.e[i] * len;
+    }
+    double g = 0;
+    for (int i = 0; i < 3; ++i) {
+        N row(0);
+        for (int j = 0; j < 3; ++j) {
+            N gij = dot(a[i], a[j]);
+            if (i == j) gij -= N(1);
+            row += N(upper(gij));
+        }
+        g = std::max(g, row.hi());
+    }
+    if (!(g <= 0x1p-10)) return std::nullopt;  // skewed: not a rotated frame
+    Vec3<N> v;
+    for (int i = 0; i < 3; ++i) {
+        q.cylinder.center[i] = dot(a[i], p.delta);
+        v[i] = dot(a[i], p.u);
+    }
+    const N vlen = sqrt(norm2(v));
+    q.cylinder.direction = {v[0] / vlen, v[1] / vlen, v[2] / vlen};
+    q.cylinder.radius = p.r;
+    q.cylinder.half_height = p.h;
+    N lengths(0);
+    for (int i = 0; i < 3; ++i) lengths += N(upper(q.box.extents[i])) + N(upper(p.delta[i]));
+    lengths += N(2) * N(upper(p.h)) + N(2) * N(upper(p.r));
+    const double eta = (N(g) * lengths).hi();
+    if (!(eta < std::numeric_limits<double>::infinity())) return std::nullopt;
+    // η split as in filtered.hpp: on the cylinder up to min(r, H), the rest on the box.
+    const double on_cyl = std::min(std::min(p.r.lo(), p.h.lo()), eta);
+    const double on_box = on_cyl == eta ? 0.0 : (N(eta) - N(on_cyl)).hi();
+    // Sizes as points: outer ones rounded up after adding, inner ones down after subtracting.
+    bool has_inner = true;
+    auto up = [](const N& x, double by) { return N(by == 0 ? x.hi() : (N(x.hi()) + N(by)).hi()); };
+    auto down = [&has_inner](const N& x, double by) {
+        if (by == 0) return N(x.lo());
+        if (!(x.lo() >= by)) has_inner = false;
+        return N(std::max(0.0, (N(x.lo()) - N(by)).lo()));
+    };
+    CanonicalQuery<N> outer = q, inner = q;
+    outer.cylinder.radius = up(q.cylinder.radius, on_cyl);
+    outer.cylinder.half_height = up(q.cylinder.half_height, on_cyl);
+    inner.cylinder.radius = down(q.cylinder.radius, on_cyl);
+    inner.cylinder.half_height = down(q.cylinder.half_height, on_cyl);
+    for (int i = 0; i < 3; ++i) {
+        outer.box.extents[i] = up(q.box.extents[i], on_box);
+        inner.box.extents[i] = down(q.box.extents[i], on_box);
+    }
+    (void)c;
+    if (has_inner)
+        if (const std::optional<bool> r = run_section4(inner); r && *r) return true;
+    if (const std::optional<bool> r = run_section4(outer); r && !*r) return false;
+    return std::nullopt;
+}
+
+// ---- Candidates, in plain double (any value is sound; only the certificates decide). ----
+
+struct Candidates {
+    static constexpr int max = 40;
+    Vec3<double> dirs[max];
+    int n_dirs = 0;
+    Vec3<double> box_points[max];  // box coordinates x, |xᵢ| ≤ eᵢ exactly
+    int n_box = 0;
+    struct CylPoint {
+        double t, rho;
+        Vec3<double> m;
+    };
+    CylPoint cyl_points[max];
+    int n_cyl = 0;
+
+    void dir(const Vec3<double>& n) {
+        if (n_dirs < max && (n[0] != 0 || n[1] != 0 || n[2] != 0)) dirs[n_dirs++] = n;
+    }
+    void box(const Vec3<double>& x) {
+        if (n_box < max) box_points[n_box++] = x;
+    }
+    void cyl(double t, double rho, const Vec3<double>& m) {
+        if (n_cyl < max) cyl_points[n_cyl++] = {t, rho, m};
+    }
+    void clear() { n_dirs = n_box = n_cyl = 0; }
+};
+
+// The approximate problem in double for the search.
+struct Approx {
+    Vec3<double> k, c, u;
+    std::array<Vec3<double>, 3> w;
+    Vec3<double> e;
+    double r, height, h;
+};
+
+inline Approx approx(const Parallelepiped<double>& b, const Cylinder<double>& c) {
+    Approx a;
+    a.k = b.center;
+    a.c = c.center;
+    a.w = b.axes;
+    a.e = b.extents;
+    double m = std::max({std::fabs(c.axis[0]), std::fabs(c.axis[1]), std::fabs(c.axis[2])});
+    const int s = m > 0 ? -std::ilogb(m) : 0;
+    const Vec3<double> d{std::ldexp(c.axis[0], s), std::ldexp(c.axis[1], s), std::ldexp(c.axis[2], s)};
+    const double len = std::sqrt(dot(d, d));
+    a.u = {d[0] / len, d[1] / len, d[2] / len};
+    a.r = c.radius;
+    a.height = c.height;
+    a.h = c.height * 0.5;
+    return a;
+}
+
+// Box coordinates x clamped to |xᵢ| ≤ eᵢ exactly (NaN becomes 0).
+inline Vec3<double> clamp_coords(const Vec3<double>& x, const Vec3<double>& e) {
+    Vec3<double> y;
+    for (int i = 0; i < 3; ++i) y[i] = std::fabs(x[i]) <= e[i] ? x[i] : (x[i] > e[i] ? e[i] : x[i] < -e[i] ? -e[i] : 0.0);
+    return y;
+}
+// An axial parameter with |t| ≤ H exactly (|2t| ≤ height: doubling is exact), else 0.
+inline double clamp_axial(double t, const Approx& a) {
+    if (!(std::fabs(t) * 2 <= a.height)) t = t > 0 ? a.h : -a.h;
+    if (!(std::fabs(t) * 2 <= a.height)) t = 0;  // a.h rounded up (subnormal height) or NaN
+    return t;
+}
+
+inline Vec3<double> box_point(const Approx& a, const Vec3<double>& x) {
+    return a.k + x[0] * a.w[0] + x[1] * a.w[1] + x[2] * a.w[2];
+}
+// The box coordinates of the box point nearest to y: coordinate descent from x (a few sweeps).
+inline Vec3<double> onto_box(const Approx& a, const Vec3<double>& y, Vec3<double> x, int sweeps) {
+    for (int s = 0; s < sweeps; ++s)
+        for (int i = 0; i < 3; ++i) {
+            const double ww = dot(a.w[i], a.w[i]);
+            if (!(ww > 0)) {
+                x[i] = 0;
+                continue;
+            }
+            const Vec3<double> res = box_point(a, x) - y;
+            x[i] = std::min(std::max(x[i] - dot(a.w[i], res) / ww, -a.e[i]), a.e[i]);
+        }
+    return clamp_coords(x, a.e);
+}
+// The cylinder point nearest to y, as (t, ρ, m): X = C + t·u + ρ·m/|m| with m ⊥ u.
+inline Candidates::CylPoint onto_cylinder(const Approx& a, const Vec3<double>& y) {
+    const Vec3<double> v = y - a.c;
+    const double t = clamp_axial(dot(a.u, v), a);
+    const Vec3<double> m = v - dot(a.u, v) * a.u;
+    const double len = std::sqrt(dot(m, m));
+    const double rho = std::min(len, a.r);
+    return {t, rho, m};
+}
+inline Vec3<double> cylinder_point(const Approx& a, const Candidates::CylPoint& q) {
+    const double len = std::sqrt(dot(q.m, q.m));
+    const double s = len > 0 ? q.rho / len : 0.0;
+    return a.c + q.t * a.u + s * q.m;
+}
+
+// The cheap, fixed candidates.
+inline void fixed_candidates(const Approx& a, const Cylinder<double>& c, Candidates& cs) {
+    for (int i = 0; i < 3; ++i) cs.dir(cross(a.w[(i + 1) % 3], a.w[(i + 2) % 3]));
+    cs.dir(c.axis);
+    for (int i = 0; i < 3; ++i) cs.dir(cross(c.axis, a.w[i]));
+    cs.box({0, 0, 0});
+    // The axis point nearest to the box centre, and the box point nearest to it.
+    const double t = clamp_axial(dot(a.u, a.k - a.c), a);
+    cs.cyl(0, 0, {0, 0, 0});
+    cs.cyl(t, 0, {0, 0, 0});
+    const Vec3<double> x = onto_box(a, a.c + t * a.u, {0, 0, 0}, 2);
+    cs.box(x);
+    // The cross-section point 0.9·r towards the box centre.
+    const Vec3<double> to_k = a.k - (a.c + t * a.u);
+    cs.cyl(t, a.r * 0.9, to_k);
+}
+
+// Alternating projections between the solids shrunk about their centres to `shrink` of their sizes,
+// from the box centre: for overlapping solids the iterates approach a point of the shrunk
+// intersection, which lies inside both full solids with a margin (unshrunk, they would approach the
+// intersection's boundary, where no certificate has room); for disjoint ones, a nearest pair.
+// Candidates after steps 1, 2, 4, 8, ...
+inline void searched_candidates(const Approx& full, double shrink, Candidates& cs, int steps = 16) {
+    Approx a = full;
+    // The cylinder shrunk by one depth along and across its axis (a factor would take a thick disk's
+    // whole thin rim), kept ≤ the true sizes exactly by max(·, 0) of values computed below them.
+    const double depth = (1 - shrink) * std::min(full.r, full.h);
+    a.r = std::max(0.0, full.r - depth * 1.0000001);
+    a.h = std::max(0.0, full.h - depth * 1.0000001);
+    a.height = a.h * 2 <= full.height ? a.h * 2 : full.height * shrink;
+    for (int i = 0; i < 3; ++i) a.e[i] = full.e[i] * shrink;
+    Vec3<double> x{0, 0, 0};
+    for (int step = 1; step <= steps; ++step) {
+        const Vec3<double> p = box_point(a, x);
+        const Candidates::CylPoint q = onto_cylinder(a, p);
+        const Vec3<double> y = cylinder_point(a, q);
+        x = onto_box(a, y, x, 3);
+        if ((step & (step - 1)) != 0) continue;
+        const Vec3<double> pb = box_point(a, x);
+        cs.box(clamp_coords(x, full.e));
+        cs.cyl(q.t, q.rho, q.m);
+        cs.dir(y - pb);
+    }
+}
+
+// The search's phases: shrink factor, steps. Deeper shrinks find witnesses with more room; the last
+// finds those of thin overlaps (on random skewed parallelepipeds, 64 steps per phase left 0.2% of the
+// queries to the exact stage where 16 left 1%: thin overlaps converge slowly).
+struct Phase {
+    double shrink;
+    int steps;
+};
+inline constexpr Phase search_phases[] = {{0.9, 64}, {0.99, 64}, {0.9999, 64}};
+
+template <class N>
+std::optional<bool> certify(const Problem<N>& p, const Candidates& cs) {
+    for (int i = 0; i < cs.n_dirs; ++i)
+        if (separates(p, cs.dirs[i])) return false;
+    for (int i = 0; i < cs.n_box; ++i)
+        if (box_point_inside(p, cs.box_points[i])) return true;
+    for (int i = 0; i < cs.n_cyl; ++i)
+        if (cylinder_point_inside(p, cs.cyl_points[i].t, cs.cyl_points[i].rho, cs.cyl_points[i].m)) return true;
+    return std::nullopt;
+}
+
+// The same question at a convenient scale: each axis Wᵢ scaled by 2^-aᵢ to a largest component in
+// [1, 2) with its extent scaled by 2^aᵢ (the same solid), then every length (centres, extents, radius,
+// height) by one 2^-k when the largest is beyond 2^±200 (the same question: the axis direction does
+// not change). A step is taken only where every scaled value is exact (checked by scaling back), so
+// the exact answer is unchanged; the enclosures then neither overflow nor underflow on most inputs.
+inline bool scaled_exactly(double x, int k, double& out) {
+    out = std::ldexp(x, k);
+    return std::ldexp(out, -k) == x;
+}
+inline void normalise(Parallelepiped<double>& b, Cylinder<double>& c) {
+    for (int i = 0; i < 3; ++i) {
+        const double m = std::max({std::fabs(b.axes[i][0]), std::fabs(b.axes[i][1]), std::fabs(b.axes[i][2])});
+        if (!(m > 0) || !(m <= std::numeric_limits<double>::max())) continue;
+        const int a = std::ilogb(m);
+        Vec3<double> w;
+        double e = 0;
+        if (scaled_exactly(b.axes[i][0], -a, w[0]) && scaled_exactly(b.axes[i][1], -a, w[1]) &&
+            scaled_exactly(b.axes[i][2], -a, w[2]) && scaled_exactly(b.extents[i], a, e))
+            b.axes[i] = w, b.extents[i] = e;
+    }
+    double l = std::max({c.radius, c.height, b.extents[0], b.extents[1], b.extents[2]});
+    for (int j = 0; j < 3; ++j) l = std::max({l, std::fabs(b.center[j]), std::fabs(c.center[j])});
+    if (!(l > 0) || !(l <= std::numeric_limits<double>::max())) return;
+    const int k = -std::ilogb(l);
+    if (k >= -200 && k <= 200) return;
+    Parallelepiped<double> nb = b;
+    Cylinder<double> nc = c;
+    bool exact = scaled_exactly(c.radius, k, nc.radius) && scaled_exactly(c.height, k, nc.height);
+    for (int j = 0; j < 3; ++j)
+        exact = exact && scaled_exactly(b.center[j], k, nb.center[j]) && scaled_exactly(c.center[j], k, nc.center[j]) &&
+                scaled_exactly(b.extents[j], k, nb.extents[j]);
+    if (exact) b = nb, c = nc;
+}
+
+// The certified stages: the answer, or nullopt for the exact stage.
+inline std::optional<bool> filter(Parallelepiped<double> b, Cylinder<double> c) {
+    normalise(b, c);
+    const Approx a = approx(b, c);
+    Candidates cs;
+    fixed_candidates(a, c, cs);
+    const Problem<Bounded> pb = problem<Bounded>(b, c);
+    if (const std::optional<bool> r = certify(pb, cs)) return r;
+    if (const std::optional<bool> r = frame_stage(pb, c)) return r;
+    Candidates searched;
+    for (const auto& [shrink, steps] : search_phases) searched_candidates(a, shrink, searched, steps);
+    if (const std::optional<bool> r = certify(pb, searched)) return r;
+    const Problem<Interval> pi = problem<Interval>(b, c);
+    if (const std::optional<bool> r = frame_stage(pi, c)) return r;
+    if (const std::optional<bool> r = certify(pi, cs)) return r;
+    return certify(pi, searched);
+}
+
+}  // namespace parallelepiped_detail
+
+// The exact answer for any parallelepiped (exact_used: no certificate decided, exact §3 answered).
+inline Result query(const Parallelepiped<double>& box, const Cylinder<double>& cyl) {
+    assert(is_valid(box) && "boxcyl::filtered::query: invalid box (see boxcyl::validate)");
+    assert(is_valid(cyl) && "boxcyl::filtered::query: invalid cylinder (see boxcyl::validate)");
+#if defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT
+    return {parallelepiped_detail::exact_answer(box, cyl), true};
+#else
+    const std::optional<bool> fast = parallelepiped_detail::filter(box, cyl);
+    if (!fast) return {parallelepiped_detail::exact_answer(box, cyl), true};
+#if defined(BOXCYL_CHECK_FILTER) && BOXCYL_CHECK_FILTER
+    if (parallelepiped_detail::exact_answer(box, cyl) != *fast)
+        throw std::logic_error("boxcyl::filtered: the parallelepiped filter answered " +
+                               std::string(*fast ? "true" : "false") + " but the exact answer differs");
+#endif
+    return {*fast, false};
+#endif
+}
+
+}  // namespace boxcyl::filtered

@@ -1,0 +1,120 @@
+"""Batches past one machine's memory: Dask arrays of boxes against one cylinder.
+
+>>> import dask.array as da
+>>> import boxcyl, boxcyl.dask
+>>> boxes = da.from_array(np.array([[[-1, -1, -1], [1, 1, 1]]] * 6, dtype=float), chunks=(4, 2, 3))
+>>> cyl = boxcyl.Cylinder(center=(3, 0, 0), axis=(0, 0, 5), radius=2, height=1)
+>>> boxcyl.dask.intersects_aligned(boxes, cyl).compute().tolist()
+[True, True, True, True, True, True]
+
+Each block of boxes is answered by the numpy batch form (:func:`boxcyl.intersects_aligned` /
+:func:`boxcyl.intersects_oriented`) where Dask runs it: in a thread, a process, or a worker of a
+``distributed`` cluster. The answer is a lazy Dask array of bools (one byte per box) with the boxes'
+chunks along the first axis; reduce it (``.sum()``, ``.nonzero()``) or store it (``.to_zarr``) so that
+neither boxes nor answers need to fit in memory at once. The cylinder and the options travel with
+each task (shapes pickle). The answers equal one call of the numpy form on the whole array.
+
+Within a block, ``threads`` (default 1) threads answer: Dask already runs blocks in parallel; give
+more for few large blocks.
+"""
+import re
+
+import dask.array as da
+import numpy as np
+
+import boxcyl
+
+__all__ = ["intersects_aligned", "intersects_oriented"]
+
+
+def _cylinder(cylinder):
+    if not isinstance(cylinder, boxcyl.Cylinder):
+        raise ValueError(f"cylinder: expected a boxcyl.Cylinder, got {type(cylinder).__name__}")
+    return cylinder
+
+
+def _rows(name, array, tail):
+    """``array`` as a Dask array of shape (N, *tail), chunked along the first axis only."""
+    if not isinstance(array, da.Array):
+        array = da.asarray(array)
+    if array.ndim != len(tail) + 1 or array.shape[1:] != tail:
+        expected = ", ".join(["N"] + [str(t) for t in tail])
+        raise ValueError(f"{name}: expected a Dask array of shape ({expected}), got {array.shape}")
+    if array.numblocks[1:] != (1,) * len(tail):
+        array = array.rechunk({k: -1 for k in range(1, array.ndim)})
+    return array
+
+
+def _renamed(error, block_info):
+    """A block's ValueError with its element index made global ("boxes[17]" in a block that starts at
+    1000 is "boxes[1017]")."""
+    start = block_info[0]["array-location"][0][0]
+    message = re.sub(r"\bboxes\[(\d+)\]", lambda m: f"boxes[{int(m.group(1)) + start}]", str(error))
+    return ValueError(message)
+
+
+def _aligned_block(block, cylinder, algorithm, arithmetic, threads, block_info=None):
+    try:
+        return boxcyl.intersects_aligned(block, cylinder, algorithm=algorithm, arithmetic=arithmetic,
+                                         threads=threads)
+    except ValueError as e:
+        raise _renamed(e, block_info) from None
+
+
+def _oriented_block(rows, cylinder, algorithm, arithmetic, threads, block_info=None):
+    boxes = (rows[:, 0:3], rows[:, 3:12].reshape(-1, 3, 3), rows[:, 12:15])
+    try:
+        return boxcyl.intersects_oriented(boxes, cylinder, algorithm=algorithm, arithmetic=arithmetic, threads=threads)
+    except ValueError as e:
+        raise _renamed(e, block_info) from None
+
+
+def intersects_aligned(boxes, cylinder, *, algorithm="inequalities", arithmetic="filtered", threads=1):
+    """Whether each axis-aligned box of a Dask array intersects one cylinder.
+
+    Parameters
+    ----------
+    boxes : dask.array.Array of shape (N, 2, 3), ``boxes[i] = [min, max]``
+        Any dtype :func:`boxcyl.intersects_aligned` accepts; chunked along the first axis (other
+        chunkings are rechunked so that each block holds whole boxes).
+    cylinder : boxcyl.Cylinder
+    algorithm, arithmetic, threads :
+        As for :func:`boxcyl.intersects_aligned`; ``threads`` is per block (default 1).
+
+    Returns
+    -------
+    dask.array.Array of bool, shape (N,), chunks those of ``boxes`` along the first axis
+        Lazy; an invalid box raises ValueError when computed, naming it by its index in ``boxes``.
+    """
+    boxes = _rows("boxes", boxes, (2, 3))
+    return da.map_blocks(_aligned_block, boxes, _cylinder(cylinder), algorithm, arithmetic, threads,
+                         drop_axis=[1, 2], dtype=np.bool_, meta=np.empty((0,), dtype=np.bool_))
+
+
+def intersects_oriented(boxes, cylinder, *, algorithm="inequalities", arithmetic="filtered", threads=1):
+    """Whether each oriented box of Dask arrays intersects one cylinder.
+
+    Parameters
+    ----------
+    boxes : a tuple (center, axes, extents) of dask.array.Array
+        Shapes (N, 3), (N, 3, 3) (rows are the box axes) and (N, 3) (half side lengths), as for
+        :func:`boxcyl.intersects_oriented`; rechunked to the chunks of ``center`` along the first axis.
+    cylinder : boxcyl.Cylinder
+    algorithm, arithmetic, threads :
+        As for :func:`intersects_aligned`.
+
+    Returns
+    -------
+    dask.array.Array of bool, shape (N,), chunks those of ``center`` along the first axis
+    """
+    if not isinstance(boxes, tuple) or len(boxes) != 3:
+        raise ValueError("boxes: expected a tuple (center, axes, extents) of Dask arrays")
+    center = _rows("boxes.center", boxes[0], (3,))
+    axes = _rows("boxes.axes", boxes[1], (3, 3))
+    extents = _rows("boxes.extents", boxes[2], (3,))
+    if not axes.shape[0] == extents.shape[0] == center.shape[0]:
+        raise ValueError(f"boxes: lengths {center.shape[0]}, {axes.shape[0]}, {extents.shape[0]} differ")
+    # One (N, 15) array: center, axes (row by row), extents; each block holds whole boxes.
+    rows = da.concatenate([center, axes.reshape(-1, 9), extents], axis=1).rechunk({0: center.chunks[0], 1: -1})
+    return da.map_blocks(_oriented_block, rows, _cylinder(cylinder), algorithm, arithmetic, threads,
+                         drop_axis=[1], dtype=np.bool_, meta=np.empty((0,), dtype=np.bool_))

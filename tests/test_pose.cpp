@@ -1,0 +1,161 @@
+// Poses and sizes (geometry/pose.hpp), one test per row of the README's peer table: each peer's
+// documented convention is written into the case, built with the boxcyl call the table names, and
+// checked on probes whose answers the usual mistakes (full vs half sizes, rows vs columns, quaternion
+// order, the cylinder's local axis) change — each test also builds the mistaken shape and shows that
+// its answer differs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "boxcyl/boxcyl.hpp"
+
+namespace boxcyl {
+namespace {
+
+using V = Vec3<double>;
+
+// A rotation by θ about z with cos θ = 3/5, sin θ = 4/5: local x → (0.6, 0.8, 0), local y → (−0.8, 0.6, 0).
+// Written row by row, as the peers print it; its transpose turns the other way.
+const RotationMatrix<double> R{{{{0.6, -0.8, 0}, {0.8, 0.6, 0}, {0, 0, 1}}}};
+const RotationMatrix<double> R_transposed{{{{0.6, 0.8, 0}, {-0.8, 0.6, 0}, {0, 0, 1}}}};
+// The same rotation as a unit quaternion: cos(θ/2) = 2/√5, sin(θ/2) = 1/√5 about z.
+const double qw = 2 / std::sqrt(5.0), qz = 1 / std::sqrt(5.0);
+const V origin{1, 2, 3};
+
+// A thin probe cylinder at a point, and a tiny probe box at a point.
+Cylinder<double> probe_point(const V& p) { return {p, {0, 0, 1}, 0.01, 0.02}; }
+AlignedBox<double> probe_box(const V& p) { return {{p[0] - 0.01, p[1] - 0.01, p[2] - 0.01}, {p[0] + 0.01, p[1] + 0.01, p[2] + 0.01}}; }
+V local(const RotationMatrix<double>& r, double x, double y, double z) {
+    return origin + x * r.column(0) + y * r.column(1) + z * r.column(2);
+}
+
+// A box 10 × 1 × 1 (half 5 × 0.5 × 0.5) in pose (origin, R): probes at local x = 4 (inside) and 7
+// (outside; inside a box read twice as large); at 4 along the transposed rotation's x (outside).
+void expect_box_10_1_1(const OrientedBox<double>& b) {
+    ASSERT_TRUE(validate(b).ok()) << validate(b).message();
+    EXPECT_TRUE(intersects(b, probe_point(local(R, 4, 0, 0))));
+    EXPECT_FALSE(intersects(b, probe_point(local(R, 7, 0, 0))));
+    EXPECT_FALSE(intersects(b, probe_point(local(R_transposed, 4, 0, 0))));
+}
+bool box_answers_as_10_1_1(const OrientedBox<double>& b) {
+    return intersects(b, probe_point(local(R, 4, 0, 0))) && !intersects(b, probe_point(local(R, 7, 0, 0))) &&
+           !intersects(b, probe_point(local(R_transposed, 4, 0, 0)));
+}
+// A cylinder of radius 0.2 and full length 2 along the pose's local `axis` (0 = x, 1 = y, 2 = z): a
+// probe at local 0.9 along the axis is inside, at 1.5 outside (inside when the length is misread as
+// half), and 0.9 along another local axis is outside.
+void expect_cylinder_r02_len2(const Cylinder<double>& c, int axis) {
+    ASSERT_TRUE(validate(c).ok()) << validate(c).message();
+    double at[3] = {0, 0, 0};
+    at[axis] = 0.9;
+    EXPECT_TRUE(intersects(probe_box(local(R, at[0], at[1], at[2])), c));
+    at[axis] = 1.5;
+    EXPECT_FALSE(intersects(probe_box(local(R, at[0], at[1], at[2])), c));
+    double off[3] = {0, 0, 0};
+    off[(axis + 1) % 3] = 0.9;
+    EXPECT_FALSE(intersects(probe_box(local(R, off[0], off[1], off[2])), c));
+}
+bool cylinder_answers_as_r02_len2(const Cylinder<double>& c, int axis) {
+    double at[3] = {0, 0, 0}, far[3] = {0, 0, 0}, off[3] = {0, 0, 0};
+    at[axis] = 0.9, far[axis] = 1.5, off[(axis + 1) % 3] = 0.9;
+    return intersects(probe_box(local(R, at[0], at[1], at[2])), c) &&
+           !intersects(probe_box(local(R, far[0], far[1], far[2])), c) &&
+           !intersects(probe_box(local(R, off[0], off[1], off[2])), c);
+}
+
+// FCL / Coal: Box(10, 1, 1) takes full side lengths; Cylinder(radius, lz) is centred, lz the full
+// length along local z; Transform3's linear() is R (columns = local axes).
+TEST(PeerConventions, FclCoal) {
+    expect_box_10_1_1(oriented_box(origin, R, Size<double>{10, 1, 1}));
+    expect_cylinder_r02_len2(cylinder(origin, R, 0.2, Height<double>{2}), 2);
+    // The mistakes: full lengths as half extents, R's rows as the axes, lz as a half height.
+    EXPECT_FALSE(box_answers_as_10_1_1(oriented_box(origin, R, HalfExtents<double>{10, 1, 1})));
+    EXPECT_FALSE(box_answers_as_10_1_1(oriented_box(origin, R_transposed, Size<double>{10, 1, 1})));
+    EXPECT_FALSE(cylinder_answers_as_r02_len2(cylinder(origin, R, 0.2, HalfHeight<double>{2}), 2));
+}
+
+// MuJoCo: box size = half sizes; cylinder size = (radius, half height) along local z; quat is
+// (w, x, y, z); xmat is R row-major.
+TEST(PeerConventions, MuJoCo) {
+    const double quat[4] = {qw, 0, 0, qz};  // as in <geom quat="...">
+    const Quaternion<double> q{.w = quat[0], .x = quat[1], .y = quat[2], .z = quat[3]};
+    expect_box_10_1_1(oriented_box(origin, q, HalfExtents<double>{5, 0.5, 0.5}));
+    expect_cylinder_r02_len2(cylinder(origin, q, 0.2, HalfHeight<double>{1}), 2);
+    const double xmat[9] = {0.6, -0.8, 0, 0.8, 0.6, 0, 0, 0, 1};  // row-major
+    const RotationMatrix<double> from_xmat{{{{xmat[0], xmat[1], xmat[2]}, {xmat[3], xmat[4], xmat[5]}, {xmat[6], xmat[7], xmat[8]}}}};
+    expect_box_10_1_1(oriented_box(origin, from_xmat, HalfExtents<double>{5, 0.5, 0.5}));
+    // The mistakes: half sizes as full lengths, the quaternion read as (x, y, z, w), the half height as the height.
+    EXPECT_FALSE(box_answers_as_10_1_1(oriented_box(origin, q, Size<double>{5, 0.5, 0.5})));
+    const Quaternion<double> scalar_last{.w = quat[3], .x = quat[0], .y = quat[1], .z = quat[2]};
+    EXPECT_FALSE(box_answers_as_10_1_1(oriented_box(origin, scalar_last, HalfExtents<double>{5, 0.5, 0.5})));
+    EXPECT_FALSE(cylinder_answers_as_r02_len2(cylinder(origin, q, 0.2, Height<double>{1}), 2));
+}
+
+// Bullet: btBoxShape(halfExtents); btCylinderShape(halfExtents) runs along local Y with halfExtents =
+// (radius, half height, radius), btCylinderShapeZ along Z with (radius, radius, half height);
+// btQuaternion(x, y, z, w); btMatrix3x3's rows are R's rows.
+TEST(PeerConventions, Bullet) {
+    const double bt_quat[4] = {0, 0, qz, qw};  // btQuaternion(x, y, z, w)
+    const Quaternion<double> q{.w = bt_quat[3], .x = bt_quat[0], .y = bt_quat[1], .z = bt_quat[2]};
+    expect_box_10_1_1(oriented_box(origin, q, HalfExtents<double>{5, 0.5, 0.5}));
+    const double cyl_y[3] = {0.2, 1, 0.2};  // btCylinderShape half extents
+    expect_cylinder_r02_len2(cylinder(origin, q, cyl_y[0], HalfHeight<double>{cyl_y[1]}, LocalAxis::y), 1);
+    const double cyl_z[3] = {0.2, 0.2, 1};  // btCylinderShapeZ half extents
+    expect_cylinder_r02_len2(cylinder(origin, R, cyl_z[0], HalfHeight<double>{cyl_z[2]}, LocalAxis::z), 2);
+    // The mistakes: the quaternion's first number taken as w, btCylinderShape placed along z.
+    const Quaternion<double> w_first{.w = bt_quat[0], .x = bt_quat[1], .y = bt_quat[2], .z = bt_quat[3]};
+    EXPECT_FALSE(box_answers_as_10_1_1(oriented_box(origin, w_first, HalfExtents<double>{5, 0.5, 0.5})));
+    EXPECT_FALSE(cylinder_answers_as_r02_len2(cylinder(origin, q, cyl_y[0], HalfHeight<double>{cyl_y[1]}), 1));
+}
+
+// Jolt: BoxShape(half extent); CylinderShape(half height, radius) — half height FIRST — along local Y;
+// Quat(x, y, z, w). (Jolt rounds the cylinder's rims by its convex radius; boxcyl answers for the
+// sharp cylinder.)
+TEST(PeerConventions, Jolt) {
+    const double jolt_quat[4] = {0, 0, qz, qw};  // Quat(x, y, z, w)
+    const Quaternion<double> q{.w = jolt_quat[3], .x = jolt_quat[0], .y = jolt_quat[1], .z = jolt_quat[2]};
+    expect_box_10_1_1(oriented_box(origin, q, HalfExtents<double>{5, 0.5, 0.5}));
+    const double half_height = 1, radius = 0.2;  // CylinderShape(half_height, radius)
+    expect_cylinder_r02_len2(cylinder(origin, q, radius, HalfHeight<double>{half_height}, LocalAxis::y), 1);
+    // The mistakes: along z, and the arguments' order (radius taken as the half height).
+    EXPECT_FALSE(cylinder_answers_as_r02_len2(cylinder(origin, q, radius, HalfHeight<double>{half_height}), 1));
+    EXPECT_FALSE(cylinder_answers_as_r02_len2(cylinder(origin, q, half_height, HalfHeight<double>{radius}, LocalAxis::y), 1));
+}
+
+// trimesh: creation.box(extents=full lengths, transform=4×4); creation.cylinder(radius, height,
+// transform) is centred along local z with the full height; transforms are homogeneous, column vectors.
+TEST(PeerConventions, Trimesh) {
+    const RigidTransform<double> t{{{{0.6, -0.8, 0, origin[0]}, {0.8, 0.6, 0, origin[1]}, {0, 0, 1, origin[2]}, {0, 0, 0, 1}}}};
+    expect_box_10_1_1(oriented_box(t, Size<double>{10, 1, 1}));
+    expect_cylinder_r02_len2(cylinder(t, 0.2, Height<double>{2}), 2);
+    // The mistakes: extents as half extents; the transform transposed (row vectors).
+    EXPECT_FALSE(box_answers_as_10_1_1(oriented_box(t, HalfExtents<double>{10, 1, 1})));
+    EXPECT_FALSE(box_answers_as_10_1_1(oriented_box(origin, R_transposed, Size<double>{10, 1, 1})));
+    EXPECT_FALSE(cylinder_answers_as_r02_len2(cylinder(t, 0.2, HalfHeight<double>{2}), 2));
+}
+
+TEST(Pose, FactoriesProduceTheStatedSolid) {
+    const OrientedBox<double> b = oriented_box(origin, R, Size<double>{2, 4, 6});
+    EXPECT_EQ(b.center, origin);
+    EXPECT_EQ(b.axes[0], (V{0.6, 0.8, 0}));
+    EXPECT_EQ(b.axes[1], (V{-0.8, 0.6, 0}));
+    EXPECT_EQ(b.axes[2], (V{0, 0, 1}));
+    EXPECT_EQ(b.extents, (V{1, 2, 3}));
+    const Cylinder<double> c = cylinder(origin, R, 0.5, HalfHeight<double>{1.5}, LocalAxis::x);
+    EXPECT_EQ(c.axis, (V{0.6, 0.8, 0}));
+    EXPECT_EQ(c.height, 3);
+    EXPECT_EQ(c.radius, 0.5);
+    // The identity quaternion is exactly the identity; a rounded one is orthonormal within the contract.
+    const OrientedBox<double> id = oriented_box(origin, Quaternion<double>{.w = 1, .x = 0, .y = 0, .z = 0}, HalfExtents<double>{1, 1, 1});
+    EXPECT_EQ(id.axes[0], (V{1, 0, 0}));
+    EXPECT_EQ(id.axes[1], (V{0, 1, 0}));
+    EXPECT_EQ(id.axes[2], (V{0, 0, 1}));
+    const double h = std::sqrt(0.5);
+    EXPECT_TRUE(validate(oriented_box(origin, Quaternion<double>{.w = h, .x = h, .y = 0, .z = 0}, HalfExtents<double>{1, 1, 1})).ok());
+    EXPECT_THROW(rotation(Quaternion<double>{0, 0, 0, 0}), std::invalid_argument);
+    RigidTransform<double> bad{{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 1, 1}}}};
+    EXPECT_THROW(oriented_box(bad, Size<double>{1, 1, 1}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace boxcyl
