@@ -134,6 +134,27 @@ TEST(PeerConventions, Trimesh) {
     EXPECT_FALSE(cylinder_answers_as_r02_len2(cylinder(t, 0.2, HalfHeight<double>{2}), 2));
 }
 
+// A trimesh box (extents = full lengths) under a transform with scale: the parallelepiped spanned by
+// the transform's columns. The unit cube under diag(3, 4, 5)·R (R the 3-4-5 rotation) is the box of
+// half sizes 1.5, 2, 2.5 in R's frame; reading the size as half extents doubles it.
+TEST(Pose, ScaledTransformGivesTheParallelepiped) {
+    const AffineTransform<double> t{{{{0.6 * 3, -0.8 * 4, 0, origin[0]}, {0.8 * 3, 0.6 * 4, 0, origin[1]},
+                                      {0, 0, 5, origin[2]}, {0, 0, 0, 1}}}};
+    const Parallelepiped<double> p = parallelepiped(t, Size<double>{1, 1, 1});
+    EXPECT_EQ(p.center, origin);
+    EXPECT_EQ(p.axes[2], (V{0, 0, 5}));
+    EXPECT_EQ(p.extents, (V{0.5, 0.5, 0.5}));
+    ASSERT_TRUE(validate(p).ok());
+    EXPECT_TRUE(intersects(p, probe_point(local(R, 1.4, 0, 0))));
+    EXPECT_FALSE(intersects(p, probe_point(local(R, 1.6, 0, 0))));
+    EXPECT_TRUE(intersects(parallelepiped(t, HalfExtents<double>{1, 1, 1}), probe_point(local(R, 1.6, 0, 0))));
+    EXPECT_FALSE(intersects(p, probe_point(local(R, 0, 2.1, 0))));
+    EXPECT_TRUE(intersects(p, probe_point(local(R, 0, 0, 2.4))));
+    AffineTransform<double> bad = t;
+    bad.m[3][3] = 2;
+    EXPECT_THROW(parallelepiped(bad, Size<double>{1, 1, 1}), std::invalid_argument);
+}
+
 TEST(Pose, FactoriesProduceTheStatedSolid) {
     const OrientedBox<double> b = oriented_box(origin, R, Size<double>{2, 4, 6});
     EXPECT_EQ(b.center, origin);

@@ -188,6 +188,9 @@ bool dispatch(const Parallelepiped<T>& box, const Cylinder<T>& cyl, const QueryO
         if (opt.algorithm == Algorithm::oracle) return oracle::intersects(to_exact(b), to_exact(cast<double>(cyl)));
         return filtered::parallelepiped_detail::exact_answer(b, cast<double>(cyl));
     }
+#else
+    if (!rounded_arithmetic || opt.algorithm == Algorithm::oracle)
+        throw std::invalid_argument("boxcyl: exact arithmetic and the oracle need the exact backend (boxcyl::exact)");
 #endif
     const OrientedBox<T> oriented{box.center, box.axes, box.extents};
     if (!is_valid(oriented))

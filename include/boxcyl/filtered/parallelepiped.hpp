@@ -41,6 +41,7 @@
 #include <optional>   // undecided
 #include <stdexcept>  // std::logic_error (BOXCYL_CHECK_FILTER)
 #include <string>     // its message
+#include <type_traits>  // std::is_same_v
 
 #include "boxcyl/algo/convex_hull.hpp"
 #include "boxcyl/algo/linear_inequalities.hpp"
@@ -82,12 +83,22 @@ N norm2(const Vec3<N>& v) {
 }
 
 // x·2^k as an enclosure: a point when exact, else the neighbours of the rounded value.
+// (N = double: the plain value, for the preselection below.)
 template <class N>
 N scaled(double x, int k) {
     const double y = std::ldexp(x, k);
-    if (std::ldexp(y, -k) == x) return N(y);
-    return N::range(boxcyl::detail::next_down(y), boxcyl::detail::next_up(y));
+    if constexpr (std::is_same_v<N, double>) {
+        return y;
+    } else {
+        if (std::ldexp(y, -k) == x) return N(y);
+        return N::range(boxcyl::detail::next_down(y), boxcyl::detail::next_up(y));
+    }
 }
+// The square root of each number type (an unqualified sqrt would find boxcyl's enclosure overloads
+// only, and turn a double into an Interval).
+inline double root(double x) { return std::sqrt(x); }
+inline Bounded root(const Bounded& x) { return sqrt(x); }
+inline Interval root(const Interval& x) { return sqrt(x); }
 
 // An enclosure of the exact unit axis D/|D| (the axis first scaled by a power of two to a largest
 // component in [1, 2), so D·D neither overflows nor vanishes; a single non-zero component gives ±1).
@@ -106,7 +117,7 @@ Vec3<N> unit_axis(const Vec3<double>& a) {
     }
     const int k = -std::ilogb(m);
     const Vec3<N> s{scaled<N>(a[0], k), scaled<N>(a[1], k), scaled<N>(a[2], k)};
-    const N len = sqrt(norm2(s));
+    const N len = root(norm2(s));
     return {s[0] / len, s[1] / len, s[2] / len};
 }
 
@@ -179,7 +190,7 @@ bool cylinder_point_inside(const Problem<N>& p, double t, double rho, const Vec3
         if (rho != 0) {
             const Vec3<N> mn = enclose<N>(m);
             const Vec3<N> w = mn - dot(mn, p.u) * p.u;
-            const N len = sqrt(norm2(w));
+            const N len = root(norm2(w));
             if (!(N(0) < len)) return false;
             y = y + (N(rho) / len) * w;
         }
@@ -215,7 +226,7 @@ std::optional<bool> frame_stage(const Problem<N>& p, const Cylinder<double>& c) 
     Vec3<N> a[3];
     CanonicalQuery<N> q;
     for (int i = 0; i < 3; ++i) {
-        const N len = sqrt(norm2(p.w[i]));
+        const N len = root(norm2(p.w[i]));
         if (!(len.lo() > 0)) return std::nullopt;  // a zero (or tiny) axis: a flat solid
         a[i] = {p.w[i][0] / len, p.w[i][1] / len, p.w[i][2] / len};
         q.box.extents[i] = p.e[i] * len;
@@ -236,7 +247,7 @@ std::optional<bool> frame_stage(const Problem<N>& p, const Cylinder<double>& c) 
         q.cylinder.center[i] = dot(a[i], p.delta);
         v[i] = dot(a[i], p.u);
     }
-    const N vlen = sqrt(norm2(v));
+    const N vlen = root(norm2(v));
     q.cylinder.direction = {v[0] / vlen, v[1] / vlen, v[2] / vlen};
     q.cylinder.radius = p.r;
     q.cylinder.half_height = p.h;
@@ -296,7 +307,11 @@ struct Candidates {
     void cyl(double t, double rho, const Vec3<double>& m) {
         if (n_cyl < max) cyl_points[n_cyl++] = {t, rho, m};
     }
-    void clear() { n_dirs = n_box = n_cyl = 0; }
+    void append(const Candidates& o) {
+        for (int i = 0; i < o.n_dirs; ++i) dir(o.dirs[i]);
+        for (int i = 0; i < o.n_box; ++i) box(o.box_points[i]);
+        for (int i = 0; i < o.n_cyl; ++i) cyl(o.cyl_points[i].t, o.cyl_points[i].rho, o.cyl_points[i].m);
+    }
 };
 
 // The approximate problem in double for the search.
@@ -423,14 +438,19 @@ struct Phase {
 };
 inline constexpr Phase search_phases[] = {{0.9, 64}, {0.99, 64}, {0.9999, 64}};
 
+// The certificates, each tried on enclosures only if the same test passes in plain double on the
+// problem `pre` (the double computation decides nothing: it only skips candidates whose computed
+// margins already say no, and costs a fraction of an enclosure's evaluation).
 template <class N>
-std::optional<bool> certify(const Problem<N>& p, const Candidates& cs) {
+std::optional<bool> certify(const Problem<N>& p, const Problem<double>& pre, const Candidates& cs) {
     for (int i = 0; i < cs.n_dirs; ++i)
-        if (separates(p, cs.dirs[i])) return false;
+        if (separates(pre, cs.dirs[i]) && separates(p, cs.dirs[i])) return false;
     for (int i = 0; i < cs.n_box; ++i)
-        if (box_point_inside(p, cs.box_points[i])) return true;
-    for (int i = 0; i < cs.n_cyl; ++i)
-        if (cylinder_point_inside(p, cs.cyl_points[i].t, cs.cyl_points[i].rho, cs.cyl_points[i].m)) return true;
+        if (box_point_inside(pre, cs.box_points[i]) && box_point_inside(p, cs.box_points[i])) return true;
+    for (int i = 0; i < cs.n_cyl; ++i) {
+        const Candidates::CylPoint& q = cs.cyl_points[i];
+        if (cylinder_point_inside(pre, q.t, q.rho, q.m) && cylinder_point_inside(p, q.t, q.rho, q.m)) return true;
+    }
     return std::nullopt;
 }
 
@@ -474,16 +494,21 @@ inline std::optional<bool> filter(Parallelepiped<double> b, Cylinder<double> c) 
     const Approx a = approx(b, c);
     Candidates cs;
     fixed_candidates(a, c, cs);
+    const Problem<double> pd = problem<double>(b, c);
     const Problem<Bounded> pb = problem<Bounded>(b, c);
-    if (const std::optional<bool> r = certify(pb, cs)) return r;
+    if (const std::optional<bool> r = certify(pb, pd, cs)) return r;
     if (const std::optional<bool> r = frame_stage(pb, c)) return r;
-    Candidates searched;
-    for (const auto& [shrink, steps] : search_phases) searched_candidates(a, shrink, searched, steps);
-    if (const std::optional<bool> r = certify(pb, searched)) return r;
+    Candidates searched;  // all phases' candidates, kept for the Interval pass
+    for (const auto& [shrink, steps] : search_phases) {
+        Candidates phase;
+        searched_candidates(a, shrink, phase, steps);
+        if (const std::optional<bool> r = certify(pb, pd, phase)) return r;
+        searched.append(phase);
+    }
     const Problem<Interval> pi = problem<Interval>(b, c);
     if (const std::optional<bool> r = frame_stage(pi, c)) return r;
-    if (const std::optional<bool> r = certify(pi, cs)) return r;
-    return certify(pi, searched);
+    if (const std::optional<bool> r = certify(pi, pd, cs)) return r;
+    return certify(pi, pd, searched);
 }
 
 }  // namespace parallelepiped_detail

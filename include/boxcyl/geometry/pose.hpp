@@ -8,6 +8,7 @@
 //   oriented_box(RigidTransform<double>{...}, Size<double>{...})
 //   cylinder(center, rotation, radius, Height<double>{2})                 // along the local z axis
 //   cylinder(center, rotation, radius, HalfHeight<double>{1}, LocalAxis::y)  // Bullet's and Jolt's default
+//   parallelepiped(AffineTransform<double>{...}, Size<double>{...})  // a box under scale or shear
 //
 // The solid each factory produces, exactly: the OrientedBox {center, axes = the columns of R as
 // stored (rounded values taken as given), extents}, with extents = HalfExtents, or Size·0.5 (exact for
@@ -26,6 +27,7 @@
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
 #include "boxcyl/geometry/vec3.hpp"
 
 namespace boxcyl {
@@ -72,6 +74,14 @@ struct Quaternion {
 // (0, 0, 0, 1). trimesh's transforms and Eigen's Isometry3d::matrix() are this matrix.
 template <class T>
 struct RigidTransform {
+    std::array<std::array<T, 4>, 4> m;
+};
+
+// A 4×4 homogeneous affine transform, m[row][column]: any linear part (scale, shear, reflection) in
+// the top-left 3×3 block, the translation in column 3, bottom row (0, 0, 0, 1). A box under it is a
+// parallelepiped (below), exactly.
+template <class T>
+struct AffineTransform {
     std::array<std::array<T, 4>, 4> m;
 };
 
@@ -123,6 +133,23 @@ OrientedBox<T> oriented_box(const Vec3<T>& center, const Quaternion<T>& q, const
 template <class T, class Sizes>
 OrientedBox<T> oriented_box(const RigidTransform<T>& pose, const Sizes& sizes) {
     return oriented_box(translation(pose), rotation(pose), sizes);
+}
+
+// ---- Parallelepipeds: a box of the given size under an affine transform ----
+// The Parallelepiped {center = the translation, axes = the columns of the linear part as stored,
+// extents = HalfExtents or Size·0.5}: exactly the image of the box under the transform (e.g. a
+// trimesh box with a scaled transform, a block of a rotated, scaled block model).
+template <class T>
+Parallelepiped<T> parallelepiped(const AffineTransform<T>& t, const HalfExtents<T>& h) {
+    if (!(t.m[3][0] == T(0) && t.m[3][1] == T(0) && t.m[3][2] == T(0) && t.m[3][3] == T(1)))
+        throw std::invalid_argument("boxcyl: transform: the bottom row is not (0, 0, 0, 1)");
+    auto column = [&t](int j) { return Vec3<T>{t.m[0][j], t.m[1][j], t.m[2][j]}; };
+    return {column(3), {column(0), column(1), column(2)}, {h.x, h.y, h.z}};
+}
+template <class T>
+Parallelepiped<T> parallelepiped(const AffineTransform<T>& t, const Size<T>& s) {
+    const Vec3<T> h = half_of(s);
+    return parallelepiped(t, HalfExtents<T>{h[0], h[1], h[2]});
 }
 
 // ---- Cylinders (centred at the pose's origin, along its local `along` axis) ----
