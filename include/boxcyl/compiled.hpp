@@ -25,6 +25,8 @@
 #include "boxcyl/batch/types.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
+#include "boxcyl/geometry/pose.hpp"
 #include "boxcyl/geometry/validate.hpp"
 #include "boxcyl/grid_types.hpp"
 #include "boxcyl/options.hpp"
@@ -40,6 +42,8 @@ bool intersects(const CanonicalBox<double>& box, const Cylinder<double>& cyl, co
 bool intersects(const AlignedBox<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
 bool intersects(const OrientedBox<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
 bool intersects(const CanonicalBox<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
+bool intersects(const Parallelepiped<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt = {});
+bool intersects(const Parallelepiped<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
 
 // ---- The grid query (boxcyl/grid.hpp). ----
 // for_each_cell's compiled part: f(context, i, j, k) for every cell.
@@ -83,6 +87,15 @@ Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<double
 Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<float>> boxes,
                  std::span<std::uint64_t> mask, const Options& opt = {});
 Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<float>> boxes, std::span<bool> out,
+                 const Options& opt = {});
+// Parallelepipeds: the scalar default query per box over the threads (no SIMD filter).
+Stats intersects(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes,
+                 std::span<std::uint64_t> mask, const Options& opt = {});
+Stats intersects(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes, std::span<bool> out,
+                 const Options& opt = {});
+Stats intersects(const Cylinder<double>& cyl, std::span<const Parallelepiped<float>> boxes,
+                 std::span<std::uint64_t> mask, const Options& opt = {});
+Stats intersects(const Cylinder<double>& cyl, std::span<const Parallelepiped<float>> boxes, std::span<bool> out,
                  const Options& opt = {});
 
 // A float cylinder is widened to double exactly, like the boxes.

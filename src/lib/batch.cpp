@@ -8,6 +8,7 @@ namespace {
 
 using boxcyl::Cylinder;
 using boxcyl::OrientedBox;
+using boxcyl::Parallelepiped;
 using boxcyl::batch::AlignedBoxes;
 using boxcyl::batch::Options;
 using boxcyl::batch::Stats;
@@ -38,6 +39,15 @@ Stats header_oriented(const Cylinder<double>& c, std::span<const OrientedBox<flo
     return boxcyl::batch::intersects(c, b, out, o);
 }
 Stats header_oriented(const Cylinder<double>& c, std::span<const OrientedBox<float>> b, Bools out, const Options& o) {
+    return boxcyl::batch::intersects(c, b, out, o);
+}
+
+template <class T>
+Stats header_parallelepiped(const Cylinder<double>& c, std::span<const Parallelepiped<T>> b, Mask out, const Options& o) {
+    return boxcyl::batch::intersects(c, b, out, o);
+}
+template <class T>
+Stats header_parallelepiped(const Cylinder<double>& c, std::span<const Parallelepiped<T>> b, Bools out, const Options& o) {
     return boxcyl::batch::intersects(c, b, out, o);
 }
 
@@ -72,6 +82,19 @@ Stats intersects(const Cylinder<double>& c, std::span<const OrientedBox<float>> 
 }
 Stats intersects(const Cylinder<double>& c, std::span<const OrientedBox<float>> b, Bools out, const Options& o) {
     return header_oriented(c, b, out, o);
+}
+
+Stats intersects(const Cylinder<double>& c, std::span<const Parallelepiped<double>> b, Mask out, const Options& o) {
+    return header_parallelepiped(c, b, out, o);
+}
+Stats intersects(const Cylinder<double>& c, std::span<const Parallelepiped<double>> b, Bools out, const Options& o) {
+    return header_parallelepiped(c, b, out, o);
+}
+Stats intersects(const Cylinder<double>& c, std::span<const Parallelepiped<float>> b, Mask out, const Options& o) {
+    return header_parallelepiped(c, b, out, o);
+}
+Stats intersects(const Cylinder<double>& c, std::span<const Parallelepiped<float>> b, Bools out, const Options& o) {
+    return header_parallelepiped(c, b, out, o);
 }
 
 }  // namespace boxcyl::batch::compiled

@@ -25,4 +25,11 @@ bool intersects(const CanonicalBox<float>& box, const Cylinder<float>& cyl, cons
     return boxcyl::detail::dispatch(box, cyl, opt);
 }
 
+bool intersects(const Parallelepiped<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt) {
+    return boxcyl::detail::dispatch(box, cyl, opt);
+}
+bool intersects(const Parallelepiped<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt) {
+    return boxcyl::detail::dispatch(box, cyl, opt);
+}
+
 }  // namespace boxcyl::compiled

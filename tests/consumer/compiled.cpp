@@ -87,6 +87,19 @@ void batch() {
     check(out[0] && !out[1] && out[2], "batch with a float cylinder");
 }
 
+// The integer-vertex box spanned by (3,4,0), (-4,3,0), (0,0,5) (extents 1), and a segment along z at
+// x = 7: touching its vertex (7, 1, z) exactly, and one ulp past it.
+void parallelepiped() {
+    const boxcyl::Parallelepiped<double> p{{0, 0, 0}, {{{3, 4, 0}, {-4, 3, 0}, {0, 0, 5}}}, {1, 1, 1}};
+    const boxcyl::Cylinder<double> touching{{7, 1, 0}, {0, 0, 1}, 0, 2};
+    const boxcyl::Cylinder<double> apart{{std::nextafter(7.0, 8.0), 1, 0}, {0, 0, 1}, 0, 2};
+    check(boxcyl::intersects(p, touching) && !boxcyl::intersects(p, apart), "parallelepiped query");
+    const std::vector<boxcyl::Parallelepiped<double>> many{p, p};
+    bool out[2] = {};
+    boxcyl::batch::intersects(touching, std::span<const boxcyl::Parallelepiped<double>>(many), std::span<bool>(out));
+    check(out[0] && out[1], "batch of parallelepipeds");
+}
+
 void grid() {
     const boxcyl::Grid g{{0, 0, 0}, {1, 1, 1}, {4, 4, 4}};
     const boxcyl::Cylinder<double> segment{{1, 2, 2}, {1, 0, 0}, 0, 1};
@@ -108,6 +121,7 @@ int main() {
     batch<double>();
     batch<float>();
     grid();
+    parallelepiped();
     const boxcyl::Cylinder<double> bad{{0, 0, 0}, {0, 0, 1}, -1, 1};
     check(boxcyl::validate(bad).message() == "cylinder.radius: is negative", "validate() named the wrong field");
 #ifdef EXPECTED_VERSION
