@@ -20,10 +20,11 @@
 //   (certain_hit, frame_hit: a witness point solved exactly in real arithmetic, only inequalities
 //   checked on enclosures) and thickened sizes (misses) decide most of the rest (docs/robustness.md §5).
 //   Before stage 2, a thorough witness search tries once more to certify a hit.
-//   Stage 2, the exact fallback (only when stage 1 could not decide): §4 in Q(√d) for aligned and
-//   canonical boxes and for exactly orthonormal frames (signed permutations: the only exactly
-//   orthonormal frames of doubles), §3 on the exact parallelepiped otherwise (exact_paths.hpp). The
-//   oracle is not used: it stays the independent judge of this code.
+//   Stage 2, the exact fallback (only when stage 1 could not decide): §4 evaluated in integers and
+//   Z[√d] after scaling by a power of two (exact/integer_inequalities.hpp: no rationals) for aligned
+//   and canonical boxes and for exactly orthonormal frames (signed permutations: the only exactly
+//   orthonormal frames of doubles), §3 in Q(√d) on the exact parallelepiped otherwise
+//   (exact_paths.hpp). The oracle is not used: it stays the independent judge of this code.
 //
 // Preconditions: validate() holds for the box and the cylinder (asserted in debug builds). Invalid
 // finite input never gets a wrong stage-1 answer (frames further than 2^-10 from orthonormal skip the
@@ -55,6 +56,7 @@
 #include <string>     // the CHECK_FILTER message
 
 #include "boxcyl/algo/linear_inequalities.hpp"
+#include "boxcyl/exact/integer_inequalities.hpp"
 #include "boxcyl/exact_paths.hpp"
 #include "boxcyl/filtered/semi_static.hpp"
 #include "boxcyl/filtered/witness_search.hpp"
@@ -699,17 +701,17 @@ std::optional<bool> filter(const Box& box, const Cylinder<double>& cyl) {
 
 // ---- Stage 2: exact, without the oracle. ----
 
+// §4 in integers (exact/integer_inequalities.hpp) wherever the canonical frame is exact; §3 in Q(√d)
+// on the parallelepiped otherwise.
 inline bool exact_answer(const AlignedBox<double>& b, const Cylinder<double>& c) {
-    return exact::intersects(exact::Method::inequalities, to_exact(b), to_exact(c));
+    return exact::integer::intersects(b, c);
 }
 inline bool exact_answer(const CanonicalBox<double>& b, const Cylinder<double>& c) {
-    return exact::intersects(exact::Method::inequalities, to_exact(b), to_exact(c));
+    return exact::integer::intersects(b, c);
 }
 inline bool exact_answer(const OrientedBox<double>& b, const Cylinder<double>& c) {
-    const OrientedBox<Rational> eb = to_exact(b);
-    const exact::Method m =
-        exact::detail::exactly_orthonormal(eb) ? exact::Method::inequalities : exact::Method::hull;
-    return exact::intersects(m, eb, to_exact(c));
+    if (const std::optional<bool> r = exact::integer::intersects(b, c)) return *r;
+    return exact::intersects(exact::Method::hull, to_exact(b), to_exact(c));
 }
 
 // ---- The case as copy-pasteable C++ (hex floats), for BOXCYL_CHECK_FILTER's message. ----
