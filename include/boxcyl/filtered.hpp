@@ -745,10 +745,11 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
     semi_static::Problem p;
     const bool in_range = semi_static::problem(box, cyl, p);
     std::optional<bool> fast;
-    if (in_range) {
-        fast = semi_static::decide(p, box, cyl);           // stage 0
-        if (!fast) fast = witness_search::decide(p, box, cyl);  // stage 0b
+    if (in_range) fast = semi_static::decide(p, box, cyl);  // stage 0
+    if (!fast) {  // narrow inputs: the exact stage costs less than stages 0b and 1 (exact/integer_inequalities.hpp)
+        if (const std::optional<bool> e = exact::integer::answer_if_narrow(box, cyl)) return {*e, true};
     }
+    if (!fast && in_range) fast = witness_search::decide(p, box, cyl);  // stage 0b
     if (!fast) fast = filter(box, cyl);  // stage 1
     if (!fast && in_range && witness_search::certain_hit(p, box, cyl)) fast = true;
     if (!fast) return {exact_answer(box, cyl), true};

@@ -17,10 +17,12 @@
 // words while the values fit.
 #pragma once
 
+#include <algorithm>  // std::max
 #include <array>     // index triples
 #include <bit>       // std::bit_cast, std::countr_zero
 #include <cstddef>   // std::size_t
 #include <cstdint>   // std::int64_t
+#include <initializer_list>  // narrow()'s lengths
 #include <optional>  // not a signed permutation
 #include <type_traits>  // std::is_same_v
 
@@ -76,6 +78,18 @@ public:
             if (v_[i].m != 0 && (!any || v_[i].e < emin_)) emin_ = v_[i].e, any = true;
         }
     }
+    // Bits from the smallest exponent to the top of the largest magnitude (0 when all are zero): the
+    // integers x_i·2^−emin are below 2^span.
+    int span() const {
+        int top = emin_;
+        for (const Dyadic& v : v_)
+            if (v.m != 0) {
+                const auto mag = static_cast<std::uint64_t>(v.m < 0 ? -v.m : v.m);
+                top = std::max(top, v.e + static_cast<int>(std::bit_width(mag)));
+            }
+        return top - emin_;
+    }
+
     template <class Z>
     Z integer(std::size_t i) const {
         const Dyadic& v = v_[i];
@@ -426,34 +440,88 @@ bool intersects(Problem<Z>& p) {
 namespace boxcyl::exact::integer {
 
 // The integer types tried in turn: FixedInt (stack limbs) while every value fits, else mpz_class.
-// kFixedLimbs·64 bits hold §4's largest values (degree ≈ 20 in the inputs' bit lengths: the
-// sign test of an interior segment distance squares numbers of Z[√d]) for inputs spanning up to
-// about 40 bits — integer and binary-fraction coordinates; wider inputs overflow it and rerun in mpz.
+// §4's largest values (the sign test of an interior segment distance squares numbers of Z[√d]) have
+// about 8·L + 32·M + 64 bits for lengths below 2^L and axis components below 2^M (after the scalings),
+// so kFixedLimbs·64 bits hold them for integer and binary-fraction coordinates with small integer
+// axis directions; wider inputs overflow it and the stage reruns in mpz.
 inline constexpr int kFixedLimbs = 16;
 using Small = FixedInt<kFixedLimbs>;
 
+// The stage in FixedInt: the answer, or nullopt when a value outgrew it (or, for an oriented box, when
+// its frame is not a signed permutation).
 template <class Box>
-auto answer(const Box& b, const Cylinder<double>& c) {
+std::optional<bool> answer_small(const Box& b, const Cylinder<double>& c) {
     FixedOverflow::flag() = false;
     auto small = problem<Small>(b, c);
-    using R = decltype(small);
-    constexpr bool optional = !std::is_same_v<R, Problem<Small>>;
-    if constexpr (optional) {
-        if (!small) return std::optional<bool>();
+    bool r = false;
+    if constexpr (std::is_same_v<decltype(small), Problem<Small>>) {
+        if (FixedOverflow::flag()) return std::nullopt;
+        r = intersects(small);
+    } else {
+        if (!small || FixedOverflow::flag()) return std::nullopt;
+        r = intersects(*small);
     }
-    if (!FixedOverflow::flag()) {
-        const bool r = [&] {
-            if constexpr (optional) return intersects(*small);
-            else return intersects(small);
-        }();
-        if (!FixedOverflow::flag()) {
-            if constexpr (optional) return std::optional<bool>(r);
-            else return r;
-        }
+    if (FixedOverflow::flag()) return std::nullopt;
+    return r;
+}
+
+// FixedInt first, mpz_class when a value outgrew it.
+template <class Box>
+auto answer(const Box& b, const Cylinder<double>& c) {
+    const std::optional<bool> small = answer_small(b, c);
+    if constexpr (std::is_same_v<decltype(problem<mpz_class>(b, c)), Problem<mpz_class>>) {
+        if (small) return *small;
+        Problem<mpz_class> big = problem<mpz_class>(b, c);
+        return intersects(big);
+    } else {
+        if (small) return small;
+        std::optional<Problem<mpz_class>> big = problem<mpz_class>(b, c);
+        if (!big) return std::optional<bool>();
+        return std::optional<bool>(intersects(*big));
     }
-    auto big = problem<mpz_class>(b, c);
-    if constexpr (optional) return std::optional<bool>(intersects(*big));
-    else return intersects(big);
+}
+
+// Narrow inputs — every length an integer below 2^kNarrowLengthBits times one power of two, the axis
+// likewise below 2^kNarrowAxisBits: integer and binary-fraction coordinates, axes along box axes or
+// with small integer directions — keep every value of §4 within FixedInt (its largest, the sign test
+// of an interior segment distance, has about 8·(length bits) + 32·(axis bits) + 64 bits), so the exact
+// stage costs less than the searched certificates and the certified filter; for those inputs the
+// filtered query asks it right after stage 0. An overflow all the same only gives nullopt. The axis is
+// checked first: on random data it is almost never narrow, and the check then costs three doubles.
+inline constexpr int kNarrowLengthBits = 48;
+inline constexpr int kNarrowAxisBits = 16;
+
+inline bool narrow(const Cylinder<double>& c, std::initializer_list<double> lengths) {
+    const Scale<3> axis({c.axis[0], c.axis[1], c.axis[2]});
+    if (axis.span() > kNarrowAxisBits) return false;
+    int emin = 0, top = 0;
+    bool any = false;
+    for (double x : lengths) {
+        const Dyadic v = dyadic(x);
+        if (v.m == 0) continue;
+        const auto mag = static_cast<std::uint64_t>(v.m < 0 ? -v.m : v.m);
+        const int t = v.e + static_cast<int>(std::bit_width(mag));
+        if (!any) emin = v.e, top = t, any = true;
+        emin = std::min(emin, v.e), top = std::max(top, t);
+    }
+    return top - emin <= kNarrowLengthBits;
+}
+inline std::optional<bool> answer_if_narrow(const AlignedBox<double>& b, const Cylinder<double>& c) {
+    if (!narrow(c, {b.min[0], b.min[1], b.min[2], b.max[0], b.max[1], b.max[2], c.center[0], c.center[1], c.center[2],
+                    c.radius, c.height}))
+        return std::nullopt;
+    return answer_small(b, c);
+}
+inline std::optional<bool> answer_if_narrow(const CanonicalBox<double>& b, const Cylinder<double>& c) {
+    if (!narrow(c, {b.extents[0], b.extents[1], b.extents[2], c.center[0], c.center[1], c.center[2], c.radius, c.height}))
+        return std::nullopt;
+    return answer_small(b, c);
+}
+inline std::optional<bool> answer_if_narrow(const OrientedBox<double>& b, const Cylinder<double>& c) {
+    if (!narrow(c, {b.center[0], b.center[1], b.center[2], b.extents[0], b.extents[1], b.extents[2], c.center[0],
+                    c.center[1], c.center[2], c.radius, c.height}))
+        return std::nullopt;
+    return answer_small(b, c);  // nullopt for a frame that is not a signed permutation
 }
 
 // The exact answer for double inputs (each the rational it denotes; the cylinder axis is axis/|axis|

@@ -39,10 +39,10 @@ public:
         limb_[0] = static_cast<mp_limb_t>(mag);
         size_ = v < 0 ? -1 : 1;
     }
-    FixedInt(const FixedInt& o) : size_(o.size_) { std::copy_n(o.limb_, abs_size(), limb_); }
+    FixedInt(const FixedInt& o) : size_(o.size_) { copy_limbs(o); }
     FixedInt& operator=(const FixedInt& o) {
         size_ = o.size_;
-        std::copy_n(o.limb_, abs_size(), limb_);
+        copy_limbs(o);
         return *this;
     }
 
@@ -125,6 +125,16 @@ private:
     __extension__ typedef unsigned __int128 u128;  // GCC/Clang: one 64×64 → 128-bit product
 
     int abs_size() const { return size_ < 0 ? -size_ : size_; }
+    // Only the limbs in use; one or two without a call (most values are small).
+    void copy_limbs(const FixedInt& o) {
+        const int n = abs_size();
+        if (n <= 2) {
+            if (n >= 1) limb_[0] = o.limb_[0];
+            if (n == 2) limb_[1] = o.limb_[1];
+        } else {
+            std::copy_n(o.limb_, n, limb_);
+        }
+    }
     static FixedInt overflowed() {
         FixedOverflow::flag() = true;
         return FixedInt();
