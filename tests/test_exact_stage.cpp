@@ -15,8 +15,10 @@
 #include <optional>  // the stage's "no exact frame"
 #include <random>    // operands
 #include <string>    // labels
+#include <tuple>     // hand-made cases
 
 #include "boxcyl/exact/integer_inequalities.hpp"
+#include "boxcyl/exact/integer_parallelepiped.hpp"
 #include "boxcyl/filtered.hpp"
 #include "boxcyl/number/qfield.hpp"
 #include "support/cases.hpp"
@@ -36,7 +38,7 @@ std::optional<bool> integer_answer(const Case& c) {
 }
 
 struct StageTally {
-    long cases = 0, judged = 0, hits = 0, exact_stage = 0, wrong = 0;
+    long cases = 0, judged = 0, judged_parallelepiped = 0, hits = 0, exact_stage = 0, wrong = 0;
     void check(const Case& c, const std::string& where) {
         ++cases;
         const bool want = oracle_answer(c);
@@ -47,6 +49,14 @@ struct StageTally {
                 ADD_FAILURE() << where << ": integer stage answered " << *got << ", oracle " << want << "\n  "
                               << describe(c);
         }
+        if (c.kind == BoxKind::oriented) {
+            if (const std::optional<bool> got = exact::integer::intersects_parallelepiped(c.oriented, c.cylinder)) {
+                ++judged_parallelepiped;
+                if (*got != want && ++wrong <= 10)
+                    ADD_FAILURE() << where << ": parallelepiped stage answered " << *got << ", oracle " << want << "\n  "
+                                  << describe(c);
+            }
+        }
         const filtered::Result r =
             with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::query(b, cyl); });
         exact_stage += r.exact_used;
@@ -55,8 +65,9 @@ struct StageTally {
                           << describe(c);
     }
     void print(const char* what) const {
-        std::printf("%s: %ld cases, %ld judged in integers, %ld hits, %ld reached the exact stage, %ld wrong\n", what,
-                    cases, judged, hits, exact_stage, wrong);
+        std::printf("%s: %ld cases, %ld judged by §4 in integers, %ld by the parallelepiped test, %ld hits, %ld reached "
+                    "the exact stage, %ld wrong\n",
+                    what, cases, judged, judged_parallelepiped, hits, exact_stage, wrong);
     }
 };
 
@@ -74,6 +85,7 @@ TEST(ExactStage, TouchingCasesAgreeWithOracle) {
     t.print("touching");
     EXPECT_EQ(t.wrong, 0);
     EXPECT_GT(t.judged, n * 3 / 4);  // every box kind but the turned oriented boxes
+    EXPECT_GT(t.judged_parallelepiped, n / 10);
 }
 
 TEST(ExactStage, RandomAndDegenerateAgreeWithOracle) {
@@ -296,6 +308,65 @@ TEST(ExactStage, FixedAndMpzStagesAgree) {
         });
     }
     EXPECT_GT(compared, 2000);
+}
+
+}  // namespace
+}  // namespace boxcyl
+
+namespace boxcyl {
+namespace {
+
+// Frames perturbed by up to 2e-6 (far from orthonormal next to rounding, still valid), and turned
+// boxes with a cap flush with a face, one ulp off, and the parallelepiped test in both integer types.
+TEST(ExactStage, ParallelepipedAgreesWithOracle) {
+    const std::uint64_t seed = 2108;
+    CaseGenerator gen(seed);
+    StageTally t;
+    const long n = scaled(1500);
+    for (long i = 0; i < n; ++i) t.check(perturbed_frame(gen), "perturbed frame seed " + std::to_string(seed) + " case " + std::to_string(i));
+    t.print("perturbed frames");
+    EXPECT_EQ(t.wrong, 0);
+    EXPECT_GT(t.judged_parallelepiped, n / 2);
+
+    // A box turned about z by a rounded 0.3 rad, top face z = 1 exactly; a cap flush with it, then one
+    // ulp above it; and the same box flat (zero height), a disk in its plane and one ulp above.
+    const double cs = std::cos(0.3), sn = std::sin(0.3);
+    const OrientedBox<double> box{{0, 0, 0.5}, {Vec3<double>{cs, sn, 0}, Vec3<double>{-sn, cs, 0}, Vec3<double>{0, 0, 1}},
+                                  {1, 2, 0.5}};
+    const Cylinder<double> flush{{0.25, -0.5, 2}, {0, 0, 1}, 0.5, 2};
+    Cylinder<double> above = flush;
+    above.center[2] = std::nextafter(2.0, 3.0);
+    OrientedBox<double> flat = box;
+    flat.center[2] = 1;
+    flat.extents[2] = 0;
+    const Cylinder<double> disk{{0.5, 0.25, 1}, {0, 1, 1}, 0.5, 0};
+    Cylinder<double> disk_above = disk;
+    disk_above.center[2] = std::nextafter(1.0, 2.0);
+    const Cylinder<double> piercing{{0.5, 0.25, 1}, {1, 2, 3}, 0, 0.5};  // a short segment through the flat box
+    for (const auto& [b, cyl, hit] : {std::tuple{box, flush, true}, std::tuple{box, above, false}, std::tuple{flat, disk, true},
+                                      std::tuple{flat, disk_above, true}, std::tuple{flat, piercing, true}}) {
+        Case c;
+        c.kind = BoxKind::oriented;
+        c.oriented = b;
+        c.cylinder = cyl;
+        ASSERT_EQ(oracle_answer(c), hit) << describe(c);
+        EXPECT_EQ(exact::integer::intersects_parallelepiped(b, cyl), std::optional<bool>(hit)) << describe(c);
+        EXPECT_EQ(filtered::intersects(b, cyl), hit) << describe(c);
+    }
+
+    // FixedInt and mpz_class agree wherever FixedInt did not overflow.
+    TouchingGenerator touching(2109);
+    long compared = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const Case c = touching.next();
+        if (c.kind != BoxKind::oriented) continue;
+        FixedOverflow::flag() = false;
+        const std::optional<bool> small = exact::integer::detail::run_turned<exact::integer::Small>(c.oriented, c.cylinder);
+        if (FixedOverflow::flag()) continue;
+        ++compared;
+        EXPECT_EQ(small, exact::integer::detail::run_turned<mpz_class>(c.oriented, c.cylinder)) << describe(c);
+    }
+    EXPECT_GT(compared, 500);
 }
 
 }  // namespace

@@ -23,7 +23,8 @@
 //   Stage 2, the exact fallback (only when stage 1 could not decide): §4 evaluated in integers and
 //   Z[√d] after scaling by a power of two (exact/integer_inequalities.hpp: no rationals) for aligned
 //   and canonical boxes and for exactly orthonormal frames (signed permutations: the only exactly
-//   orthonormal frames of doubles), §3 in Q(√d) on the exact parallelepiped otherwise
+//   orthonormal frames of doubles), the parallelepiped's clipped edges and face cuts in integers for
+//   other frames (exact/integer_parallelepiped.hpp), §3 in Q(√d) for flat oriented boxes
 //   (exact_paths.hpp). The oracle is not used: it stays the independent judge of this code.
 //
 // Preconditions: validate() holds for the box and the cylinder (asserted in debug builds). Invalid
@@ -57,6 +58,7 @@
 
 #include "boxcyl/algo/linear_inequalities.hpp"
 #include "boxcyl/exact/integer_inequalities.hpp"
+#include "boxcyl/exact/integer_parallelepiped.hpp"
 #include "boxcyl/exact_paths.hpp"
 #include "boxcyl/filtered/semi_static.hpp"
 #include "boxcyl/filtered/witness_search.hpp"
@@ -701,8 +703,9 @@ std::optional<bool> filter(const Box& box, const Cylinder<double>& cyl) {
 
 // ---- Stage 2: exact, without the oracle. ----
 
-// §4 in integers (exact/integer_inequalities.hpp) wherever the canonical frame is exact; §3 in Q(√d)
-// on the parallelepiped otherwise.
+// §4 in integers (exact/integer_inequalities.hpp) wherever the canonical frame is exact, the
+// parallelepiped test in integers (exact/integer_parallelepiped.hpp) for other frames, §3 in Q(√d)
+// for flat oriented boxes.
 inline bool exact_answer(const AlignedBox<double>& b, const Cylinder<double>& c) {
     return exact::integer::intersects(b, c);
 }
@@ -711,6 +714,7 @@ inline bool exact_answer(const CanonicalBox<double>& b, const Cylinder<double>& 
 }
 inline bool exact_answer(const OrientedBox<double>& b, const Cylinder<double>& c) {
     if (const std::optional<bool> r = exact::integer::intersects(b, c)) return *r;
+    if (const std::optional<bool> r = exact::integer::intersects_parallelepiped(b, c)) return *r;
     return exact::intersects(exact::Method::hull, to_exact(b), to_exact(c));
 }
 

@@ -194,6 +194,26 @@ Z abs_of(const Z& x) {
     return sgn(x) < 0 ? Z(-x) : x;
 }
 
+// §4.3.3 with D unnormalised: is the segment [C + y0, C + y1] within distance r (r2 = r²) of the axis
+// line {C + τD}? q = D × y is √d times the turned projection of y, so the branch tests keep their
+// signs, |q|² ≤ r²·d is the point test, and (D·(y0 × δ))² ≤ r²|D × δ|² the interior one. The end
+// points and r² may come scaled by one positive integer (a common denominator): no answer changes.
+template <class Z>
+bool segment_within(const QuadraticRing<Z>& ring, const Vec3<Z>& D, const Vec3<QuadInt<Z>>& y0,
+                    const Vec3<QuadInt<Z>>& y1, const Z& r2) {
+    using Q = QuadInt<Z>;
+    const Vec3<Q> delta = y1 - y0;
+    const Vec3<Q> w = cross(D, delta);
+    const Vec3<Q> q1 = cross(D, y1);
+    const Z r2d = r2 * ring.d();
+    if (!(ring.sign(ring.dot(q1, w)) > 0)) return ring.sign(ring.dot(q1, q1) - Q{r2d, Z(0)}) <= 0;
+    const Vec3<Q> q0 = cross(D, y0);
+    if (!(ring.sign(ring.dot(q0, w)) < 0)) return ring.sign(ring.dot(q0, q0) - Q{r2d, Z(0)}) <= 0;
+    const Q n = dot(D, ring.cross(y0, delta));
+    const Q ww = ring.dot(w, w);
+    return ring.sign(ring.square(n) - r2 * ww) <= 0;
+}
+
 template <class Z>
 class Inequalities {
 public:
@@ -321,22 +341,8 @@ private:
         return sgn(rest) >= 0;
     }
 
-    // §4.3.3 with D unnormalised: q = D × y is √d times the turned projection of y, so the branch tests
-    // keep their signs, |q|² ≤ r²·d is the point test, and (D·(y0 × δ))² ≤ r²|D × δ|² the interior one.
-    // The points, the centre and r² come scaled by one positive integer (the points' common
-    // denominator), which changes no answer.
     bool segment_within(const Vec3<Q>& P0, const Vec3<Q>& P1, const Vec3<Q>& C, const Z& r2) const {
-        const Vec3<Z>& D = p_.D;
-        const Vec3<Q> y0 = P0 - C, y1 = P1 - C, delta = P1 - P0;
-        const Vec3<Q> w = cross(D, delta);
-        const Vec3<Q> q1 = cross(D, y1);
-        const Z r2d = r2 * ring_.d();
-        if (!(ring_.sign(ring_.dot(q1, w)) > 0)) return ring_.sign(ring_.dot(q1, q1) - Q{r2d, Z(0)}) <= 0;
-        const Vec3<Q> q0 = cross(D, y0);
-        if (!(ring_.sign(ring_.dot(q0, w)) < 0)) return ring_.sign(ring_.dot(q0, q0) - Q{r2d, Z(0)}) <= 0;
-        const Q n = dot(D, ring_.cross(y0, delta));
-        const Q ww = ring_.dot(w, w);
-        return ring_.sign(ring_.square(n) - r2 * ww) <= 0;
+        return detail::segment_within(ring_, p_.D, Vec3<Q>(P0 - C), Vec3<Q>(P1 - C), r2);
     }
 
     Q lift(const Z& x) const { return {x, Z(0)}; }
@@ -524,13 +530,6 @@ inline std::optional<bool> answer_if_narrow(const CanonicalBox<double>& b, const
         return std::nullopt;
     return answer_small(b, c);
 }
-inline std::optional<bool> answer_if_narrow(const OrientedBox<double>& b, const Cylinder<double>& c) {
-    if (!narrow(c, {b.center[0], b.center[1], b.center[2], b.extents[0], b.extents[1], b.extents[2], c.center[0],
-                    c.center[1], c.center[2], c.radius, c.height}))
-        return std::nullopt;
-    return answer_small(b, c);  // nullopt for a frame that is not a signed permutation
-}
-
 // The exact answer for double inputs (each the rational it denotes; the cylinder axis is axis/|axis|
 // exactly). An oriented box whose axes are not a signed permutation has no exact canonical frame:
 // nullopt (exact_paths.hpp's §3 answers it).
