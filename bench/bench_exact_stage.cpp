@@ -1,10 +1,10 @@
-// The default query's exact stage alone (stage 2, filtered.hpp's exact_answer), on the queries that
-// reach it, beside the exact stage it replaced (§4, or §3 for turned frames, generically on GMP
-// rationals in Q(√d): exact_paths.hpp) on the same queries (docs/robustness.md, "The exact stage in
-// integers"). Sets:
+// The default query's exact stage alone (filtered.hpp's exact_answer), on the queries that reach
+// exact arithmetic, beside the exact stage it replaced (§4, or §3 for turned frames, generically on
+// GMP rationals in Q(√d): exact_paths.hpp) on the same queries (docs/robustness.md §10). Sets:
 //   touching:       support/touching.hpp's exactly touching queries (seed 0x21e7, 4096 of them), those
-//                   that reach stage 2 — split into integer (aligned, canonical, signed-permutation
-//                   frames: §4 in integers) and turned (frames orthonormal only up to rounding: §3)
+//                   that reach exact arithmetic — split into integer (aligned, canonical,
+//                   signed-permutation frames: §4 in integers) and turned (frames orthonormal only up
+//                   to rounding: the parallelepiped test in integers)
 //   boundary:       one-ulp boundary pairs of the random generator (support/cases.hpp, seed 0xb0c5c702,
 //                   both members), those that reach stage 2, integer frames (wide dyadic ranges: the
 //                   values outgrow FixedInt and the stage runs in mpz_class)
