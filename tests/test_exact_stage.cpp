@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>     // std::ldexp, std::nextafter
+#include <cstddef>   // std::size_t
 #include <cstdint>   // seeds
 #include <limits>    // extreme doubles
 #include <optional>  // the stage's "no exact frame"
@@ -264,7 +265,7 @@ TEST(ExactStage, FixedIntMatchesMpz) {
                 zr <<= k;
             }
         }
-        const bool fits = mpz_sizeinbase(zr.get_mpz_t(), 2) <= 6 * 64;
+        const bool fits = mpz_sizeinbase(zr.get_mpz_t(), 2) <= std::size_t{384};  // 6 limbs
         if (FixedOverflow::flag()) {
             ++overflows;
             // Multiplication may refuse a product of n + m limbs that would have fit in n + m − 1.

@@ -41,6 +41,7 @@ public:
     }
     FixedInt(const FixedInt& o) : size_(o.size_) { copy_limbs(o); }
     FixedInt& operator=(const FixedInt& o) {
+        if (this == &o) return *this;
         size_ = o.size_;
         copy_limbs(o);
         return *this;
