@@ -13,8 +13,8 @@
 // comparing a² with b²d. No division, no gcd, no rounding: the answer is the exact §4 answer, branch by
 // branch the same decisions as §4 in Q(√d) (exact_paths.hpp), which the oracle judges.
 //
-// Z is the integer type: mpz_class always works; number/small_integer.hpp's type stays in machine
-// words while the values fit.
+// Z is the integer type: mpz_class always works; number/fixed_integer.hpp's FixedInt (stack limbs, no
+// allocation) while the values fit, the caller repeating the run in mpz_class after an overflow.
 #pragma once
 
 #include <algorithm>  // std::max

@@ -1,5 +1,5 @@
-// Numbers a + b·√d with integer a, b over an integer type Z (GMP's mpz_class, or the small-first
-// integers of number/small_integer.hpp), for one radicand d ≥ 0 held by a QuadraticRing. Only ring
+// Numbers a + b·√d with integer a, b over an integer type Z (GMP's mpz_class, or the stack
+// integers of number/fixed_integer.hpp), for one radicand d ≥ 0 held by a QuadraticRing. Only ring
 // operations and the sign: no division, no fraction, no gcd — what the exact integer stage
 // (exact/integer_inequalities.hpp) needs after it has scaled its problem to integers.
 #pragma once
