@@ -20,9 +20,11 @@
 //   (certain_hit, frame_hit: a witness point solved exactly in real arithmetic, only inequalities
 //   checked on enclosures) and thickened sizes (misses) decide most of the rest (docs/robustness.md §5).
 //   Before stage 2, a thorough witness search tries once more to certify a hit.
-//   Stage 2, the exact fallback (only when stage 1 could not decide): linear inequalities in Q(√d) for
-//   aligned and canonical boxes and for exactly orthonormal frames (signed permutations: the only exactly
-//   orthonormal frames of doubles), the convex-hull method on the exact parallelepiped otherwise
+//   Stage 2, the exact fallback (only when stage 1 could not decide): linear inequalities evaluated in integers and
+//   Z[√d] after scaling by a power of two (exact/integer_inequalities.hpp: no rationals) for aligned
+//   and canonical boxes and for exactly orthonormal frames (signed permutations: the only exactly
+//   orthonormal frames of doubles), the parallelepiped's clipped edges and face cuts in integers for
+//   other frames (exact/integer_parallelepiped.hpp), the convex-hull method in Q(√d) for flat oriented boxes
 //   (exact_paths.hpp). The oracle is not used: it stays the independent judge of this code.
 //
 // Preconditions: validate() holds for the box and the cylinder (asserted in debug builds). Invalid
@@ -55,6 +57,8 @@
 #include <string>     // the CHECK_FILTER message
 
 #include "boxcyl/algo/linear_inequalities.hpp"
+#include "boxcyl/exact/integer_inequalities.hpp"
+#include "boxcyl/exact/integer_parallelepiped.hpp"
 #include "boxcyl/exact_paths.hpp"
 #include "boxcyl/filtered/semi_static.hpp"
 #include "boxcyl/filtered/witness_search.hpp"
@@ -703,17 +707,19 @@ std::optional<bool> filter(const Box& box, const Cylinder<double>& cyl) {
 
 // ---- Stage 2: exact, without the oracle. ----
 
+// §4 in integers (exact/integer_inequalities.hpp) wherever the canonical frame is exact, the
+// parallelepiped test in integers (exact/integer_parallelepiped.hpp) for other frames, §3 in Q(√d)
+// for flat oriented boxes.
 inline bool exact_answer(const AlignedBox<double>& b, const Cylinder<double>& c) {
-    return exact::intersects(exact::Method::inequalities, to_exact(b), to_exact(c));
+    return exact::integer::intersects(b, c);
 }
 inline bool exact_answer(const CanonicalBox<double>& b, const Cylinder<double>& c) {
-    return exact::intersects(exact::Method::inequalities, to_exact(b), to_exact(c));
+    return exact::integer::intersects(b, c);
 }
 inline bool exact_answer(const OrientedBox<double>& b, const Cylinder<double>& c) {
-    const OrientedBox<Rational> eb = to_exact(b);
-    const exact::Method m =
-        exact::detail::exactly_orthonormal(eb) ? exact::Method::inequalities : exact::Method::hull;
-    return exact::intersects(m, eb, to_exact(c));
+    if (const std::optional<bool> r = exact::integer::intersects(b, c)) return *r;
+    if (const std::optional<bool> r = exact::integer::intersects_parallelepiped(b, c)) return *r;
+    return exact::intersects(exact::Method::hull, to_exact(b), to_exact(c));
 }
 
 // ---- The case as copy-pasteable C++ (hex floats), for BOXCYL_CHECK_FILTER's message. ----
@@ -747,10 +753,11 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
     semi_static::Problem p;
     const bool in_range = semi_static::problem(box, cyl, p);
     std::optional<bool> fast;
-    if (in_range) {
-        fast = semi_static::decide(p, box, cyl);           // stage 0
-        if (!fast) fast = witness_search::decide(p, box, cyl);  // stage 0b
+    if (in_range) fast = semi_static::decide(p, box, cyl);  // stage 0
+    if (!fast) {  // narrow inputs: the exact stage costs less than stages 0b and 1 (exact/integer_inequalities.hpp)
+        if (const std::optional<bool> e = exact::integer::answer_if_narrow(box, cyl)) return {*e, true};
     }
+    if (!fast && in_range) fast = witness_search::decide(p, box, cyl);  // stage 0b
     if (!fast) fast = filter(box, cyl);  // stage 1
     if (!fast && in_range && witness_search::certain_hit(p, box, cyl)) fast = true;
     if (!fast) return {exact_answer(box, cyl), true};

@@ -1,0 +1,139 @@
+// The default query's exact stage alone (filtered.hpp's exact_answer), on the queries that reach
+// exact arithmetic, beside the exact stage it replaced (§4, or §3 for turned frames, generically on
+// GMP rationals in Q(√d): exact_paths.hpp) on the same queries (docs/robustness.md §10). Sets:
+//   touching:       support/touching.hpp's exactly touching queries (seed 0x21e7, 4096 of them), those
+//                   that reach exact arithmetic — split into integer (aligned, canonical,
+//                   signed-permutation frames: §4 in integers) and turned (frames orthonormal only up
+//                   to rounding: the parallelepiped test in integers)
+//   boundary:       one-ulp boundary pairs of the random generator (support/cases.hpp, seed 0xb0c5c702,
+//                   both members), those that reach stage 2, integer frames (wide dyadic ranges: the
+//                   values outgrow FixedInt and the stage runs in mpz_class)
+// and, for the ratio the goals are stated in, the default query and plain double §4
+// ({Algorithm::inequalities, Arithmetic::float64}) on the whole touching set.
+// Counter ns_per_query: CPU time per query (Google Benchmark prints it in seconds: "2.1us" is 2.1 µs).
+// Run: bench_exact_stage --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <cstdint>  // seeds
+#include <vector>   // the sets
+
+#include "boxcyl/query.hpp"
+#include "support/cases.hpp"
+#include "support/touching.hpp"
+
+namespace {
+
+using namespace boxcyl;
+using boxcyl::testing::BoxKind;
+using boxcyl::testing::Case;
+using boxcyl::testing::with_box;
+
+bool reaches_exact_stage(const Case& c) {
+    return with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::query(b, cyl).exact_used; });
+}
+bool integer_frame(const Case& c) {
+    return c.kind != BoxKind::oriented || exact::integer::intersects(c.oriented, c.cylinder).has_value();
+}
+
+struct Sets {
+    std::vector<Case> touching_all, touching_integer, touching_turned, boundary_integer;
+};
+
+const Sets& sets() {
+    static const Sets s = [] {
+        Sets r;
+        boxcyl::testing::TouchingGenerator gen(0x21e7);
+        for (int i = 0; i < 4096; ++i) {
+            const Case c = gen.next();
+            r.touching_all.push_back(c);
+            if (!reaches_exact_stage(c)) continue;
+            (integer_frame(c) ? r.touching_integer : r.touching_turned).push_back(c);
+        }
+        boxcyl::testing::CaseGenerator bgen(0xb0c5c702);
+        for (int found = 0; found < 300;) {
+            Case a, b;
+            boxcyl::testing::Parameter which{};
+            if (!boxcyl::testing::boundary_pair(bgen, a, b, which)) continue;
+            ++found;
+            for (const Case& c : {a, b})
+                if (integer_frame(c) && reaches_exact_stage(c)) r.boundary_integer.push_back(c);
+        }
+        return r;
+    }();
+    return s;
+}
+
+enum class Set { touching_integer, touching_turned, boundary_integer, touching_all };
+const std::vector<Case>& set(Set which) {
+    switch (which) {
+        case Set::touching_integer: return sets().touching_integer;
+        case Set::touching_turned: return sets().touching_turned;
+        case Set::boundary_integer: return sets().boundary_integer;
+        case Set::touching_all: break;
+    }
+    return sets().touching_all;
+}
+
+void counters(benchmark::State& state, std::size_t per_pass) {
+    const double n = static_cast<double>(state.iterations()) * static_cast<double>(per_pass);
+    state.counters["ns_per_query"] = benchmark::Counter(n * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["queries"] = static_cast<double>(per_pass);
+}
+
+// The exact stage as it is now.
+void exact_stage(benchmark::State& state, Set which) {
+    const std::vector<Case>& cases = set(which);
+    for (auto _ : state) {
+        long hits = 0;
+        for (const Case& c : cases)
+            hits += with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::detail::exact_answer(b, cyl); });
+        benchmark::DoNotOptimize(hits);
+    }
+    counters(state, cases.size());
+}
+
+// The exact stage it replaced: §4 in Q(√d) where the canonical frame is exact, §3 in Q(√d) otherwise.
+template <class Box>
+bool rational_stage(const Box& b, const Cylinder<double>& c) {
+    if constexpr (std::is_same_v<Box, OrientedBox<double>>) {
+        const OrientedBox<Rational> eb = to_exact(b);
+        const exact::Method m = exact::detail::exactly_orthonormal(eb) ? exact::Method::inequalities : exact::Method::hull;
+        return exact::intersects(m, eb, to_exact(c));
+    } else {
+        return exact::intersects(exact::Method::inequalities, to_exact(b), to_exact(c));
+    }
+}
+void rational_exact_stage(benchmark::State& state, Set which) {
+    const std::vector<Case>& cases = set(which);
+    for (auto _ : state) {
+        long hits = 0;
+        for (const Case& c : cases)
+            hits += with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return rational_stage(b, cyl); });
+        benchmark::DoNotOptimize(hits);
+    }
+    counters(state, cases.size());
+}
+
+void query(benchmark::State& state, QueryOptions opt) {
+    const std::vector<Case>& cases = set(Set::touching_all);
+    for (auto _ : state) {
+        long hits = 0;
+        for (const Case& c : cases)
+            hits += with_box(c, [&opt](const auto& b, const Cylinder<double>& cyl) { return intersects(b, cyl, opt); });
+        benchmark::DoNotOptimize(hits);
+    }
+    counters(state, cases.size());
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(exact_stage, touching_integer, Set::touching_integer);
+BENCHMARK_CAPTURE(rational_exact_stage, touching_integer, Set::touching_integer);
+BENCHMARK_CAPTURE(exact_stage, touching_turned, Set::touching_turned);
+BENCHMARK_CAPTURE(rational_exact_stage, touching_turned, Set::touching_turned);
+BENCHMARK_CAPTURE(exact_stage, boundary_integer, Set::boundary_integer);
+BENCHMARK_CAPTURE(rational_exact_stage, boundary_integer, Set::boundary_integer);
+BENCHMARK_CAPTURE(query, touching_default, QueryOptions{});
+BENCHMARK_CAPTURE(query, touching_float64, QueryOptions{Algorithm::inequalities, Arithmetic::float64});
+
+BENCHMARK_MAIN();

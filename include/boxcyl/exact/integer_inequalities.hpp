@@ -1,0 +1,540 @@
+// The default query's exact stage for a canonical problem (aligned boxes, canonical boxes, oriented
+// boxes whose axes are a signed permutation): §4 (linear inequalities) evaluated in integers, with no
+// rational number anywhere (docs/robustness.md, "The exact stage in integers").
+//
+// Why integers suffice. Every finite double is m·2^e with an integer m, so after multiplying every
+// length by one power of two (2^−emin, and 2 more so that (min + max)/2 and h/2 stay integral) the box
+// extents E, the centre offset C, the radius R and the half-height H are integers; the axis direction
+// D is scaled on its own (only its direction matters). Both scalings are exact and change no answer.
+// The unit axis is u = D/√d with d = D·D, so every quantity of §4 is (element of Z[√d]) / (positive
+// integer): a projection t = u·y is T/√d with T = D·y; a point where a box edge along x_k crosses a
+// slab plane t = ±H has x_k = (integer ± H√d)/D_k. Each sign test of §4 is multiplied through by those
+// positive denominators (√d, D_k, d) and becomes the sign of a + b√d with integers a, b, decided by
+// comparing a² with b²d. No division, no gcd, no rounding: the answer is the exact §4 answer, branch by
+// branch the same decisions as §4 in Q(√d) (exact_paths.hpp), which the oracle judges.
+//
+// Z is the integer type: mpz_class always works; number/fixed_integer.hpp's FixedInt (stack limbs, no
+// allocation) while the values fit, the caller repeating the run in mpz_class after an overflow.
+#pragma once
+
+#include <algorithm>  // std::max
+#include <array>     // index triples
+#include <bit>       // std::bit_cast, std::countr_zero
+#include <cstddef>   // std::size_t
+#include <cstdint>   // std::int64_t
+#include <initializer_list>  // narrow()'s lengths
+#include <optional>  // not a signed permutation
+#include <type_traits>  // std::is_same_v
+
+#include "boxcyl/geometry/box.hpp"
+#include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/vec3.hpp"
+#include "boxcyl/number/fixed_integer.hpp"
+#include "boxcyl/number/quadratic_integer.hpp"
+#include "boxcyl/number/rational.hpp"  // mpz_class (gmpxx)
+
+namespace boxcyl::exact::integer {
+
+// The canonical problem in integers: the box |x_i| ≤ E_i, the cylinder with centre C, axis direction
+// D (any length, not zero), radius R and half-height H — all lengths in one common unit.
+template <class Z>
+struct Problem {
+    Vec3<Z> E, C, D;
+    Z R, H;
+};
+
+// ---- Doubles as integers times a common power of two ----
+
+// x = m·2^e with m odd (or x = 0, m = 0): exact for every finite double, subnormals included; read off
+// the IEEE 754 binary64 fields.
+struct Dyadic {
+    std::int64_t m = 0;
+    int e = 0;
+};
+inline Dyadic dyadic(double x) {
+    const auto bits = std::bit_cast<std::uint64_t>(x);
+    const int biased = static_cast<int>(bits >> 52 & 0x7ff);
+    std::uint64_t mag = bits & ((std::uint64_t{1} << 52) - 1);
+    int e = -1074;  // subnormals: mag·2^−1074
+    if (biased != 0) {
+        mag |= std::uint64_t{1} << 52;
+        e = biased - 1075;
+    }
+    if (mag == 0) return {};
+    const int tz = std::countr_zero(mag);
+    mag >>= tz;
+    const auto m = static_cast<std::int64_t>(mag);  // < 2^53
+    return {bits >> 63 ? -m : m, e + tz};
+}
+
+// Doubles x_i as the integers x_i·2^−emin, emin the smallest exponent among the non-zero ones.
+template <std::size_t K>
+class Scale {
+public:
+    explicit Scale(const std::array<double, K>& xs) {
+        bool any = false;
+        for (std::size_t i = 0; i < K; ++i) {
+            v_[i] = dyadic(xs[i]);
+            if (v_[i].m != 0 && (!any || v_[i].e < emin_)) emin_ = v_[i].e, any = true;
+        }
+    }
+    // Bits from the smallest exponent to the top of the largest magnitude (0 when all are zero): the
+    // integers x_i·2^−emin are below 2^span.
+    int span() const {
+        int top = emin_;
+        for (const Dyadic& v : v_)
+            if (v.m != 0) {
+                const auto mag = static_cast<std::uint64_t>(v.m < 0 ? -v.m : v.m);
+                top = std::max(top, v.e + static_cast<int>(std::bit_width(mag)));
+            }
+        return top - emin_;
+    }
+
+    template <class Z>
+    Z integer(std::size_t i) const {
+        const Dyadic& v = v_[i];
+        Z z(v.m);
+        if (v.m != 0 && v.e > emin_) z <<= static_cast<unsigned>(v.e - emin_);
+        return z;
+    }
+    template <class Z>
+    Vec3<Z> integers(std::size_t first) const {
+        return {integer<Z>(first), integer<Z>(first + 1), integer<Z>(first + 2)};
+    }
+
+private:
+    std::array<Dyadic, K> v_;
+    int emin_ = 0;
+};
+
+// The direction D as integers with one common power of two removed (the smallest numbers for it).
+template <class Z>
+Vec3<Z> integer_direction(const Vec3<double>& axis) {
+    return Scale<3>({axis[0], axis[1], axis[2]}).integers<Z>(0);
+}
+
+template <class Z>
+Problem<Z> problem(const AlignedBox<double>& b, const Cylinder<double>& c) {
+    const Scale<11> s({b.min[0], b.min[1], b.min[2], b.max[0], b.max[1], b.max[2], c.center[0], c.center[1],
+                       c.center[2], c.radius, c.height});
+    Problem<Z> p;
+    // Lengths ×2: E = max − min, C = 2·centre − (min + max), R = 2r, H = h.
+    for (std::size_t i = 0; i < 3; ++i) {
+        const Z lo = s.template integer<Z>(i), hi = s.template integer<Z>(3 + i);
+        p.E[i] = hi - lo;
+        p.C[i] = Z(2) * s.template integer<Z>(6 + i) - lo - hi;
+    }
+    p.R = Z(2) * s.template integer<Z>(9);
+    p.H = s.template integer<Z>(10);
+    p.D = integer_direction<Z>(c.axis);
+    return p;
+}
+
+template <class Z>
+Problem<Z> problem(const CanonicalBox<double>& b, const Cylinder<double>& c) {
+    const Scale<8> s({b.extents[0], b.extents[1], b.extents[2], c.center[0], c.center[1], c.center[2], c.radius,
+                      c.height});
+    Problem<Z> p;
+    for (std::size_t i = 0; i < 3; ++i) {
+        p.E[i] = Z(2) * s.template integer<Z>(i);
+        p.C[i] = Z(2) * s.template integer<Z>(3 + i);
+    }
+    p.R = Z(2) * s.template integer<Z>(6);
+    p.H = s.template integer<Z>(7);
+    p.D = integer_direction<Z>(c.axis);
+    return p;
+}
+
+// A signed permutation frame, axes[i] = s_i·e_{p_i}: the only exactly orthonormal frames of doubles.
+inline bool signed_permutation(const std::array<Vec3<double>, 3>& axes, int perm[3], int sign[3]) {
+    unsigned used = 0;
+    for (int i = 0; i < 3; ++i) {
+        int nonzero = 0;
+        for (int j = 0; j < 3; ++j) {
+            const double a = axes[i][j];
+            if (a == 0) continue;
+            if (a != 1 && a != -1) return false;
+            ++nonzero;
+            perm[i] = j;
+            sign[i] = a > 0 ? 1 : -1;
+        }
+        if (nonzero != 1 || (used >> perm[i] & 1u)) return false;
+        used |= 1u << perm[i];
+    }
+    return true;
+}
+
+// For a signed permutation frame the canonical coordinates are x_i = s_i·(X − K)_{p_i}, exactly.
+template <class Z>
+std::optional<Problem<Z>> problem(const OrientedBox<double>& b, const Cylinder<double>& c) {
+    int perm[3], sign[3];
+    if (!signed_permutation(b.axes, perm, sign)) return std::nullopt;
+    const Scale<11> s({b.center[0], b.center[1], b.center[2], b.extents[0], b.extents[1], b.extents[2],
+                       c.center[0], c.center[1], c.center[2], c.radius, c.height});
+    const Vec3<Z> D = integer_direction<Z>(c.axis);
+    Problem<Z> p;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const auto j = static_cast<std::size_t>(perm[i]);
+        const Z delta = Z(2) * (s.template integer<Z>(6 + j) - s.template integer<Z>(j));
+        p.C[i] = sign[i] > 0 ? delta : Z(-delta);
+        p.D[i] = sign[i] > 0 ? D[j] : Z(-D[j]);
+        p.E[i] = Z(2) * s.template integer<Z>(3 + i);
+    }
+    p.R = Z(2) * s.template integer<Z>(9);
+    p.H = s.template integer<Z>(10);
+    return p;
+}
+
+// ---- §4 in Z[√d] ----
+
+namespace detail {
+
+template <class Z>
+Z abs_of(const Z& x) {
+    return sgn(x) < 0 ? Z(-x) : x;
+}
+
+// §4.3.3 with D unnormalised: is the segment [C + y0, C + y1] within distance r (r2 = r²) of the axis
+// line {C + τD}? q = D × y is √d times the turned projection of y, so the branch tests keep their
+// signs, |q|² ≤ r²·d is the point test, and (D·(y0 × δ))² ≤ r²|D × δ|² the interior one. The end
+// points and r² may come scaled by one positive integer (a common denominator): no answer changes.
+template <class Z>
+bool segment_within(const QuadraticRing<Z>& ring, const Vec3<Z>& D, const Vec3<QuadInt<Z>>& y0,
+                    const Vec3<QuadInt<Z>>& y1, const Z& r2) {
+    using Q = QuadInt<Z>;
+    const Vec3<Q> delta = y1 - y0;
+    const Vec3<Q> w = cross(D, delta);
+    const Vec3<Q> q1 = cross(D, y1);
+    const Z r2d = r2 * ring.d();
+    if (!(ring.sign(ring.dot(q1, w)) > 0)) return ring.sign(ring.dot(q1, q1) - Q{r2d, Z(0)}) <= 0;
+    const Vec3<Q> q0 = cross(D, y0);
+    if (!(ring.sign(ring.dot(q0, w)) < 0)) return ring.sign(ring.dot(q0, q0) - Q{r2d, Z(0)}) <= 0;
+    const Q n = dot(D, ring.cross(y0, delta));
+    const Q ww = ring.dot(w, w);
+    return ring.sign(ring.square(n) - r2 * ww) <= 0;
+}
+
+template <class Z>
+class Inequalities {
+public:
+    using Q = QuadInt<Z>;
+
+    explicit Inequalities(Problem<Z>& p) : p_(p), ring_(dot(p.D, p.D)) {}
+
+    bool run() {
+        Vec3<Z>& C = p_.C;
+        Vec3<Z>& D = p_.D;
+        const Vec3<Z>& E = p_.E;
+        // §1.6 cull: the box is outside the slab iff |u·C| > Σ|u_i|E_i + H, i.e. with
+        // A = |D·C| − Σ|D_i|E_i: A > H√d (A > 0 and A² > H²d).
+        const Z A = Z(abs_of(Z(dot(D, C))) - abs_of(D[0]) * E[0] - abs_of(D[1]) * E[1] - abs_of(D[2]) * E[2]);
+        if (ring_.sign(A, Z(-p_.H)) > 0) return false;
+        // §4.4: reflect into the first octant (the box is symmetric in every coordinate plane).
+        for (int n = 0; n < 3; ++n)
+            if (sgn(D[n]) < 0) {
+                C[n] = -C[n];
+                D[n] = -D[n];
+            }
+        const bool p0 = sgn(D[0]) > 0, p1 = sgn(D[1]) > 0, p2 = sgn(D[2]) > 0;
+        if (p0) {
+            if (p1) {
+                if (p2) return no_zero_components();
+                return one_zero_component({0, 1, 2});
+            }
+            if (p2) return one_zero_component({2, 0, 1});
+            return two_zero_components({0, 1, 2});
+        }
+        if (p1) {
+            if (p2) return one_zero_component({1, 2, 0});
+            return two_zero_components({1, 2, 0});
+        }
+        return two_zero_components({2, 0, 1});  // D ≠ 0: the only component left
+    }
+
+private:
+    // §4.1: D ∥ x_{i0}. The squared distance from (c1, c2) to the rectangle |x1| ≤ e1, |x2| ≤ e2.
+    bool two_zero_components(const std::array<int, 3>& i) const {
+        Z dist2(0);
+        for (int n = 1; n < 3; ++n) {
+            const Z out = Z(abs_of(p_.C[i[n]]) - p_.E[i[n]]);
+            if (sgn(out) > 0) dist2 += out * out;
+        }
+        return dist2 <= p_.R * p_.R;
+    }
+
+    // §4.2.1 / §4.3.1: the axis segment stays in the slabs |x_a| ≤ e_a (a in idx, D_a > 0) for a
+    // common t. u_a·H < lo ⇔ D_a·H − lo·√d < 0; hi < −u_a·H ⇔ D_a·H + hi·√d < 0; the pairwise
+    // comparison lo_a/u_a ≤ hi_b/u_b is D_a·hi_b ≥ D_b·lo_a (√d cancels).
+    template <std::size_t N>
+    bool axis_meets_slabs(const std::array<int, N>& idx) const {
+        const Vec3<Z>& C = p_.C;
+        const Vec3<Z>& D = p_.D;
+        const Vec3<Z>& E = p_.E;
+        for (int a : idx) {
+            const Z lo = Z(-E[a] - C[a]);
+            const Z hi = Z(E[a] - C[a]);
+            const Z DH = D[a] * p_.H;
+            if (ring_.sign(DH, Z(-lo)) < 0 || ring_.sign(DH, hi) < 0) return false;
+            for (int b : idx) {
+                if (b == a) continue;
+                if (D[a] * Z(E[b] - C[b]) < D[b] * lo) return false;
+            }
+        }
+        return true;
+    }
+
+    // Is S²/(d·k²) + rest_neg ≤ R², i.e. S² ≤ d·k²·rest with rest = R² − (the other squared part)?
+    // (a + b√d)² = a² + b²d + 2ab√d.
+    bool square_within(const Q& S, const Z& k, const Z& rest) const {
+        const Z a = Z(S.a * S.a + Z(S.b * S.b) * ring_.d() - Z(ring_.d() * k * k) * rest);
+        const Z b = Z(Z(2) * S.a * S.b);
+        return ring_.sign(a, b) <= 0;
+    }
+
+    // §4.2: D_{i0}, D_{i1} > 0, D_{i2} = 0 (write 0, 1, 2). In the plane of x0, x1: t = T/√d, s = S/√d
+    // with T = D0(x0 − c0) + D1(x1 − c1), S = D1(x0 − c0) − D0(x1 − c1), so D0·S = D1·T − d(x1 − c1)
+    // and D1·S = d(x0 − c0) − D0·T. Where §4 clips a vertex to the slab plane t = ±H the point has
+    // T = ±H√d and one known coordinate: S = (integer + integer·√d)/k with k = D0 or D1.
+    bool one_zero_component(const std::array<int, 3>& i) const {
+        const Z& c0 = p_.C[i[0]];
+        const Z& c1 = p_.C[i[1]];
+        const Z& d0 = p_.D[i[0]];
+        const Z& d1 = p_.D[i[1]];
+        const Z& e0 = p_.E[i[0]];
+        const Z& e1 = p_.E[i[1]];
+        const Z& e2 = p_.E[i[2]];
+        const Z& H = p_.H;
+        const Z& d = ring_.d();
+        const Z abs_c2 = abs_of(p_.C[i[2]]);
+        if (!(e2 < abs_c2) && axis_meets_slabs(std::array<int, 2>{i[0], i[1]})) return true;  // §4.2.1
+
+        const Z me0_c0 = Z(-e0 - c0), e0_c0 = Z(e0 - c0), e1_c1 = Z(e1 - c1), me1_c1 = Z(-e1 - c1);
+        Q s_min, s_max;
+        Z k_min(1), k_max(1);
+        const Z t_hat = Z(d0 * me0_c0 + d1 * e1_c1);  // vertex (−e0, +e1)
+        if (ring_.sign(t_hat, H) < 0) {               // t̂ < −H: on x1 = e1 where t = −H
+            s_min = {Z(-d * e1_c1), Z(-d1 * H)};
+            k_min = d0;
+        } else if (ring_.sign(t_hat, Z(-H)) > 0) {    // t̂ > H: on x0 = −e0 where t = H
+            s_min = {Z(d * me0_c0), Z(-d0 * H)};
+            k_min = d1;
+        } else {
+            s_min = {Z(d1 * me0_c0 - d0 * e1_c1), Z(0)};
+        }
+        const Z t_bar = Z(d0 * e0_c0 + d1 * me1_c1);  // vertex (+e0, −e1)
+        if (ring_.sign(t_bar, H) < 0) {               // t̄ < −H: on x0 = e0 where t = −H
+            s_max = {Z(d * e0_c0), Z(d0 * H)};
+            k_max = d1;
+        } else if (ring_.sign(t_bar, Z(-H)) > 0) {    // t̄ > H: on x1 = −e1 where t = H
+            s_max = {Z(-d * me1_c1), Z(d1 * H)};
+            k_max = d0;
+        } else {
+            s_max = {Z(d1 * e0_c0 - d0 * me1_c1), Z(0)};
+        }
+        Z rest = p_.R * p_.R;
+        if (e2 < abs_c2) {
+            const Z out = Z(abs_c2 - e2);
+            rest -= out * out;
+        }
+        if (ring_.sign(s_min) > 0) return square_within(s_min, k_min, rest);
+        if (ring_.sign(s_max) < 0) return square_within(s_max, k_max, rest);
+        return sgn(rest) >= 0;
+    }
+
+    bool segment_within(const Vec3<Q>& P0, const Vec3<Q>& P1, const Vec3<Q>& C, const Z& r2) const {
+        return detail::segment_within(ring_, p_.D, Vec3<Q>(P0 - C), Vec3<Q>(P1 - C), r2);
+    }
+
+    Q lift(const Z& x) const { return {x, Z(0)}; }
+    Vec3<Q> vertex_scaled(int v, const Z& k) const {
+        Vec3<Q> p;
+        for (int n = 0; n < 3; ++n) p[n] = lift((v >> n & 1) ? Z(k * p_.E[n]) : Z(-k * p_.E[n]));
+        return p;
+    }
+    Vec3<Q> center_scaled(const Z& k) const {
+        return {lift(Z(k * p_.C[0])), lift(Z(k * p_.C[1])), lift(Z(k * p_.C[2]))};
+    }
+
+    // §4.3 (every D_i > 0). T_v = D·(V_v − C), the vertex projections times √d.
+    bool no_zero_components() {
+        if (axis_meets_slabs(std::array<int, 3>{0, 1, 2})) return true;  // §4.3.1
+        const Vec3<Z>& D = p_.D;
+        const Vec3<Z>& E = p_.E;
+        const Z dc = dot(D, p_.C);
+        const Z de[3] = {Z(D[0] * E[0]), Z(D[1] * E[1]), Z(D[2] * E[2])};
+        for (int v = 0; v < 8; ++v) {
+            Z t = -dc;
+            for (int n = 0; n < 3; ++n) {
+                if (v >> n & 1) t += de[n];
+                else t -= de[n];
+            }
+            T_[v] = t;
+        }
+        if (sgn(p_.H) == 0)  // a disk: the face cuts contain every clipped box edge (algo/linear_inequalities.hpp)
+            return face_cut(0, true) || face_cut(0, false) || face_cut(1, true) || face_cut(1, false) ||
+                   face_cut(2, true) || face_cut(2, false);
+        return box_edge(0, 2) || box_edge(1, 2) || box_edge(0, 1) || box_edge(2, 1) || box_edge(1, 0) ||
+               box_edge(2, 0) || face_cut(0, true) || face_cut(0, false) || face_cut(1, true) ||
+               face_cut(1, false) || face_cut(2, true) || face_cut(2, false);
+    }
+
+    // The box edge x_i = +e_i, x_j = −e_j along x_k from vertex a to b, clipped to |t| ≤ H. Scaled by
+    // D_k: a clipped end has D_k·x_k = ∓E_k·D_k − T_end ∓ H√d.
+    bool box_edge(int i, int k) const {
+        const int a = 1 << i, b = a | (1 << k);
+        const Z& H = p_.H;
+        if (ring_.sign(T_[a], Z(-H)) > 0 || ring_.sign(T_[b], H) < 0) return false;  // t_a > H or t_b < −H
+        const Z& Dk = p_.D[k];
+        Vec3<Q> P0 = vertex_scaled(a, Dk), P1 = vertex_scaled(b, Dk);
+        if (ring_.sign(T_[a], H) < 0) P0[k] = {Z(-p_.E[k] * Dk - T_[a]), Z(-H)};       // t_a < −H
+        if (ring_.sign(T_[b], Z(-H)) > 0) P1[k] = {Z(p_.E[k] * Dk - T_[b]), H};         // t_b > H
+        return segment_within(P0, P1, center_scaled(Dk), Z(Dk * Dk * Z(p_.R * p_.R)));
+    }
+
+    // Where t = τ = σH crosses the path m → mid = m + 2e_j·U_j → M: a point times its denominator
+    // (D_j on the first edge, D_k on the second).
+    void cut_point(int m, int j, int k, int sigma, Vec3<Q>& point, Z& den) const {
+        const int mid = m | (1 << j);
+        const Z sH = sigma > 0 ? p_.H : Z(-p_.H);
+        if (ring_.sign(T_[mid], Z(-sH)) >= 0) {  // t_mid ≥ τ: on the first edge
+            den = p_.D[j];
+            point = vertex_scaled(m, den);
+            point[j] = {Z(-p_.E[j] * den - T_[m]), sH};
+        } else {
+            den = p_.D[k];
+            point = vertex_scaled(mid, den);
+            point[k] = {Z(-p_.E[k] * den - T_[mid]), sH};
+        }
+    }
+
+    // The face x_i = ±e_i cut by the slab plane t = ∓H.
+    bool face_cut(int i, bool plus_face) const {
+        const int m = plus_face ? (1 << i) : 0;
+        const int M = plus_face ? 7 : (7 & ~(1 << i));
+        const int sigma = plus_face ? -1 : 1;
+        const Z sH = sigma > 0 ? p_.H : Z(-p_.H);
+        // τ < t_m ⇔ T_m − τ√d > 0; t_M < τ ⇔ T_M − τ√d < 0.
+        if (ring_.sign(T_[m], Z(-sH)) > 0 || ring_.sign(T_[M], Z(-sH)) < 0) return false;
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        Vec3<Q> P0, P1;
+        Z k0, k1;
+        cut_point(m, j, k, sigma, P0, k0);
+        cut_point(m, k, j, sigma, P1, k1);
+        for (int n = 0; n < 3; ++n) {
+            P0[n] = k1 * P0[n];
+            P1[n] = k0 * P1[n];
+        }
+        const Z k01 = k0 * k1;
+        return segment_within(P0, P1, center_scaled(k01), Z(k01 * k01 * Z(p_.R * p_.R)));
+    }
+
+    Problem<Z>& p_;
+    QuadraticRing<Z> ring_;
+    std::array<Z, 8> T_;
+};
+
+}  // namespace detail
+
+// The exact §4 answer for the canonical integer problem (p is modified: reflected into the first octant).
+template <class Z>
+bool intersects(Problem<Z>& p) {
+    return detail::Inequalities<Z>(p).run();
+}
+
+}  // namespace boxcyl::exact::integer
+
+namespace boxcyl::exact::integer {
+
+// The integer types tried in turn: FixedInt (stack limbs) while every value fits, else mpz_class.
+// §4's largest values (the sign test of an interior segment distance squares numbers of Z[√d]) have
+// about 8·L + 32·M + 64 bits for lengths below 2^L and axis components below 2^M (after the scalings),
+// so kFixedLimbs·64 bits hold them for integer and binary-fraction coordinates with small integer
+// axis directions; wider inputs overflow it and the stage reruns in mpz.
+inline constexpr int kFixedLimbs = 16;
+using Small = FixedInt<kFixedLimbs>;
+
+// The stage in FixedInt<Limbs>: the answer, or nullopt when a value outgrew it (or, for an oriented
+// box, when its frame is not a signed permutation).
+template <int Limbs, class Box>
+std::optional<bool> answer_fixed(const Box& b, const Cylinder<double>& c) {
+    using F = FixedInt<Limbs>;
+    FixedOverflow::flag() = false;
+    auto p = problem<F>(b, c);
+    bool r = false;
+    if constexpr (std::is_same_v<decltype(p), Problem<F>>) {
+        if (FixedOverflow::flag()) return std::nullopt;
+        r = intersects(p);
+    } else {
+        if (!p || FixedOverflow::flag()) return std::nullopt;
+        r = intersects(*p);
+    }
+    if (FixedOverflow::flag()) return std::nullopt;
+    return r;
+}
+template <class Box>
+std::optional<bool> answer_small(const Box& b, const Cylinder<double>& c) {
+    return answer_fixed<kFixedLimbs>(b, c);
+}
+
+// FixedInt first, mpz_class when a value outgrew it. (A second, wider FixedInt tier measured no
+// faster: the inputs that outgrow 16 limbs mostly span hundreds of binary orders — an axis component
+// of 1e-300 beside 1 — and outgrow any fixed width.)
+template <class Box>
+auto answer(const Box& b, const Cylinder<double>& c) {
+    const std::optional<bool> fixed = answer_small(b, c);
+    if constexpr (std::is_same_v<decltype(problem<mpz_class>(b, c)), Problem<mpz_class>>) {
+        if (fixed) return *fixed;
+        Problem<mpz_class> big = problem<mpz_class>(b, c);
+        return intersects(big);
+    } else {
+        if (fixed) return fixed;
+        std::optional<Problem<mpz_class>> big = problem<mpz_class>(b, c);
+        if (!big) return std::optional<bool>();
+        return std::optional<bool>(intersects(*big));
+    }
+}
+
+// Narrow inputs — every length an integer below 2^kNarrowLengthBits times one power of two, the axis
+// likewise below 2^kNarrowAxisBits: integer and binary-fraction coordinates, axes along box axes or
+// with small integer directions — keep every value of §4 within FixedInt (its largest, the sign test
+// of an interior segment distance, has about 8·(length bits) + 32·(axis bits) + 64 bits), so the exact
+// stage costs less than the searched certificates and the certified filter; for those inputs the
+// filtered query asks it right after stage 0. An overflow all the same only gives nullopt. The axis is
+// checked first: on random data it is almost never narrow, and the check then costs three doubles.
+inline constexpr int kNarrowLengthBits = 48;
+inline constexpr int kNarrowAxisBits = 16;
+
+inline bool narrow(const Cylinder<double>& c, std::initializer_list<double> lengths) {
+    const Scale<3> axis({c.axis[0], c.axis[1], c.axis[2]});
+    if (axis.span() > kNarrowAxisBits) return false;
+    int emin = 0, top = 0;
+    bool any = false;
+    for (double x : lengths) {
+        const Dyadic v = dyadic(x);
+        if (v.m == 0) continue;
+        const auto mag = static_cast<std::uint64_t>(v.m < 0 ? -v.m : v.m);
+        const int t = v.e + static_cast<int>(std::bit_width(mag));
+        if (!any) emin = v.e, top = t, any = true;
+        emin = std::min(emin, v.e), top = std::max(top, t);
+    }
+    return top - emin <= kNarrowLengthBits;
+}
+inline std::optional<bool> answer_if_narrow(const AlignedBox<double>& b, const Cylinder<double>& c) {
+    if (!narrow(c, {b.min[0], b.min[1], b.min[2], b.max[0], b.max[1], b.max[2], c.center[0], c.center[1], c.center[2],
+                    c.radius, c.height}))
+        return std::nullopt;
+    return answer_small(b, c);
+}
+inline std::optional<bool> answer_if_narrow(const CanonicalBox<double>& b, const Cylinder<double>& c) {
+    if (!narrow(c, {b.extents[0], b.extents[1], b.extents[2], c.center[0], c.center[1], c.center[2], c.radius, c.height}))
+        return std::nullopt;
+    return answer_small(b, c);
+}
+// The exact answer for double inputs (each the rational it denotes; the cylinder axis is axis/|axis|
+// exactly). An oriented box whose axes are not a signed permutation has no exact canonical frame:
+// nullopt (exact_paths.hpp's §3 answers it).
+inline bool intersects(const AlignedBox<double>& b, const Cylinder<double>& c) { return answer(b, c); }
+inline bool intersects(const CanonicalBox<double>& b, const Cylinder<double>& c) { return answer(b, c); }
+inline std::optional<bool> intersects(const OrientedBox<double>& b, const Cylinder<double>& c) { return answer(b, c); }
+
+}  // namespace boxcyl::exact::integer

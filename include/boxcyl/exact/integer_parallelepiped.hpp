@@ -1,0 +1,295 @@
+// The exact stage for an oriented box whose frame is orthonormal only up to rounding (a rotation
+// rounded to double), in integers and Z[√d] as exact/integer_inequalities.hpp: the box is the
+// parallelepiped B = {K + Σ λ_m·a_m : |λ_m| ≤ 1} with the half-edge vectors a_m = e_m·A_m exactly as
+// given (docs/robustness.md §10). With P = B ∩ slab and π the projection along the axis:
+//   the cylinder meets B  ⇔  the axis segment meets B, or some edge of P is within r of the axis line
+// (π(P) is a convex polygon: the axis' image O lies in it iff the axis segment meets P, and otherwise
+// its distance to π(P) is attained on the boundary, whose edges are images of edges of P). Every edge
+// of P lies on a box edge clipped to the slab, or on a face cut by a slab plane (the facets of P are
+// box faces and slab planes), so those 24 segments — each a subset of P — are the candidates. The
+// axis test solves for λ by Cramer's rule, the candidates' end points are box vertices or points
+// where a box edge crosses a slab plane, t = ±H: all with denominators that are positive integers,
+// so every test is again the sign of a + b√d with integers a, b. A flat box (one zero extent) meets the
+// axis where the axis crosses its plane; a segment or a point is its own candidate.
+#pragma once
+
+#include <array>     // vertices, candidate points
+#include <cstddef>   // std::size_t
+#include <cstdint>   // std::int64_t
+#include <initializer_list>  // narrow()'s lengths
+#include <optional>  // nullopt: left to §3
+#include <type_traits>  // std::is_same_v
+
+#include "boxcyl/exact/integer_inequalities.hpp"
+#include "boxcyl/geometry/box.hpp"
+#include "boxcyl/geometry/cylinder.hpp"
+
+namespace boxcyl::exact::integer {
+
+// All lengths in one unit, relative to the cylinder centre C: G = K − C, the half-edge vectors a_m,
+// the radius R and the half-height H; the axis direction D.
+template <class Z>
+struct ParallelepipedProblem {
+    Vec3<Z> G;
+    std::array<Vec3<Z>, 3> a;
+    Vec3<Z> D;
+    Z R, H;
+};
+
+// The exact products e_m·A_mj are dyadic too: m1·m2·2^(e1 + e2).
+template <class Z>
+ParallelepipedProblem<Z> problem_turned(const OrientedBox<double>& b, const Cylinder<double>& c) {
+    struct Item {
+        std::int64_t m1 = 0, m2 = 1;
+        int e = 0;
+    };
+    std::array<Item, 17> items;  // K (3), C (3), r, h, e_m·A_mj (9)
+    auto single = [](double x) {
+        const Dyadic v = dyadic(x);
+        return Item{v.m, 1, v.e};
+    };
+    for (std::size_t i = 0; i < 3; ++i) items[i] = single(b.center[i]), items[3 + i] = single(c.center[i]);
+    items[6] = single(c.radius);
+    items[7] = single(c.height);
+    for (std::size_t m = 0; m < 3; ++m)
+        for (std::size_t j = 0; j < 3; ++j) {
+            const Dyadic e = dyadic(b.extents[m]), a = dyadic(b.axes[m][j]);
+            items[8 + 3 * m + j] = e.m == 0 || a.m == 0 ? Item{} : Item{e.m, a.m, e.e + a.e};
+        }
+    bool any = false;
+    int emin = 0;
+    for (const Item& it : items)
+        if (it.m1 != 0 && (!any || it.e < emin)) emin = it.e, any = true;
+    auto integer = [&](std::size_t i) {
+        const Item& it = items[i];
+        if (it.m1 == 0) return Z(0);
+        Z z = Z(it.m1) * Z(it.m2);
+        if (it.e > emin) z <<= static_cast<unsigned>(it.e - emin);
+        return z;
+    };
+    // Lengths ×2: G = 2(K − C), a_m = 2·e_m·A_m, R = 2r, H = h.
+    ParallelepipedProblem<Z> p;
+    for (std::size_t i = 0; i < 3; ++i) p.G[i] = Z(2) * (integer(i) - integer(3 + i));
+    for (std::size_t m = 0; m < 3; ++m)
+        for (std::size_t j = 0; j < 3; ++j) p.a[m][j] = Z(2) * integer(8 + 3 * m + j);
+    p.R = Z(2) * integer(6);
+    p.H = integer(7);
+    p.D = integer_direction<Z>(c.axis);
+    return p;
+}
+
+namespace detail {
+
+template <class Z>
+class Parallelepiped {
+public:
+    using Q = QuadInt<Z>;
+
+    explicit Parallelepiped(const ParallelepipedProblem<Z>& p) : p_(p), ring_(dot(p.D, p.D)) {
+        for (int s = 0; s < 8; ++s) {
+            Vec3<Z> v = p.G;
+            for (int m = 0; m < 3; ++m) v = (s >> m & 1) ? Vec3<Z>(v + p.a[m]) : Vec3<Z>(v - p.a[m]);
+            T_[s] = dot(p.D, v);
+            V_[s] = v;
+        }
+    }
+
+    // nullopt: non-zero half-edge vectors that are linearly dependent (not a valid frame).
+    std::optional<bool> run() const {
+        const Z det = dot(p_.a[0], cross(p_.a[1], p_.a[2]));
+        int zeros = 0, zero = 0;
+        for (int m = 0; m < 3; ++m)
+            if (sgn(p_.a[m][0]) == 0 && sgn(p_.a[m][1]) == 0 && sgn(p_.a[m][2]) == 0) ++zeros, zero = m;
+        if (sgn(det) == 0 && zeros == 0) return std::nullopt;
+        // The box outside the slab: every vertex beyond the same plane.
+        int above = 0, below = 0;
+        for (int s = 0; s < 8; ++s) {
+            const int side = side_of(T_[s]);
+            above += side > 0, below += side < 0;
+        }
+        if (above == 8 || below == 8) return false;
+        // The axis segment meets B. A segment or point box (two or three zero extents) needs no such
+        // test: it is its own clipped edge.
+        if (zeros == 0 && axis_meets_box(det)) return true;
+        if (zeros == 1 && axis_meets_flat_box(zero)) return true;
+        for (int m = 0; m < 3; ++m)
+            for (int s = 0; s < 8; ++s)
+                if (!(s >> m & 1) && clipped_edge_within(s, s | (1 << m))) return true;
+        for (int m = 0; m < 3; ++m)
+            for (int plus = 0; plus < 2; ++plus)
+                for (int sigma : {1, -1}) {
+                    if (sigma < 0 && sgn(p_.H) == 0) continue;  // one plane
+                    if (face_cut_within(m, plus != 0, sigma)) return true;
+                }
+        return false;
+    }
+
+private:
+    struct Point {
+        Vec3<Q> num;  // the point (relative to C) times den
+        Z den;        // > 0
+    };
+
+    // +1 beyond t = H, −1 beyond t = −H, 0 in the slab (T = √d·t).
+    int side_of(const Z& T) const {
+        if (ring_.sign(T, Z(-p_.H)) > 0) return 1;
+        if (ring_.sign(T, p_.H) < 0) return -1;
+        return 0;
+    }
+    Point vertex(int s) const {
+        return {{Q{V_[s][0], Z(0)}, Q{V_[s][1], Z(0)}, Q{V_[s][2], Z(0)}}, Z(1)};
+    }
+    // Where the edge s → s' (T_s ≠ T_s') crosses t = σH: V_s + λ(V_s' − V_s), λ = (σH√d − T_s)/(T_s' − T_s).
+    Point crossing(int s, int s1, int sigma) const {
+        Z delta = T_[s1] - T_[s];
+        Q lambda_num{Z(-T_[s]), sigma > 0 ? p_.H : Z(-p_.H)};
+        if (sgn(delta) < 0) delta = -delta, lambda_num = -lambda_num;
+        Point x;
+        x.den = delta;
+        for (int j = 0; j < 3; ++j) {
+            const Z step = V_[s1][j] - V_[s][j];
+            x.num[j] = Q{Z(V_[s][j] * delta), Z(0)} + step * lambda_num;
+        }
+        return x;
+    }
+    bool within(const Point& x, const Point& y) const {
+        Vec3<Q> y0, y1;
+        for (int j = 0; j < 3; ++j) {
+            y0[j] = y.den * x.num[j];
+            y1[j] = x.den * y.num[j];
+        }
+        const Z den = x.den * y.den;
+        return segment_within(ring_, p_.D, y0, y1, Z(den * den * Z(p_.R * p_.R)));
+    }
+
+    // Cramer's rule: λ_m·det = n_m·(X − K), n_m = a_j × a_k, X = C + t·D/√d, |t| ≤ H. With s = sgn(det),
+    // p_m = −s·n_m·G, q_m = s·n_m·D: −|det| − p_m ≤ t·q_m/√d ≤ |det| − p_m. Each bound on t is
+    // A·√d/Q with Q > 0; the bounds are compatible iff every lower one is ≤ every upper one, pairwise
+    // (√d cancels between two of them; against ±H it is a sign in Z[√d]).
+    bool axis_meets_box(const Z& det) const {
+        const int s = sgn(det);
+        const Z adet = s < 0 ? Z(-det) : det;
+        std::array<Z, 3> lo, hi, q;
+        std::array<bool, 3> bounded{};
+        for (int m = 0; m < 3; ++m) {
+            const Vec3<Z> n = cross(p_.a[(m + 1) % 3], p_.a[(m + 2) % 3]);
+            Z pm = dot(n, p_.G), qm = dot(n, p_.D);
+            if (s > 0) pm = -pm;
+            else qm = -qm;
+            if (sgn(qm) == 0) {
+                if (adet < abs_of(pm)) return false;
+                continue;
+            }
+            bounded[m] = true;
+            if (sgn(qm) > 0) {
+                lo[m] = Z(-adet - pm), hi[m] = Z(adet - pm), q[m] = qm;
+            } else {
+                lo[m] = Z(pm - adet), hi[m] = Z(pm + adet), q[m] = Z(-qm);
+            }
+        }
+        for (int m = 0; m < 3; ++m) {
+            if (!bounded[m]) continue;
+            if (ring_.sign(Z(p_.H * q[m]), Z(-lo[m])) < 0) return false;  // lo_m ≤ H
+            if (ring_.sign(Z(p_.H * q[m]), hi[m]) < 0) return false;       // −H ≤ hi_m
+            for (int n = 0; n < 3; ++n)
+                if (n != m && bounded[n] && Z(hi[n] * q[m]) < Z(lo[m] * q[n])) return false;  // lo_m ≤ hi_n
+        }
+        return true;
+    }
+
+    // A flat box (a_z = 0): the parallelogram {K + λ_i·a_i + λ_j·a_j}. With n = a_i × a_j, the axis line
+    // crosses its plane at t = (n·G)·√d/(n·D) (G = K − C), where Y = X − K satisfies
+    // (n·D)·Y = W := (n·G)·D − (n·D)·G, and λ_i = Y·(a_j × n)/|n|², λ_j = Y·(n × a_i)/|n|². An axis
+    // parallel to the plane (n·D = 0) meets the parallelogram only inside its plane, and a line in the
+    // plane that meets the bounded P crosses its boundary: the clipped edges then find distance 0.
+    bool axis_meets_flat_box(int z) const {
+        const Vec3<Z>& ai = p_.a[(z + 1) % 3];
+        const Vec3<Z>& aj = p_.a[(z + 2) % 3];
+        const Vec3<Z> n = cross(ai, aj);
+        const Z nD = dot(n, p_.D);
+        if (sgn(nD) == 0) return false;
+        const Z nG = dot(n, p_.G);
+        const Z abs_nD = abs_of(nD);
+        if (ring_.sign(Z(p_.H * abs_nD), Z(-abs_of(nG))) < 0) return false;  // |t| ≤ H
+        const Vec3<Z> W = nG * p_.D - nD * p_.G;
+        const Z bound = Z(dot(n, n) * abs_nD);
+        return !(bound < abs_of(Z(dot(cross(aj, n), W)))) && !(bound < abs_of(Z(dot(cross(n, ai), W))));
+    }
+
+    // The box edge s → s' clipped to the slab.
+    bool clipped_edge_within(int s, int s1) const {
+        const int a = side_of(T_[s]), b = side_of(T_[s1]);
+        if (a != 0 && a == b) return false;
+        const Point x = a == 0 ? vertex(s) : crossing(s, s1, a);
+        const Point y = b == 0 ? vertex(s1) : crossing(s, s1, b);
+        return within(x, y);
+    }
+
+    // The face λ_m = ±1 cut by the plane t = σH: its points on the face's boundary (vertices on the
+    // plane, crossings of the four edges), every pair of them a segment of the cut.
+    bool face_cut_within(int m, bool plus, int sigma) const {
+        const int j = (m + 1) % 3, k = (m + 2) % 3;
+        const int base = plus ? (1 << m) : 0;
+        const std::array<int, 4> corner{base, base | (1 << j), base | (1 << j) | (1 << k), base | (1 << k)};
+        const Z tau_b = sigma > 0 ? Z(-p_.H) : p_.H;  // T − σH√d = T + tau_b·√d
+        std::array<int, 4> sign{};
+        for (int c = 0; c < 4; ++c) sign[static_cast<std::size_t>(c)] = ring_.sign(T_[corner[static_cast<std::size_t>(c)]], tau_b);
+        if (sign[0] == 0 && sign[1] == 0 && sign[2] == 0 && sign[3] == 0) return false;  // in the plane: box edges cover it
+        std::array<Point, 4> pts;
+        int n = 0;
+        for (std::size_t c = 0; c < 4; ++c) {
+            const std::size_t c1 = (c + 1) % 4;
+            if (sign[c] == 0) pts[static_cast<std::size_t>(n++)] = vertex(corner[c]);
+            else if (sign[c] * sign[c1] < 0) pts[static_cast<std::size_t>(n++)] = crossing(corner[c], corner[c1], sigma);
+        }
+        if (n == 1) return within(pts[0], pts[0]);
+        for (int x = 0; x < n; ++x)
+            for (int y = x + 1; y < n; ++y)
+                if (within(pts[static_cast<std::size_t>(x)], pts[static_cast<std::size_t>(y)])) return true;
+        return false;
+    }
+
+    const ParallelepipedProblem<Z>& p_;
+    QuadraticRing<Z> ring_;
+    std::array<Vec3<Z>, 8> V_;
+    std::array<Z, 8> T_;
+};
+
+template <class Z>
+std::optional<bool> run_turned(const OrientedBox<double>& b, const Cylinder<double>& c) {
+    const ParallelepipedProblem<Z> p = problem_turned<Z>(b, c);
+    return Parallelepiped<Z>(p).run();
+}
+
+}  // namespace detail
+
+// The exact answer for any valid oriented box (nullopt only for non-zero half-edge vectors that are
+// linearly dependent): FixedInt first, mpz_class when a value outgrew it.
+inline std::optional<bool> intersects_parallelepiped(const OrientedBox<double>& b, const Cylinder<double>& c) {
+    FixedOverflow::flag() = false;
+    const std::optional<bool> small = detail::run_turned<Small>(b, c);
+    if (!FixedOverflow::flag()) return small;
+    return detail::run_turned<mpz_class>(b, c);
+}
+
+// The same in FixedInt alone: nullopt also when a value outgrew it.
+inline std::optional<bool> parallelepiped_small(const OrientedBox<double>& b, const Cylinder<double>& c) {
+    FixedOverflow::flag() = false;
+    const std::optional<bool> r = detail::run_turned<Small>(b, c);
+    if (FixedOverflow::flag()) return std::nullopt;
+    return r;
+}
+
+// For narrow inputs (integer_inequalities.hpp), §4 in integers for a signed-permutation frame, the
+// parallelepiped test for any other frame (the axes themselves may be wide: a rounded rotation).
+inline std::optional<bool> answer_if_narrow(const OrientedBox<double>& b, const Cylinder<double>& c) {
+    if (!narrow(c, {b.center[0], b.center[1], b.center[2], b.extents[0], b.extents[1], b.extents[2], c.center[0],
+                    c.center[1], c.center[2], c.radius, c.height}))
+        return std::nullopt;
+    if (const std::optional<bool> r = answer_small(b, c)) return r;
+    int perm[3], sign[3];
+    if (signed_permutation(b.axes, perm, sign)) return std::nullopt;  // outgrew FixedInt
+    return parallelepiped_small(b, c);
+}
+
+}  // namespace boxcyl::exact::integer

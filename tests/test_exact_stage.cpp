@@ -1,0 +1,374 @@
+// The default query's exact stage in integers (include/boxcyl/exact/integer_inequalities.hpp): §4 in
+// Z[√d] after scaling the doubles by a power of two. Judged by the oracle on
+//  * exactly touching queries (support/touching.hpp: faces, edges, vertices, tangent sides, caps and
+//    disks flush with faces, segments ending on faces, integer coordinates, rational and irrational
+//    oblique axes), directly and through filtered::query;
+//  * the random, degenerate (2^±600) and extreme (2^±1000, subnormal) sets of the other tests;
+//  * hand-made touching cases with their exact answers, and one ulp off them;
+//  * its parts: the dyadic decomposition of doubles and the sign of a + b√d.
+// Failing cases print as pasteable C++ (support/cases.hpp's describe()).
+#include <gtest/gtest.h>
+
+#include <cmath>     // std::ldexp, std::nextafter
+#include <cstddef>   // std::size_t
+#include <cstdint>   // seeds
+#include <limits>    // extreme doubles
+#include <optional>  // the stage's "no exact frame"
+#include <random>    // operands
+#include <string>    // labels
+#include <tuple>     // hand-made cases
+
+#include "boxcyl/exact/integer_inequalities.hpp"
+#include "boxcyl/exact/integer_parallelepiped.hpp"
+#include "boxcyl/filtered.hpp"
+#include "boxcyl/number/qfield.hpp"
+#include "support/cases.hpp"
+#include "support/runner.hpp"
+#include "support/touching.hpp"
+
+namespace boxcyl {
+namespace {
+
+using namespace boxcyl::testing;
+
+// The integer stage's answer, or nullopt for an oriented box without an exact canonical frame.
+std::optional<bool> integer_answer(const Case& c) {
+    return with_box(c, [](const auto& b, const Cylinder<double>& cyl) -> std::optional<bool> {
+        return exact::integer::intersects(b, cyl);
+    });
+}
+
+struct StageTally {
+    long cases = 0, judged = 0, judged_parallelepiped = 0, hits = 0, exact_stage = 0, wrong = 0;
+    void check(const Case& c, const std::string& where) {
+        ++cases;
+        const bool want = oracle_answer(c);
+        hits += want;
+        if (const std::optional<bool> got = integer_answer(c)) {
+            ++judged;
+            if (*got != want && ++wrong <= 10)
+                ADD_FAILURE() << where << ": integer stage answered " << *got << ", oracle " << want << "\n  "
+                              << describe(c);
+        }
+        if (c.kind == BoxKind::oriented) {
+            if (const std::optional<bool> got = exact::integer::intersects_parallelepiped(c.oriented, c.cylinder)) {
+                ++judged_parallelepiped;
+                if (*got != want && ++wrong <= 10)
+                    ADD_FAILURE() << where << ": parallelepiped stage answered " << *got << ", oracle " << want << "\n  "
+                                  << describe(c);
+            }
+        }
+        const filtered::Result r =
+            with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::query(b, cyl); });
+        exact_stage += r.exact_used;
+        if (r.intersect != want && ++wrong <= 10)
+            ADD_FAILURE() << where << ": filtered::query answered " << r.intersect << ", oracle " << want << "\n  "
+                          << describe(c);
+    }
+    void print(const char* what) const {
+        std::printf("%s: %ld cases, %ld judged by §4 in integers, %ld by the parallelepiped test, %ld hits, %ld reached "
+                    "the exact stage, %ld wrong\n",
+                    what, cases, judged, judged_parallelepiped, hits, exact_stage, wrong);
+    }
+};
+
+TEST(ExactStage, TouchingCasesAgreeWithOracle) {
+    const std::uint64_t seed = 2101;
+    TouchingGenerator gen(seed);
+    StageTally t;
+    const long n = scaled(6000);
+    for (long i = 0; i < n; ++i) {
+        const Case c = gen.next();
+        ASSERT_TRUE(with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return validate(b).ok() && validate(cyl).ok(); }))
+            << describe(c);
+        t.check(c, "touching seed " + std::to_string(seed) + " case " + std::to_string(i));
+    }
+    t.print("touching");
+    EXPECT_EQ(t.wrong, 0);
+    EXPECT_GT(t.judged, n * 3 / 4);  // every box kind but the turned oriented boxes
+    EXPECT_GT(t.judged_parallelepiped, n / 10);
+}
+
+TEST(ExactStage, RandomAndDegenerateAgreeWithOracle) {
+    for (const Profile profile : {Profile::mixed, Profile::degenerate}) {
+        const std::uint64_t seed = profile == Profile::mixed ? 2102 : 2103;
+        CaseGenerator gen(seed, profile);
+        StageTally t;
+        const long n = scaled(3000);
+        for (long i = 0; i < n; ++i)
+            t.check(gen.next(), std::string(profile == Profile::mixed ? "mixed" : "degenerate") + " seed " +
+                                    std::to_string(seed) + " case " + std::to_string(i));
+        t.print(profile == Profile::mixed ? "random" : "degenerate");
+        EXPECT_EQ(t.wrong, 0);
+    }
+}
+
+// Touching cases whose parts are moved to the ends of the double range: the whole scene by 2^±1000 (the
+// exponents stay within one query), the axis by its own power of two down to subnormals, and a
+// subnormal axis component beside 1 — every number is still an integer times one power of two.
+TEST(ExactStage, ExtremeMagnitudesAgreeWithOracle) {
+    const std::uint64_t seed = 2104;
+    TouchingGenerator gen(seed);
+    std::mt19937_64 rng(seed);
+    StageTally t;
+    const long n = scaled(1500);
+    for (long i = 0; i < n; ++i) {
+        Case c = gen.next();
+        const int scene = std::uniform_int_distribution<int>(-1000, 990)(rng);
+        auto sc = [&](double& x) { x = std::ldexp(x, scene); };
+        for (int k = 0; k < 3; ++k) {
+            sc(c.aligned.min[k]), sc(c.aligned.max[k]), sc(c.oriented.center[k]), sc(c.oriented.extents[k]);
+            sc(c.canonical.extents[k]), sc(c.cylinder.center[k]);
+        }
+        sc(c.cylinder.radius), sc(c.cylinder.height);
+        const int ax = std::uniform_int_distribution<int>(-1070, 1000)(rng);
+        for (int k = 0; k < 3; ++k) c.cylinder.axis[k] = std::ldexp(c.cylinder.axis[k], ax);
+        if (i % 4 == 0) {  // a subnormal component beside the others
+            const int k = static_cast<int>(rng() % 3);
+            const double tiny = std::numeric_limits<double>::denorm_min() * static_cast<double>(1 + rng() % 5);
+            c.cylinder.axis[k] = (rng() & 1) ? tiny : -tiny;
+            if (c.cylinder.axis[(k + 1) % 3] == 0 && c.cylinder.axis[(k + 2) % 3] == 0) c.cylinder.axis[(k + 1) % 3] = 1;
+        }
+        t.check(c, "extreme seed " + std::to_string(seed) + " case " + std::to_string(i));
+    }
+    t.print("extreme");
+    EXPECT_EQ(t.wrong, 0);
+}
+
+// Hand-made touching cases with their answers, each also one ulp in (hit) and out (miss).
+TEST(ExactStage, HandMadeTouchingCases) {
+    const AlignedBox<double> unit{{0, 0, 0}, {1, 1, 1}};
+    const double out = std::nextafter(1.0, 0.0), in = std::nextafter(1.0, 2.0);
+    struct Known {
+        const char* what;
+        Cylinder<double> cyl;
+        bool hit;
+    };
+    const Known known[] = {
+        // Side tangent to the face x = 1 (axis z, centre 1 + r away).
+        {"side on face", {{2, 0.5, 0.5}, {0, 0, 1}, 1, 1}, true},
+        {"side off face", {{2, 0.5, 0.5}, {0, 0, 1}, out, 1}, false},
+        {"side into face", {{2, 0.5, 0.5}, {0, 0, 1}, in, 1}, true},
+        // Cap flush with the face z = 1.
+        {"cap on face", {{0.5, 0.5, 2}, {0, 0, 3}, 0.25, 2}, true},
+        {"cap off face", {{0.5, 0.5, 2}, {0, 0, 3}, 0.25, std::nextafter(2.0, 0.0)}, false},
+        // Side through the edge x = 1, y = 1 (axis z): offset (3, 4), r = 5.
+        {"side on edge", {{4, 5, 0.5}, {0, 0, 1}, 5, 1}, true},
+        {"side off edge", {{4, 5, 0.5}, {0, 0, 1}, std::nextafter(5.0, 0.0), 1}, false},
+        // Oblique rational axis (3,4,0)/5: the side tangent to the face z = 1.
+        {"(3,4,0) side on face", {{0.5, 0.5, 3}, {3, 4, 0}, 2, 4}, true},
+        {"(3,4,0) side off face", {{0.5, 0.5, 3}, {3, 4, 0}, std::nextafter(2.0, 0.0), 4}, false},
+        // Irrational axis (1,1,0): the side through the vertex (1, 0, 1) at offset (2,−2,1), r = 3.
+        {"(1,1,0) side on vertex", {{3, -2, 2}, {1, 1, 0}, 3, 2}, true},
+        {"(1,1,0) side off vertex", {{3, -2, 2}, {1, 1, 0}, std::nextafter(3.0, 0.0), 2}, false},
+        // Segment (r = 0) along (2,1,2)/3 ending on the face x = 1 at (1, 0.5, 0.5): centre = end + u·h/2.
+        {"segment ends on face", {{3, 1.5, 2.5}, {2, 1, 2}, 0, 6}, true},
+        {"segment short of face", {{3, 1.5, 2.5}, {2, 1, 2}, 0, std::nextafter(6.0, 0.0)}, false},
+        // Disk (h = 0) in the plane z = 1 touching the edge y = 1 from outside.
+        {"disk on edge", {{0.5, 1.5, 1}, {0, 0, 1}, 0.5, 0}, true},
+        {"disk off edge", {{0.5, 1.5, 1}, {0, 0, 1}, std::nextafter(0.5, 0.0), 0}, false},
+        // Cap plane of the axis (2,3,6)/7 through the vertex (0,0,0): centre −(2,3,6), h/2 = 7.
+        {"(2,3,6) cap on vertex", {{-2, -3, -6}, {2, 3, 6}, 1, 14}, true},
+        {"(2,3,6) cap short of vertex", {{-2, -3, -6}, {2, 3, 6}, 1, std::nextafter(14.0, 0.0)}, false},
+    };
+    for (const Known& k : known) {
+        Case c;
+        c.kind = BoxKind::aligned;
+        c.aligned = unit;
+        c.cylinder = k.cyl;
+        ASSERT_EQ(oracle_answer(c), k.hit) << k.what << " (the case itself is wrong): " << describe(c);
+        EXPECT_EQ(exact::integer::intersects(unit, k.cyl), k.hit) << k.what << ": " << describe(c);
+        EXPECT_EQ(filtered::intersects(unit, k.cyl), k.hit) << k.what << ": " << describe(c);
+        // The same as a canonical box (centre moved by −(0.5, 0.5, 0.5), exact) and a signed permutation.
+        Cylinder<double> moved = k.cyl;
+        for (int i = 0; i < 3; ++i) moved.center[i] -= 0.5;
+        EXPECT_EQ(exact::integer::intersects(CanonicalBox<double>{{0.5, 0.5, 0.5}}, moved), k.hit) << k.what << " canonical";
+        const OrientedBox<double> turned{{0.5, 0.5, 0.5},
+                                         {Vec3<double>{0, 1, 0}, Vec3<double>{0, 0, -1}, Vec3<double>{-1, 0, 0}},
+                                         {0.5, 0.5, 0.5}};
+        EXPECT_EQ(exact::integer::intersects(turned, k.cyl), std::optional<bool>(k.hit)) << k.what << " oriented";
+    }
+}
+
+TEST(ExactStage, DyadicDecompositionIsExact) {
+    const double values[] = {1.0, -1.0, 3.0, 0.1, -1e-300, 1e308, std::numeric_limits<double>::max(),
+                             std::numeric_limits<double>::min(), std::numeric_limits<double>::denorm_min(),
+                             -3 * std::numeric_limits<double>::denorm_min(), 6.0, 0.75, 1099511627776.0};
+    for (double x : values) {
+        const exact::integer::Dyadic d = exact::integer::dyadic(x);
+        EXPECT_NE(d.m % 2, 0) << x;  // odd: the smallest integer for x
+        EXPECT_EQ(Rational(mpz_class(static_cast<long>(d.m))) *
+                      (d.e >= 0 ? Rational(mpz_class(1) << static_cast<unsigned>(d.e))
+                                : Rational(mpz_class(1), mpz_class(1) << static_cast<unsigned>(-d.e))),
+                  to_rational(x))
+            << x;
+    }
+    EXPECT_EQ(exact::integer::dyadic(0.0).m, 0);
+    EXPECT_EQ(exact::integer::dyadic(-0.0).m, 0);
+}
+
+TEST(ExactStage, QuadraticIntegerSignMatchesQField) {
+    std::mt19937_64 rng(2105);
+    std::uniform_int_distribution<long> small(-30, 30);
+    for (int i = 0; i < 20000; ++i) {
+        const long d = i % 7 == 0 ? small(rng) * small(rng) % 37 + 37 : std::abs(small(rng));  // squares too
+        const long dd = i % 5 == 0 ? (small(rng) % 6) * (small(rng) % 6) : d;
+        const long a = small(rng), b = small(rng);
+        const QuadraticRing<mpz_class> ring{mpz_class(std::abs(dd))};
+        const QuadraticField<Rational> field{Rational(std::abs(dd))};
+        const QFRational ref(Rational(a), Rational(b), field);
+        EXPECT_EQ(ring.sign(mpz_class(a), mpz_class(b)), ref.sign()) << a << " + " << b << "*sqrt(" << std::abs(dd) << ")";
+    }
+}
+
+}  // namespace
+}  // namespace boxcyl
+
+namespace boxcyl {
+namespace {
+
+// FixedInt against mpz_class on random operands of 0–5 limbs: every result equals mpz's while the
+// overflow flag stays down, and the flag rises exactly when a result needs more limbs than it has.
+TEST(ExactStage, FixedIntMatchesMpz) {
+    using F = FixedInt<6>;
+    std::mt19937_64 rng(2106);
+    auto random_pair = [&] {
+        const int limbs = static_cast<int>(rng() % 5);  // up to 4 limbs: products of 8 overflow 6
+        F f(0);
+        mpz_class z(0);
+        for (int i = 0; i < limbs; ++i) {
+            const auto part = static_cast<long>(rng() >> 1);
+            f <<= 63u;
+            f = f + F(part);
+            z = (z << 63) + part;
+        }
+        if (rng() & 1) f = -f, z = -z;
+        return std::pair<F, mpz_class>{f, z};
+    };
+    long checked = 0, overflows = 0;
+    for (int i = 0; i < 20000; ++i) {
+        FixedOverflow::flag() = false;
+        auto [a, za] = random_pair();
+        auto [b, zb] = random_pair();
+        ASSERT_FALSE(FixedOverflow::flag());
+        const int op = static_cast<int>(rng() % 4);
+        F r;
+        mpz_class zr;
+        switch (op) {
+            case 0: r = a + b, zr = za + zb; break;
+            case 1: r = a - b, zr = za - zb; break;
+            case 2: r = a * b, zr = za * zb; break;
+            default: {
+                const unsigned k = static_cast<unsigned>(rng() % 200);
+                r = a, zr = za;
+                r <<= k;
+                zr <<= k;
+            }
+        }
+        const bool fits = mpz_sizeinbase(zr.get_mpz_t(), 2) <= std::size_t{384};  // 6 limbs
+        if (FixedOverflow::flag()) {
+            ++overflows;
+            // Multiplication may refuse a product of n + m limbs that would have fit in n + m − 1.
+            EXPECT_TRUE(!fits || op == 2) << "op " << op << ": " << za << ", " << zb;
+            continue;
+        }
+        ASSERT_TRUE(fits) << "op " << op << " overflowed silently: " << za << ", " << zb;
+        ++checked;
+        EXPECT_EQ(r.to_mpz(), zr) << "op " << op << ": " << za << ", " << zb;
+        EXPECT_EQ(sgn(r), sgn(zr));
+        EXPECT_EQ(cmp(r, a), cmp(zr, za));
+    }
+    EXPECT_GT(checked, 10000);
+    EXPECT_GT(overflows, 100);
+}
+
+// The stage's two integer types give the same answers wherever the fixed one does not overflow.
+TEST(ExactStage, FixedAndMpzStagesAgree) {
+    TouchingGenerator gen(2107);
+    long compared = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Case c = gen.next();
+        with_box(c, [&](const auto& b, const Cylinder<double>& cyl) {
+            FixedOverflow::flag() = false;
+            auto small = exact::integer::problem<exact::integer::Small>(b, cyl);
+            auto big = exact::integer::problem<mpz_class>(b, cyl);
+            if constexpr (std::is_same_v<decltype(small), exact::integer::Problem<exact::integer::Small>>) {
+                const bool s = exact::integer::intersects(small), m = exact::integer::intersects(big);
+                if (!FixedOverflow::flag()) {
+                    ++compared;
+                    EXPECT_EQ(s, m) << describe(c);
+                }
+            } else if (small) {
+                const bool s = exact::integer::intersects(*small), m = exact::integer::intersects(*big);
+                if (!FixedOverflow::flag()) {
+                    ++compared;
+                    EXPECT_EQ(s, m) << describe(c);
+                }
+            }
+            return 0;
+        });
+    }
+    EXPECT_GT(compared, 2000);
+}
+
+}  // namespace
+}  // namespace boxcyl
+
+namespace boxcyl {
+namespace {
+
+// Frames perturbed by up to 2e-6 (far from orthonormal next to rounding, still valid), and turned
+// boxes with a cap flush with a face, one ulp off, and the parallelepiped test in both integer types.
+TEST(ExactStage, ParallelepipedAgreesWithOracle) {
+    const std::uint64_t seed = 2108;
+    CaseGenerator gen(seed);
+    StageTally t;
+    const long n = scaled(1500);
+    for (long i = 0; i < n; ++i) t.check(perturbed_frame(gen), "perturbed frame seed " + std::to_string(seed) + " case " + std::to_string(i));
+    t.print("perturbed frames");
+    EXPECT_EQ(t.wrong, 0);
+    EXPECT_GT(t.judged_parallelepiped, n / 2);
+
+    // A box turned about z by a rounded 0.3 rad, top face z = 1 exactly; a cap flush with it, then one
+    // ulp above it; and the same box flat (zero height), a disk in its plane and one ulp above.
+    const double cs = std::cos(0.3), sn = std::sin(0.3);
+    const OrientedBox<double> box{{0, 0, 0.5}, {Vec3<double>{cs, sn, 0}, Vec3<double>{-sn, cs, 0}, Vec3<double>{0, 0, 1}},
+                                  {1, 2, 0.5}};
+    const Cylinder<double> flush{{0.25, -0.5, 2}, {0, 0, 1}, 0.5, 2};
+    Cylinder<double> above = flush;
+    above.center[2] = std::nextafter(2.0, 3.0);
+    OrientedBox<double> flat = box;
+    flat.center[2] = 1;
+    flat.extents[2] = 0;
+    const Cylinder<double> disk{{0.5, 0.25, 1}, {0, 1, 1}, 0.5, 0};
+    Cylinder<double> disk_above = disk;
+    disk_above.center[2] = std::nextafter(1.0, 2.0);
+    const Cylinder<double> piercing{{0.5, 0.25, 1}, {1, 2, 3}, 0, 0.5};  // a short segment through the flat box
+    for (const auto& [b, cyl, hit] : {std::tuple{box, flush, true}, std::tuple{box, above, false}, std::tuple{flat, disk, true},
+                                      std::tuple{flat, disk_above, true}, std::tuple{flat, piercing, true}}) {
+        Case c;
+        c.kind = BoxKind::oriented;
+        c.oriented = b;
+        c.cylinder = cyl;
+        ASSERT_EQ(oracle_answer(c), hit) << describe(c);
+        EXPECT_EQ(exact::integer::intersects_parallelepiped(b, cyl), std::optional<bool>(hit)) << describe(c);
+        EXPECT_EQ(filtered::intersects(b, cyl), hit) << describe(c);
+    }
+
+    // FixedInt and mpz_class agree wherever FixedInt did not overflow.
+    TouchingGenerator touching(2109);
+    long compared = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const Case c = touching.next();
+        if (c.kind != BoxKind::oriented) continue;
+        FixedOverflow::flag() = false;
+        const std::optional<bool> small = exact::integer::detail::run_turned<exact::integer::Small>(c.oriented, c.cylinder);
+        if (FixedOverflow::flag()) continue;
+        ++compared;
+        EXPECT_EQ(small, exact::integer::detail::run_turned<mpz_class>(c.oriented, c.cylinder)) << describe(c);
+    }
+    EXPECT_GT(compared, 500);
+}
+
+}  // namespace
+}  // namespace boxcyl
