@@ -63,6 +63,7 @@
 #include "boxcyl/geometry/reduce.hpp"
 #include "boxcyl/geometry/validate.hpp"
 #include "boxcyl/number/bounded.hpp"
+#include "boxcyl/number/double_double.hpp"
 #include "boxcyl/number/interval.hpp"
 #include "boxcyl/oracle/oracle.hpp"  // to_exact: the rationals the doubles denote
 
@@ -697,6 +698,16 @@ std::optional<bool> filter(const Box& box, const Cylinder<double>& cyl) {
     return filter<Interval>(box, cyl);
 }
 
+// The middle stage: stage 1's evaluation again, in double-double with a running error bound
+// (number/double_double.hpp: about 2^-100 relative per operation), so that every input that is not
+// exactly touching and whose exact problem stage 1 encloses without widening is decided here, not in
+// exact arithmetic. Round to nearest only: in any other mode it declines (the exact stage answers).
+template <class Box>
+std::optional<bool> middle(const Box& box, const Cylinder<double>& cyl) {
+    if (!boxcyl::detail::round_to_nearest()) return std::nullopt;
+    return filter<DoubleDouble>(box, cyl);
+}
+
 // ---- Stage 2: exact, without the oracle. ----
 
 inline bool exact_answer(const AlignedBox<double>& b, const Cylinder<double>& c) {
@@ -749,6 +760,7 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
     }
     if (!fast) fast = filter(box, cyl);  // stage 1
     if (!fast && in_range && witness_search::certain_hit(p, box, cyl)) fast = true;
+    if (!fast) fast = middle(box, cyl);  // the middle stage
     if (!fast) return {exact_answer(box, cyl), true};
 #if defined(BOXCYL_CHECK_FILTER) && BOXCYL_CHECK_FILTER
     if (exact_answer(box, cyl) != *fast)
