@@ -20,6 +20,11 @@
 //   (certain_hit, frame_hit: a witness point solved exactly in real arithmetic, only inequalities
 //   checked on enclosures) and thickened sizes (misses) decide most of the rest (docs/robustness.md §5).
 //   Before stage 2, a thorough witness search tries once more to certify a hit.
+//   The middle stage: stage 1 once more in double-double with a running error bound
+//   (number/double_double.hpp, ≈2^-100 relative per operation): near-touching inputs that are not
+//   exactly touching are decided here (docs/robustness.md, The middle stage). Round to nearest only.
+//   It runs after stage 1's Bounded run, before its Interval run and the thorough witness search,
+//   which cost more on the queries that reach it (bench/bench_sets.cpp).
 //   Stage 2, the exact fallback (only when stage 1 could not decide): §4 in Q(√d) for aligned and
 //   canonical boxes and for exactly orthonormal frames (signed permutations: the only exactly
 //   orthonormal frames of doubles), §3 on the exact parallelepiped otherwise (exact_paths.hpp). The
@@ -39,6 +44,7 @@
 //   BOXCYL_FORCE_EXACT=1   skip stage 1: every query answers with stage 2 (exact_used == true).
 //   BOXCYL_CHECK_FILTER=1  whenever stage 1 decides, also run stage 2; on a mismatch throw
 //                          std::logic_error naming the case (hex floats, copy-pasteable).
+//   BOXCYL_MIDDLE_STAGE=0  skip the middle stage (what it saves is measured by bench/bench_sets.cpp).
 //
 // §3 (convex hull) is deliberately not offered as a filtered stage 1: it sorts points with std::sort,
 // which needs a strict weak order, and an undecided interval comparison answers arbitrarily, so the
@@ -758,9 +764,14 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
         fast = semi_static::decide(p, box, cyl);           // stage 0
         if (!fast) fast = witness_search::decide(p, box, cyl);  // stage 0b
     }
-    if (!fast) fast = filter(box, cyl);  // stage 1
+    if (!fast) fast = filter<Bounded>(box, cyl);  // stage 1
+#if !defined(BOXCYL_MIDDLE_STAGE) || BOXCYL_MIDDLE_STAGE
+    // The middle stage before stage 1's Interval run and the thorough witness search: on the queries
+    // that get this far (near touching) it decides more, and costs less than either of them.
+    if (!fast) fast = middle(box, cyl);
+#endif
+    if (!fast) fast = filter<Interval>(box, cyl);  // stage 1, tight enclosure
     if (!fast && in_range && witness_search::certain_hit(p, box, cyl)) fast = true;
-    if (!fast) fast = middle(box, cyl);  // the middle stage
     if (!fast) return {exact_answer(box, cyl), true};
 #if defined(BOXCYL_CHECK_FILTER) && BOXCYL_CHECK_FILTER
     if (exact_answer(box, cyl) != *fast)
