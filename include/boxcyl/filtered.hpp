@@ -59,7 +59,9 @@
 #include <optional>   // stage 1's "undecided"
 #include <stdexcept>  // std::logic_error (BOXCYL_CHECK_FILTER)
 #include <string>     // the CHECK_FILTER message
+#include <type_traits>  // std::is_same_v: the middle stage per box kind
 
+#include "boxcyl/algo/convex_hull.hpp"
 #include "boxcyl/algo/linear_inequalities.hpp"
 #include "boxcyl/exact_paths.hpp"
 #include "boxcyl/filtered/semi_static.hpp"
@@ -708,9 +710,50 @@ std::optional<bool> filter(const Box& box, const Cylinder<double>& cyl) {
 // (number/double_double.hpp: about 2^-100 relative per operation), so that every input that is not
 // exactly touching and whose exact problem stage 1 encloses without widening is decided here, not in
 // exact arithmetic. Round to nearest only: in any other mode it declines (the exact stage answers).
+//
+// An oriented box whose frame is not a signed permutation (a rotation rounded to double) is not a
+// rectangular box: stage 1 widens it by η (about 2^-52 relative), within which near-touching inputs
+// stay undecided at any precision. The middle stage runs §3 (algo/convex_hull.hpp) on the exact
+// parallelepiped instead, every length an enclosure: if no comparison was undecided, the exact
+// computation takes the same branches (the hull's sort included: an undecided comparison answers by
+// the order of the values, so the sort always sees a strict weak order) and gives the same answer.
+inline std::optional<bool> middle_hull(const OrientedBox<double>& b, const Cylinder<double>& c) {
+    using N = DoubleDouble;
+    double m = 0;
+    update_max(m, b.center);
+    update_max(m, b.extents);
+    update_max(m, c.center);
+    update_max(m, c.radius);
+    update_max(m, c.height);
+    const int k = scale_exponent(m);
+    algo::Parallelepiped<N> p;
+    UnitCylinder<N> u;
+    for (int i = 0; i < 3; ++i) {
+        p.center[i] = scaled<N>(b.center[i], k);
+        u.center[i] = scaled<N>(c.center[i], k);
+        const N e = scaled_nonneg<N>(b.extents[i], k);
+        for (int j = 0; j < 3; ++j) p.half_edges[i][j] = e * N(b.axes[i][j]);
+    }
+    u.radius = scaled_nonneg<N>(c.radius, k);
+    u.half_height = scaled_nonneg<N>(c.height, k - 1);
+    UncertaintyScope scope;
+    u.direction = unit_direction<N>(c.axis);
+    const bool answer = algo::convex_hull(p, u);
+    if (!scope.certain()) return std::nullopt;
+    return answer;
+}
 template <class Box>
 std::optional<bool> middle(const Box& box, const Cylinder<double>& cyl) {
     if (!boxcyl::detail::round_to_nearest()) return std::nullopt;
+    if constexpr (std::is_same_v<Box, OrientedBox<double>>) {
+        int perm[3];
+        double sign[3];
+        if (!signed_permutation(box.axes, perm, sign)) {
+            // §3 decides what η leaves undecided; the certificates of filter() (frame_hit) decide
+            // some hits whose hull comparisons are degenerate (e.g. an edge parallel to the axis).
+            if (const std::optional<bool> r = middle_hull(box, cyl)) return r;
+        }
+    }
     return filter<DoubleDouble>(box, cyl);
 }
 

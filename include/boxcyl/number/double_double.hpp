@@ -223,14 +223,18 @@ public:
         if (slack < -d.hi_) return -1;
         return 2;
     }
+    // An undecided comparison is recorded and answers by the order of the values (value_order), so
+    // that the comparisons a sort makes always form a strict weak order (§3's hull sorts points).
     BOXCYL_DD_INLINE friend bool operator<(const DoubleDouble& a, const DoubleDouble& b) {
-        const int s = compare(a, b);
-        if (s == 2) return uncertain();
+        int s = compare(a, b);
+        if (s == 2) [[unlikely]]
+            s = undecided_order(a, b);
         return s > 0;
     }
     BOXCYL_DD_INLINE friend bool operator<=(const DoubleDouble& a, const DoubleDouble& b) {
-        const int s = compare(a, b);
-        if (s == 2) return uncertain();
+        int s = compare(a, b);
+        if (s == 2) [[unlikely]]
+            s = undecided_order(a, b);
         return s >= 0;
     }
     BOXCYL_DD_INLINE friend bool operator>(const DoubleDouble& a, const DoubleDouble& b) { return b < a; }
@@ -268,9 +272,21 @@ private:
         const double nan = std::numeric_limits<double>::quiet_NaN();
         return {nan, nan, std::numeric_limits<double>::infinity()};
     }
-    static bool uncertain() {
+    // The sign of b − a for the values hi + lo (exactly: the double-double difference has the sign of
+    // the difference of the values, its relative error being below 1), with every non-finite value
+    // after every finite one and equal to the others. A total preorder; and every decided comparison
+    // agrees with it (a decided sign is d_hi's sign, and so is the values'), so mixing decided and
+    // undecided answers still gives a strict weak order.
+    static int undecided_order(const DoubleDouble& a, const DoubleDouble& b) {
         detail::uncertain_flag = true;
-        return false;
+        const bool sa = !a.finite(), sb = !b.finite();
+        if (sa || sb) return sa == sb ? 0 : (sa ? -1 : 1);
+        const DoubleDouble d = b - a;
+        return (d.hi_ > 0) - (d.hi_ < 0);
+    }
+    bool finite() const {
+        constexpr double big = std::numeric_limits<double>::max();
+        return std::fabs(hi_) <= big && std::fabs(lo_) <= big;
     }
 
     double hi_ = 0, lo_ = 0, e_ = 0;
