@@ -406,10 +406,10 @@ Widened<N> widen(const CanonicalQuery<N>& q, double on_cyl, double on_box) {
 // as for the nearly orthonormal frames. The widened problems have exact zero components (the cheap
 // §4 classes) and only cases within η ≈ 2^-28·(H + r) of touching remain undecided: those run §4 on
 // the axis as given next.
-inline bool tiny_components_zeroed(const Vec3<double>& a, Vec3<double>& zeroed) {
+inline bool tiny_components_zeroed(const Vec3<double>& a, Vec3<double>& zeroed, int exponent = -30) {
     double m = 0;
     update_max(m, a);
-    const double limit = std::ldexp(m, -30);
+    const double limit = std::ldexp(m, exponent);
     bool any = false;
     zeroed = a;
     for (int i = 0; i < 3; ++i)
@@ -418,10 +418,36 @@ inline bool tiny_components_zeroed(const Vec3<double>& a, Vec3<double>& zeroed) 
 }
 // §4 for the cylinder axis a (the other sizes of q already set; `direction_of` turns a unit-axis
 // enclosure into the box frame's direction, e.g. a signed permutation).
+// The middle stage's form of the same (DoubleDouble): components below 2^-200 of the largest are
+// zeroed (θ ≤ 2^-198, so η = θ(H + r) is far below any gap it can decide), and instead of two widened
+// problems with point sizes (rounding a size to a double would cost its 2^-100 precision) one run
+// takes every size as the enclosure [s − η, s + η]: a decided answer holds for every problem in it,
+// the widened one (a miss certifies a miss) and the narrowed one (a hit certifies a hit — only if
+// every size is ≥ η, so that the narrowed cylinder exists and lies inside the exact one).
+template <class N, class Frame>
+std::optional<bool> decide_tiny_axis_spread(const CanonicalQuery<N>& q, const Vec3<double>& a0, Frame&& direction_of,
+                                            double scale) {
+    CanonicalQuery<N> z = q;
+    z.cylinder.direction = direction_of(unit_direction<N>(a0));
+    const double reach = (N(q.cylinder.half_height.hi()) + N(q.cylinder.radius.hi())).hi();
+    const double eta = boxcyl::detail::next_up(0x1p-198 * reach);
+    if (!(eta < std::numeric_limits<double>::infinity())) return std::nullopt;
+    bool thin = false;
+    for (N* size : {&z.cylinder.radius, &z.cylinder.half_height}) {
+        if (!(size->lo() >= eta)) thin = true;
+        *size = nonneg(N(size->high(), size->low(), boxcyl::detail::next_up(size->error() + eta)));
+    }
+    const std::optional<bool> r = decide(z, scale);
+    if (r && (!*r || !thin)) return r;
+    return std::nullopt;
+}
 template <class N, class Frame>
 std::optional<bool> decide_axis(CanonicalQuery<N> q, const Vec3<double>& a, Frame&& direction_of, double scale) {
     Vec3<double> a0;
-    if (tiny_components_zeroed(a, a0)) {
+    if constexpr (std::is_same_v<N, DoubleDouble>) {
+        if (tiny_components_zeroed(a, a0, -200))
+            if (const std::optional<bool> r = decide_tiny_axis_spread(q, a0, direction_of, scale)) return r;
+    } else if (tiny_components_zeroed(a, a0)) {
         CanonicalQuery<N> z = q;
         z.cylinder.direction = direction_of(unit_direction<N>(a0));
         const double reach = (N(q.cylinder.half_height.hi()) + N(q.cylinder.radius.hi())).hi();
@@ -736,11 +762,36 @@ inline std::optional<bool> middle_hull(const OrientedBox<double>& b, const Cylin
     }
     u.radius = scaled_nonneg<N>(c.radius, k);
     u.half_height = scaled_nonneg<N>(c.height, k - 1);
-    UncertaintyScope scope;
-    u.direction = unit_direction<N>(c.axis);
-    const bool answer = algo::convex_hull(p, u);
-    if (!scope.certain()) return std::nullopt;
-    return answer;
+    auto run = [&p](const UnitCylinder<N>& cyl) -> std::optional<bool> {
+        UncertaintyScope scope;
+        const bool answer = algo::convex_hull(p, cyl);
+        if (!scope.certain()) return std::nullopt;
+        return answer;
+    };
+    // Axis components below 2^-200 of the largest: zeroed, with the sizes spread by η (as
+    // decide_tiny_axis_spread does for §4).
+    Vec3<double> a0;
+    if (tiny_components_zeroed(c.axis, a0, -200)) {
+        UnitCylinder<N> z = u;
+        z.direction = unit_direction<N>(a0);
+        const double reach = (N(u.half_height.hi()) + N(u.radius.hi())).hi();
+        const double eta = boxcyl::detail::next_up(0x1p-198 * reach);
+        if (eta < std::numeric_limits<double>::infinity()) {
+            bool thin = false;
+            for (N* size : {&z.radius, &z.half_height}) {
+                if (!(size->lo() >= eta)) thin = true;
+                *size = nonneg(N(size->high(), size->low(), boxcyl::detail::next_up(size->error() + eta)));
+            }
+            const std::optional<bool> r = run(z);
+            if (r && (!*r || !thin)) return r;
+        }
+    }
+    {
+        UncertaintyScope scope;
+        u.direction = unit_direction<N>(c.axis);
+        if (!scope.certain()) return std::nullopt;
+    }
+    return run(u);
 }
 template <class Box>
 std::optional<bool> middle(const Box& box, const Cylinder<double>& cyl) {
