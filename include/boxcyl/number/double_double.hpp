@@ -27,9 +27,9 @@
 //        |A/B − q| = |A − qB|/|B| ≤ (|r| + e_r)/(|b| − e_b),   r = a − q·b,
 //        |√X − s| = |X − s²|/(√X + s) ≤ (|r| + e_r)/s,        r = x − s·s,
 //    where e_r, the residual's running bound, already covers the input errors e_a, e_b, e_x.
-//  * Exact results stay exact (e = 0): a sum or product of two doubles is a double-double exactly, a
-//    sum whose two inner roundings were exact (checked) is exact, and an exact zero stays zero, so the
-//    degenerate comparisons of exactly zero differences stay decidable.
+//  * Exact results stay exact (e = 0): a sum or product of two doubles is a double-double exactly, and
+//    a result 0 of exact operands is exactly 0, so the degenerate comparisons of exactly zero
+//    differences stay decidable.
 //  * The bounds are computed in double from non-negative terms by sums and products (and quotients by
 //    a lower bound): each rounding lowers them by a factor ≥ (1 − 2^-52) at most, and comparisons
 //    inflate the final bound by M = 1 + 2^-30, which covers chains of up to 2^21 roundings.
@@ -96,10 +96,6 @@ BOXCYL_DD_INLINE double mul_add(double x, double y, double z) {
     return x * y + z;
 #endif
 }
-// Whether the rounded sum s of x and y is exact (round to nearest; as interval.hpp's exact_sum).
-BOXCYL_DD_INLINE bool exact_sum(double x, double y, double s) {
-    return std::fabs(x) >= std::fabs(y) ? s - x == y : s - y == x;
-}
 
 }  // namespace detail::dd
 
@@ -145,8 +141,9 @@ public:
         detail::dd::fast_two_sum(sh, c, vh, vl);
         const double w = tl + vl;
         detail::dd::fast_two_sum(vh, w, zh, zl);
-        // Exact when both inner sums were: the rest are error-free transformations.
-        const bool exact = detail::dd::exact_sum(sl, th, c) && detail::dd::exact_sum(tl, vl, w);
+        // Two doubles: TwoSum alone (th = tl = 0, c = sl and both Fast2Sums meet their precondition),
+        // exact. An exact zero result needs no term either (rel·|0| = 0).
+        const bool exact = a.lo_ == 0 && b.lo_ == 0;
         return {zh, zl, a.e_ + b.e_ + (exact ? 0.0 : rel * std::fabs(zh))};
     }
     BOXCYL_DD_INLINE friend DoubleDouble operator-(const DoubleDouble& a) { return {-a.hi_, -a.lo_, a.e_}; }
