@@ -106,7 +106,7 @@ cat <<'WHERE'
 
 ## Where the time goes in today's design
 
-The default query (\`include/boxcyl/filtered.hpp\`; derivations in docs/robustness.md) runs these
+The default query (`include/boxcyl/filtered.hpp`; derivations in docs/robustness.md) runs these
 stages in order and stops at the first that decides:
 
 1. **Stage 0**, the semi-static filter: a dozen separating-axis and witness tests in plain double with
@@ -132,23 +132,26 @@ double §4 (stage 0 tests less than §4 computes). Near touching, the middle sta
 fallbacks by a few µs of double-double arithmetic; the exact stage's cost on what remains then
 dominates the means of the boundary and adversarial sets. The table *the stages alone* gives each
 candidate's cost on the queries the middle stage decides, which is why it runs before stage 1's
-Interval run and the thorough search: both cost more there and decide less.
+Interval run and the thorough search: both cost more there and decide less. Stage 1's Bounded run,
+which still comes first (it is what decides in the other rounding modes, and on random data), is of
+the same order as the middle stage on those queries: on near-touching data most of a decided query's
+time is Bounded plus the middle stage, and most of a set's time is its exact fallbacks.
 
-## All algorithms and the peer libraries (\`bench/bench_query.cpp\`, \`bench/peers.cpp\`)
+## All algorithms and the peer libraries (`bench/bench_query.cpp`, `bench/peers.cpp`)
 
 On the random and boundary sets (4096 and 1024 queries; the exact path and the oracle, about 10³×
 slower, answer the first 256 of the same array):
 
-- **§4 / §3 / §2, double / float**: \`boxcyl::intersects(box, cyl, {algorithm, arithmetic})\`; rounded,
+- **§4 / §3 / §2, double / float**: `boxcyl::intersects(box, cyl, {algorithm, arithmetic})`; rounded,
   wrong near touching. §2 in double answers with exact §2 when its Lemke solver fails, which shows in
   its time on the boundary set; on an oriented box with a rounded (not exactly orthonormal) frame that
   exact §2 throws std::domain_error (*threw*). float rows convert the double inputs to float; about a
   third of the random set lies outside float's range (tiny axis components, 2^±20 scales), and all of
   float's wrong answers there are among those.
-- **exact path alone**: \`Arithmetic::exact\`, chosen as the filtered query's fallback chooses (§4 in
+- **exact path alone**: `Arithmetic::exact`, chosen as the filtered query's fallback chooses (§4 in
   Q(√d) on aligned, canonical and signed-permutation boxes, §3 on other oriented boxes): the cost of
   one fallback.
-- **exact fallbacks**: the fraction of the queries for which \`filtered::query(...).exact_used\`,
+- **exact fallbacks**: the fraction of the queries for which `filtered::query(...).exact_used`,
   counted untimed over the same array.
 - **wrong vs oracle**: answers different from the exact oracle's, counted untimed (a throw counts as
   the answer false).
@@ -161,14 +164,14 @@ axis/|axis|, radius, full height as its length). Each data set is converted once
 time is its narrow-phase call alone, while boxcyl's includes its own reduction to the canonical frame.
 The conversions round, so on the boundary set a peer may also be wrong for the rounded inputs' sake.
 
-- **FCL**: \`fcl::collide\` on \`Box\` and \`Cylinder\` shapes, one contact, no contact data, the
-  request's default \`gjk_tolerance\` (1e-6, absolute), with FCL's default solver \`GST_LIBCCD\` (for a
-  yes/no query on this pair it runs libccd's MPR, \`ccdMPRIntersect\`) and with \`GST_INDEP\` (FCL's
+- **FCL**: `fcl::collide` on `Box` and `Cylinder` shapes, one contact, no contact data, the
+  request's default `gjk_tolerance` (1e-6, absolute), with FCL's default solver `GST_LIBCCD` (for a
+  yes/no query on this pair it runs libccd's MPR, `ccdMPRIntersect`) and with `GST_INDEP` (FCL's
   own GJK).
-- **Bullet**: \`btGjkPairDetector\` on \`btBoxShape\` and \`btCylinderShapeZ\` with margins 0 (half extents
-  set exactly after \`setMargin(0)\`), \`btVoronoiSimplexSolver\` and \`btGjkEpaPenetrationDepthSolver\`;
+- **Bullet**: `btGjkPairDetector` on `btBoxShape` and `btCylinderShapeZ` with margins 0 (half extents
+  set exactly after `setMargin(0)`), `btVoronoiSimplexSolver` and `btGjkEpaPenetrationDepthSolver`;
   intersecting when it reports a distance ≤ 0.
-- **ODE**: \`dCollide\` on \`dCreateBox\` and \`dCreateCylinder\` geoms (its \`dCollideCylinderBox\`, a
+- **ODE**: `dCollide` on `dCreateBox` and `dCreateCylinder` geoms (its `dCollideCylinderBox`, a
   separating-axis test with clipping), with a buffer of one contact; intersecting when it returns a
   contact. Debian's ODE has its internal assertions on, and on some inputs (e.g. with a flat box,
   where it normalises a zero vector) it would abort: such a query is tried once, untimed, with a
