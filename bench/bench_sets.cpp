@@ -316,6 +316,7 @@ int main(int argc, char** argv) {
     args.push_back(quick ? "--benchmark_min_time=0.01" : "--benchmark_min_time=0.2");
     args.insert(args.end(), user.begin(), user.end());
     std::vector<char*> cargs;
+    cargs.reserve(args.size());
     for (std::string& a : args) cargs.push_back(a.data());
     int cargc = static_cast<int>(cargs.size());
     benchmark::Initialize(&cargc, cargs.data());
