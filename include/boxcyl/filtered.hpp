@@ -20,6 +20,11 @@
 //   (certain_hit, frame_hit: a witness point solved exactly in real arithmetic, only inequalities
 //   checked on enclosures) and thickened sizes (misses) decide most of the rest (docs/robustness.md §5).
 //   Before stage 2, a thorough witness search tries once more to certify a hit.
+//   The middle stage: stage 1 once more in double-double with a running error bound
+//   (number/double_double.hpp, ≈2^-100 relative per operation): near-touching inputs that are not
+//   exactly touching are decided here (docs/robustness.md, The middle stage). Round to nearest only.
+//   It runs after stage 1's Bounded run, before its Interval run and the thorough witness search,
+//   which cost more on the queries that reach it (bench/bench_sets.cpp).
 //   Stage 2, the exact fallback (only when stage 1 could not decide): linear inequalities evaluated in integers and
 //   Z[√d] after scaling by a power of two (exact/integer_inequalities.hpp: no rationals) for aligned
 //   and canonical boxes and for exactly orthonormal frames (signed permutations: the only exactly
@@ -41,6 +46,7 @@
 //   BOXCYL_FORCE_EXACT=1   skip stage 1: every query answers with stage 2 (exact_used == true).
 //   BOXCYL_CHECK_FILTER=1  whenever stage 1 decides, also run stage 2; on a mismatch throw
 //                          std::logic_error naming the case (hex floats, copy-pasteable).
+//   BOXCYL_MIDDLE_STAGE=0  skip the middle stage (what it saves is measured by bench/bench_sets.cpp).
 //
 // The convex-hull method is deliberately not offered as a filtered stage 1: it sorts points with std::sort,
 // which needs a strict weak order, and an undecided interval comparison answers arbitrarily, so the
@@ -55,7 +61,9 @@
 #include <optional>   // stage 1's "undecided"
 #include <stdexcept>  // std::logic_error (BOXCYL_CHECK_FILTER)
 #include <string>     // the CHECK_FILTER message
+#include <type_traits>  // std::is_same_v: the middle stage per box kind
 
+#include "boxcyl/algo/convex_hull.hpp"
 #include "boxcyl/algo/linear_inequalities.hpp"
 #include "boxcyl/exact/integer_inequalities.hpp"
 #include "boxcyl/exact/integer_parallelepiped.hpp"
@@ -67,6 +75,7 @@
 #include "boxcyl/geometry/reduce.hpp"
 #include "boxcyl/geometry/validate.hpp"
 #include "boxcyl/number/bounded.hpp"
+#include "boxcyl/number/double_double.hpp"
 #include "boxcyl/number/interval.hpp"
 #include "boxcyl/oracle/oracle.hpp"  // to_exact: the rationals the doubles denote
 
@@ -405,22 +414,48 @@ Widened<N> widen(const CanonicalQuery<N>& q, double on_cyl, double on_box) {
 // as for the nearly orthonormal frames. The widened problems have exact zero components (the cheap
 // direction classes) and only cases within η ≈ 2^-28·(H + r) of touching remain undecided: those run on
 // the axis as given next.
-inline bool tiny_components_zeroed(const Vec3<double>& a, Vec3<double>& zeroed) {
+inline bool tiny_components_zeroed(const Vec3<double>& a, Vec3<double>& zeroed, int exponent = -30) {
     double m = 0;
     update_max(m, a);
-    const double limit = std::ldexp(m, -30);
+    const double limit = std::ldexp(m, exponent);
     bool any = false;
     zeroed = a;
     for (int i = 0; i < 3; ++i)
         if (a[i] != 0 && std::fabs(a[i]) <= limit) zeroed[i] = 0, any = true;
     return any;
 }
-// The linear-inequalities method for the cylinder axis a (the other sizes of q already set; `direction_of`
-// turns a unit-axis enclosure into the box frame's direction, e.g. a signed permutation).
+// The linear-inequalities method for the cylinder axis a (the other sizes of q already set; `direction_of` turns a unit-axis
+// enclosure into the box frame's direction, e.g. a signed permutation).
+// The middle stage's form of the same (DoubleDouble): components below 2^-200 of the largest are
+// zeroed (θ ≤ 2^-198, so η = θ(H + r) is far below any gap it can decide), and instead of two widened
+// problems with point sizes (rounding a size to a double would cost its 2^-100 precision) one run
+// takes every size as the enclosure [s − η, s + η]: a decided answer holds for every problem in it,
+// the widened one (a miss certifies a miss) and the narrowed one (a hit certifies a hit — only if
+// every size is ≥ η, so that the narrowed cylinder exists and lies inside the exact one).
+template <class N, class Frame>
+std::optional<bool> decide_tiny_axis_spread(const CanonicalQuery<N>& q, const Vec3<double>& a0, Frame&& direction_of,
+                                            double scale) {
+    CanonicalQuery<N> z = q;
+    z.cylinder.direction = direction_of(unit_direction<N>(a0));
+    const double reach = (N(q.cylinder.half_height.hi()) + N(q.cylinder.radius.hi())).hi();
+    const double eta = boxcyl::detail::next_up(0x1p-198 * reach);
+    if (!(eta < std::numeric_limits<double>::infinity())) return std::nullopt;
+    bool thin = false;
+    for (N* size : {&z.cylinder.radius, &z.cylinder.half_height}) {
+        if (!(size->lo() >= eta)) thin = true;
+        *size = nonneg(N(size->high(), size->low(), boxcyl::detail::next_up(size->error() + eta)));
+    }
+    const std::optional<bool> r = decide(z, scale);
+    if (r && (!*r || !thin)) return r;
+    return std::nullopt;
+}
 template <class N, class Frame>
 std::optional<bool> decide_axis(CanonicalQuery<N> q, const Vec3<double>& a, Frame&& direction_of, double scale) {
     Vec3<double> a0;
-    if (tiny_components_zeroed(a, a0)) {
+    if constexpr (std::is_same_v<N, DoubleDouble>) {
+        if (tiny_components_zeroed(a, a0, -200))
+            if (const std::optional<bool> r = decide_tiny_axis_spread(q, a0, direction_of, scale)) return r;
+    } else if (tiny_components_zeroed(a, a0)) {
         CanonicalQuery<N> z = q;
         z.cylinder.direction = direction_of(unit_direction<N>(a0));
         const double reach = (N(q.cylinder.half_height.hi()) + N(q.cylinder.radius.hi())).hi();
@@ -705,10 +740,86 @@ std::optional<bool> filter(const Box& box, const Cylinder<double>& cyl) {
     return filter<Interval>(box, cyl);
 }
 
+// The middle stage: stage 1's evaluation again, in double-double with a running error bound
+// (number/double_double.hpp: about 2^-100 relative per operation), so that every input that is not
+// exactly touching and whose exact problem stage 1 encloses without widening is decided here, not in
+// exact arithmetic. Round to nearest only: in any other mode it declines (the exact stage answers).
+//
+// An oriented box whose frame is not a signed permutation (a rotation rounded to double) is not a
+// rectangular box: stage 1 widens it by η (about 2^-52 relative), within which near-touching inputs
+// stay undecided at any precision. The middle stage runs the convex-hull method (algo/convex_hull.hpp) on the exact
+// parallelepiped instead, every length an enclosure: if no comparison was undecided, the exact
+// computation takes the same branches (the hull's sort included: an undecided comparison answers by
+// the order of the values, so the sort always sees a strict weak order) and gives the same answer.
+inline std::optional<bool> middle_hull(const OrientedBox<double>& b, const Cylinder<double>& c) {
+    using N = DoubleDouble;
+    double m = 0;
+    update_max(m, b.center);
+    update_max(m, b.extents);
+    update_max(m, c.center);
+    update_max(m, c.radius);
+    update_max(m, c.height);
+    const int k = scale_exponent(m);
+    algo::Parallelepiped<N> p;
+    UnitCylinder<N> u;
+    for (int i = 0; i < 3; ++i) {
+        p.center[i] = scaled<N>(b.center[i], k);
+        u.center[i] = scaled<N>(c.center[i], k);
+        const N e = scaled_nonneg<N>(b.extents[i], k);
+        for (int j = 0; j < 3; ++j) p.half_edges[i][j] = e * N(b.axes[i][j]);
+    }
+    u.radius = scaled_nonneg<N>(c.radius, k);
+    u.half_height = scaled_nonneg<N>(c.height, k - 1);
+    auto run = [&p](const UnitCylinder<N>& cyl) -> std::optional<bool> {
+        UncertaintyScope scope;
+        const bool answer = algo::convex_hull(p, cyl);
+        if (!scope.certain()) return std::nullopt;
+        return answer;
+    };
+    // Axis components below 2^-200 of the largest: zeroed, with the sizes spread by η (as
+    // decide_tiny_axis_spread does for the linear-inequalities method).
+    Vec3<double> a0;
+    if (tiny_components_zeroed(c.axis, a0, -200)) {
+        UnitCylinder<N> z = u;
+        z.direction = unit_direction<N>(a0);
+        const double reach = (N(u.half_height.hi()) + N(u.radius.hi())).hi();
+        const double eta = boxcyl::detail::next_up(0x1p-198 * reach);
+        if (eta < std::numeric_limits<double>::infinity()) {
+            bool thin = false;
+            for (N* size : {&z.radius, &z.half_height}) {
+                if (!(size->lo() >= eta)) thin = true;
+                *size = nonneg(N(size->high(), size->low(), boxcyl::detail::next_up(size->error() + eta)));
+            }
+            const std::optional<bool> r = run(z);
+            if (r && (!*r || !thin)) return r;
+        }
+    }
+    {
+        UncertaintyScope scope;
+        u.direction = unit_direction<N>(c.axis);
+        if (!scope.certain()) return std::nullopt;
+    }
+    return run(u);
+}
+template <class Box>
+std::optional<bool> middle(const Box& box, const Cylinder<double>& cyl) {
+    if (!boxcyl::detail::round_to_nearest()) return std::nullopt;
+    if constexpr (std::is_same_v<Box, OrientedBox<double>>) {
+        int perm[3];
+        double sign[3];
+        if (!signed_permutation(box.axes, perm, sign)) {
+            // The convex-hull method decides what η leaves undecided; the certificates of filter() (frame_hit) decide
+            // some hits whose hull comparisons are degenerate (e.g. an edge parallel to the axis).
+            if (const std::optional<bool> r = middle_hull(box, cyl)) return r;
+        }
+    }
+    return filter<DoubleDouble>(box, cyl);
+}
+
 // ---- Stage 2: exact, without the oracle. ----
 
-// §4 in integers (exact/integer_inequalities.hpp) wherever the canonical frame is exact, the
-// parallelepiped test in integers (exact/integer_parallelepiped.hpp) for other frames, §3 in Q(√d)
+// Linear inequalities in integers (exact/integer_inequalities.hpp) wherever the canonical frame is exact, the
+// parallelepiped test in integers (exact/integer_parallelepiped.hpp) for other frames, the convex-hull method in Q(√d)
 // for flat oriented boxes.
 inline bool exact_answer(const AlignedBox<double>& b, const Cylinder<double>& c) {
     return exact::integer::intersects(b, c);
@@ -758,7 +869,13 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
         if (const std::optional<bool> e = exact::integer::answer_if_narrow(box, cyl)) return {*e, true};
     }
     if (!fast && in_range) fast = witness_search::decide(p, box, cyl);  // stage 0b
-    if (!fast) fast = filter(box, cyl);  // stage 1
+    if (!fast) fast = filter<Bounded>(box, cyl);  // stage 1
+#if !defined(BOXCYL_MIDDLE_STAGE) || BOXCYL_MIDDLE_STAGE
+    // The middle stage before stage 1's Interval run and the thorough witness search: on the queries
+    // that get this far (near touching) it decides more, and costs less than either of them.
+    if (!fast) fast = middle(box, cyl);
+#endif
+    if (!fast) fast = filter<Interval>(box, cyl);  // stage 1, tight enclosure
     if (!fast && in_range && witness_search::certain_hit(p, box, cyl)) fast = true;
     if (!fast) return {exact_answer(box, cyl), true};
 #if defined(BOXCYL_CHECK_FILTER) && BOXCYL_CHECK_FILTER

@@ -1,7 +1,7 @@
 // The exact stage for an oriented box whose frame is orthonormal only up to rounding (a rotation
 // rounded to double), in integers and Z[√d] as exact/integer_inequalities.hpp: the box is the
 // parallelepiped B = {K + Σ λ_m·a_m : |λ_m| ≤ 1} with the half-edge vectors a_m = e_m·A_m exactly as
-// given (docs/robustness.md §10). With P = B ∩ slab and π the projection along the axis:
+// given (docs/robustness.md §11). With P = B ∩ slab and π the projection along the axis:
 //   the cylinder meets B  ⇔  the axis segment meets B, or some edge of P is within r of the axis line
 // (π(P) is a convex polygon: the axis' image O lies in it iff the axis segment meets P, and otherwise
 // its distance to π(P) is attained on the boundary, whose edges are images of edges of P). Every edge

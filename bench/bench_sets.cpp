@@ -1,0 +1,389 @@
+// The default exact query against plain double §4 on four sets, side by side in one run, and where its
+// time goes by deciding stage (docs/performance.md; scripts/bench.sh runs it):
+//   random       4096 mixed queries (CaseGenerator, seed 0xb0c5c701, bench_query's random set)
+//   boundary     512 pairs one ulp apart with opposite exact answers (seed 0xb0c5c702)
+//   touching     2048 exactly touching shapes and one-ulp neighbours (touching_case, seed 0xb0c5c705)
+//   adversarial  2048 near-touching cases (adversarial_case, seed 0xb0c5c706)
+//   voxels       the 21³ unit cells of [−10, 11]³ against a cylinder of radius 8 and height 16 centred on
+//                a grid node, axis z: its side and caps touch cell faces exactly (per box: scalar
+//                queries, the batch API and the grid query over the same cells)
+// Columns per set: the default query (`intersects(box, cyl)`), the same pipeline without the middle
+// stage (stage 1's undecided queries go straight to the exact stage, as before the middle stage
+// existed: "without middle"), and plain double §4 (`{Algorithm::inequalities, Arithmetic::float64}`).
+// Per stage: how many queries of the set each stage decides, in the order they run (0: semi-static,
+// 0b: witness search, 1 Bounded: §4 and the hit certificates on Bounded, middle: the same on
+// DoubleDouble, 1 Interval: the same on Interval, the thorough witness search, exact), and the default
+// query's mean time on that subset, timed on its own.
+// Built a second time as bench_sets_before with BOXCYL_MIDDLE_STAGE=0 (the library without the middle
+// stage), so that the batch API and the grid query, which call the library's scalar query, can be
+// compared too (two runs: those ratios are across processes).
+//
+// Usage: bench_sets [--markdown=FILE] [--quick] [benchmark flags...]
+#include <benchmark/benchmark.h>
+
+#include <algorithm>  // std::sort
+#include <array>      // stage counts
+#include <cstdint>    // seeds
+#include <cstdio>     // std::printf
+#include <map>        // results by name
+#include <random>     // std::mt19937_64
+#include <string>     // names
+#include <vector>     // sets
+
+#include "boxcyl/batch.hpp"
+#include "boxcyl/filtered.hpp"
+#include "boxcyl/grid.hpp"
+#include "boxcyl/query.hpp"
+#include "support/cases.hpp"
+#include "support/near_touching.hpp"
+
+namespace {
+
+using namespace boxcyl;
+using boxcyl::testing::Case;
+using boxcyl::testing::with_box;
+
+#if !defined(BOXCYL_MIDDLE_STAGE) || BOXCYL_MIDDLE_STAGE
+constexpr const char* kBuild = "with the middle stage";
+#else
+constexpr const char* kBuild = "without the middle stage (BOXCYL_MIDDLE_STAGE=0)";
+#endif
+
+enum Stage { s0, s0b, s1b, smiddle, s1i, sthorough, sexact, kStages };
+constexpr const char* kStageName[kStages] = {"0 semi-static",  "0b witness search",       "1 Bounded",
+                                             "middle (double-double)", "1 Interval", "thorough witness search",
+                                             "exact"};
+
+// The stage that decides the query, replaying filtered::detail::run's order.
+template <class Box>
+Stage deciding_stage(const Box& box, const Cylinder<double>& cyl) {
+    namespace f = filtered;
+    f::semi_static::Problem p;
+    const bool in_range = f::semi_static::problem(box, cyl, p);
+    if (in_range && f::semi_static::decide(p, box, cyl)) return s0;
+    if (in_range && f::witness_search::decide(p, box, cyl)) return s0b;
+    if (f::detail::filter<Bounded>(box, cyl)) return s1b;
+    if (f::detail::middle(box, cyl)) return smiddle;
+    if (f::detail::filter<Interval>(box, cyl)) return s1i;
+    if (in_range && f::witness_search::certain_hit(p, box, cyl)) return sthorough;
+    return sexact;
+}
+// The default pipeline without the middle stage (what the library did before it: stage 1 is Bounded
+// then Interval, then the thorough witness search, then exact).
+template <class Box>
+bool without_middle(const Box& box, const Cylinder<double>& cyl) {
+    namespace f = filtered;
+    f::semi_static::Problem p;
+    const bool in_range = f::semi_static::problem(box, cyl, p);
+    std::optional<bool> fast;
+    if (in_range) {
+        fast = f::semi_static::decide(p, box, cyl);
+        if (!fast) fast = f::witness_search::decide(p, box, cyl);
+    }
+    if (!fast) fast = f::detail::filter(box, cyl);
+    if (!fast && in_range && f::witness_search::certain_hit(p, box, cyl)) fast = true;
+    if (!fast) return f::detail::exact_answer(box, cyl);
+    return *fast;
+}
+
+// The methods timed: the three queries, then the stages alone (stage 1's two enclosures, the
+// thorough witness search, the middle stage) on the queries that reach the middle stage.
+enum class Method { default_query, without_middle, double_s4, bounded, interval, thorough, middle, kCount };
+constexpr const char* kMethodKey[] = {"default", "without_middle", "double_s4", "alone_bounded", "alone_interval",
+                                      "alone_thorough_search", "alone_middle"};
+
+template <Method M>
+bool answer(const Case& c) {
+    return with_box(c, [](const auto& b, const Cylinder<double>& cyl) {
+        namespace f = filtered;
+        if constexpr (M == Method::default_query) {
+            return intersects(b, cyl);
+        } else if constexpr (M == Method::without_middle) {
+            return without_middle(b, cyl);
+        } else if constexpr (M == Method::double_s4) {
+            return intersects(b, cyl, {Algorithm::inequalities, Arithmetic::float64});
+        } else if constexpr (M == Method::bounded) {
+            return f::detail::filter<Bounded>(b, cyl).value_or(false);
+        } else if constexpr (M == Method::interval) {
+            return f::detail::filter<Interval>(b, cyl).value_or(false);
+        } else if constexpr (M == Method::thorough) {
+            f::semi_static::Problem p;
+            return f::semi_static::problem(b, cyl, p) && f::witness_search::certain_hit(p, b, cyl);
+        } else {
+            return f::detail::middle(b, cyl).value_or(false);
+        }
+    });
+}
+
+struct Set {
+    std::string name, title;
+    std::vector<Case> cases;
+    std::array<std::vector<Case>, kStages> by_stage;
+    long wrong_default = 0;
+};
+
+std::map<std::string, double> g_ns;  // median ns per query, by benchmark name
+
+template <Method M>
+void timed(benchmark::State& state, const std::vector<Case>* cases) {
+    long hits = 0;
+    for (auto _ : state) {
+        for (const Case& c : *cases) hits += answer<M>(c);
+        benchmark::DoNotOptimize(hits);
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<benchmark::IterationCount>(cases->size()));
+}
+
+void add(const std::string& name, Method m, const std::vector<Case>* cases) {
+    if (cases->empty()) return;
+    switch (m) {
+        case Method::default_query: benchmark::RegisterBenchmark(name.c_str(), timed<Method::default_query>, cases); break;
+        case Method::without_middle: benchmark::RegisterBenchmark(name.c_str(), timed<Method::without_middle>, cases); break;
+        case Method::double_s4: benchmark::RegisterBenchmark(name.c_str(), timed<Method::double_s4>, cases); break;
+        case Method::bounded: benchmark::RegisterBenchmark(name.c_str(), timed<Method::bounded>, cases); break;
+        case Method::interval: benchmark::RegisterBenchmark(name.c_str(), timed<Method::interval>, cases); break;
+        case Method::thorough: benchmark::RegisterBenchmark(name.c_str(), timed<Method::thorough>, cases); break;
+        case Method::middle: benchmark::RegisterBenchmark(name.c_str(), timed<Method::middle>, cases); break;
+        case Method::kCount: break;
+    }
+}
+
+// ---- the voxel workload: per-box cost through the three interfaces ----
+constexpr int kLo = -10, kHi = 11;  // cells [i, i+1] for i in [kLo, kHi)
+const Cylinder<double> kVoxelCylinder{{0, 0, 0}, {0, 0, 1}, 8, 16};
+constexpr std::size_t kVoxelCells = std::size_t(kHi - kLo) * (kHi - kLo) * (kHi - kLo);
+
+struct Voxels {
+    std::vector<double> min_x, min_y, min_z, max_x, max_y, max_z;
+    std::vector<Case> cases;
+};
+const Voxels& voxels() {
+    static const Voxels v = [] {
+        Voxels r;
+        for (int i = kLo; i < kHi; ++i)
+            for (int j = kLo; j < kHi; ++j)
+                for (int k = kLo; k < kHi; ++k) {
+                    r.min_x.push_back(i), r.min_y.push_back(j), r.min_z.push_back(k);
+                    r.max_x.push_back(i + 1), r.max_y.push_back(j + 1), r.max_z.push_back(k + 1);
+                    Case c;
+                    c.aligned = {{double(i), double(j), double(k)}, {double(i + 1), double(j + 1), double(k + 1)}};
+                    c.cylinder = kVoxelCylinder;
+                    r.cases.push_back(c);
+                }
+        return r;
+    }();
+    return v;
+}
+void voxel_batch(benchmark::State& state) {
+    const Voxels& v = voxels();
+    std::vector<std::uint64_t> mask(batch::mask_words(kVoxelCells));
+    const batch::AlignedBoxes<double> boxes{v.min_x, v.min_y, v.min_z, v.max_x, v.max_y, v.max_z};
+    for (auto _ : state) {
+        batch::intersects(kVoxelCylinder, boxes, std::span<std::uint64_t>(mask), {1});
+        benchmark::DoNotOptimize(mask.data());
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<benchmark::IterationCount>(kVoxelCells));
+}
+void voxel_grid(benchmark::State& state) {
+    const Grid g{{double(kLo), double(kLo), double(kLo)}, {1, 1, 1}, {kHi - kLo, kHi - kLo, kHi - kLo}};
+    for (auto _ : state) {
+        std::int64_t found = 0;
+        for_each_cell(g, kVoxelCylinder, [&](std::int64_t, std::int64_t, std::int64_t) { ++found; });
+        benchmark::DoNotOptimize(found);
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<benchmark::IterationCount>(kVoxelCells));
+}
+
+class Reporter : public benchmark::ConsoleReporter {
+public:
+    void ReportRuns(const std::vector<Run>& runs) override {
+        ConsoleReporter::ReportRuns(runs);
+        for (const Run& r : runs) {
+            const auto ips = r.counters.find("items_per_second");
+            if (r.error_occurred || ips == r.counters.end() || !(ips->second.value > 0)) continue;
+            const std::string name = r.run_name.str();
+            if (r.run_type == Run::RT_Iteration) reps_[name].push_back(1e9 / ips->second.value);
+            else if (r.aggregate_name == "median") g_ns[name] = 1e9 / ips->second.value;
+        }
+    }
+    void Finalize() override {
+        ConsoleReporter::Finalize();
+        for (auto& [name, v] : reps_) {
+            if (g_ns.count(name) || v.empty()) continue;
+            std::sort(v.begin(), v.end());
+            g_ns[name] = v[v.size() / 2];
+        }
+    }
+
+private:
+    std::map<std::string, std::vector<double>> reps_;
+};
+
+std::string fmt(const char* f, double x) {
+    char b[64];
+    std::snprintf(b, sizeof b, f, x);
+    return b;
+}
+std::string ns_text(double ns) {
+    if (!(ns >= 0)) return "—";
+    if (ns >= 1e6) return fmt("%.2f ms", ns / 1e6);
+    if (ns >= 1e4) return fmt("%.1f µs", ns / 1e3);
+    if (ns >= 1e3) return fmt("%.2f µs", ns / 1e3);
+    if (ns >= 100) return fmt("%.0f ns", ns);
+    return fmt("%.1f ns", ns);
+}
+std::string ratio_text(double r) {
+    if (!(r >= 0)) return "—";
+    if (r >= 100) return fmt("%.0f×", r);
+    if (r >= 10) return fmt("%.1f×", r);
+    return fmt("%.2f×", r);
+}
+double ns(const std::string& name) {
+    const auto it = g_ns.find(name);
+    return it == g_ns.end() ? -1 : it->second;
+}
+
+void summary(std::FILE* out, const std::vector<Set>& sets) {
+    std::fprintf(out, "\n**The four sets** (%s; time per query, median of the repetitions; ratios from this run)\n\n", kBuild);
+    std::fprintf(out, "| set | queries | default | without middle | double §4 | default / double §4 | without middle / double §4 | wrong (default vs oracle) |\n");
+    std::fprintf(out, "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    for (const Set& s : sets) {
+        const double d = ns(s.name + "/default"), w = ns(s.name + "/without_middle"), b = ns(s.name + "/double_s4");
+        std::fprintf(out, "| %s | %zu | %s | %s | %s | %s | %s | %ld |\n", s.title.c_str(), s.cases.size(), ns_text(d).c_str(),
+                     ns_text(w).c_str(), ns_text(b).c_str(), ratio_text(d / b).c_str(), ratio_text(w / b).c_str(),
+                     s.wrong_default);
+    }
+    std::fprintf(out, "\n**By deciding stage** (queries each stage decides; the default query's mean time on that subset "
+                      "timed alone, and the subset's share of the set's total; *without middle*: the same subset "
+                      "through the pipeline without the middle stage)\n\n");
+    std::fprintf(out, "| set | stage | queries | share of queries | default, per query | share of time | without middle, per query |\n");
+    std::fprintf(out, "| --- | --- | ---: | ---: | ---: | ---: | ---: |\n");
+    for (const Set& s : sets) {
+        double total = 0;
+        for (int k = 0; k < kStages; ++k) {
+            const double t = ns(s.name + "/stage_" + std::to_string(k) + "/default");
+            if (t > 0) total += t * double(s.by_stage[k].size());
+        }
+        for (int k = 0; k < kStages; ++k) {
+            const std::size_t n = s.by_stage[k].size();
+            if (n == 0) continue;
+            const double t = ns(s.name + "/stage_" + std::to_string(k) + "/default");
+            const double w = ns(s.name + "/stage_" + std::to_string(k) + "/without_middle");
+            std::fprintf(out, "| %s | %s | %zu | %s | %s | %s | %s |\n", s.name.c_str(), kStageName[k], n,
+                         fmt("%.2f%%", 100.0 * double(n) / double(s.cases.size())).c_str(), ns_text(t).c_str(),
+                         total > 0 && t > 0 ? fmt("%.1f%%", 100.0 * t * double(n) / total).c_str() : "—",
+                         ns_text(w).c_str());
+        }
+    }
+    std::fprintf(out, "\n**The stages alone on the queries the middle stage decides** (mean time per query of each "
+                      "function called by itself: stage 1 with Bounded, with Interval, the thorough witness search, and "
+                      "the middle stage)\n\n");
+    std::fprintf(out, "| set | queries | stage 1, Bounded | stage 1, Interval | thorough witness search | middle stage |\n");
+    std::fprintf(out, "| --- | ---: | ---: | ---: | ---: | ---: |\n");
+    for (const Set& s : sets) {
+        if (s.by_stage[smiddle].empty()) continue;
+        const std::string base = s.name + "/stage_" + std::to_string(smiddle) + "/";
+        std::fprintf(out, "| %s | %zu | %s | %s | %s | %s |\n", s.name.c_str(), s.by_stage[smiddle].size(),
+                     ns_text(ns(base + "alone_bounded")).c_str(), ns_text(ns(base + "alone_interval")).c_str(),
+                     ns_text(ns(base + "alone_thorough_search")).c_str(), ns_text(ns(base + "alone_middle")).c_str());
+    }
+    std::fprintf(out, "\n**Voxels touching a cylinder** (%zu unit cells of [%d, %d]³, cylinder radius 8, height 16, centre on "
+                      "the grid node 0, axis z; time per box, one thread)\n\n",
+                 kVoxelCells, kLo, kHi);
+    std::fprintf(out, "| interface | per box (%s) |\n| --- | ---: |\n", kBuild);
+    std::fprintf(out, "| scalar default query, every cell | %s |\n", ns_text(ns("voxels/default")).c_str());
+    std::fprintf(out, "| scalar, pipeline without the middle stage | %s |\n", ns_text(ns("voxels/without_middle")).c_str());
+    std::fprintf(out, "| scalar double §4 | %s |\n", ns_text(ns("voxels/double_s4")).c_str());
+    std::fprintf(out, "| batch API (`batch::intersects`, aligned boxes) | %s |\n", ns_text(ns("voxels/batch")).c_str());
+    std::fprintf(out, "| grid query (`for_each_cell`, per cell of the grid) | %s |\n", ns_text(ns("voxels/grid")).c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string markdown;
+    bool quick = false;
+    std::vector<std::string> user;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a.rfind("--markdown=", 0) == 0) markdown = a.substr(11);
+        else if (a == "--quick") quick = true;
+        else user.push_back(a);
+    }
+    std::vector<std::string> args{argv[0], "--benchmark_display_aggregates_only=true"};
+    args.push_back(quick ? "--benchmark_repetitions=1" : "--benchmark_repetitions=5");
+    args.push_back(quick ? "--benchmark_min_time=0.01" : "--benchmark_min_time=0.2");
+    args.insert(args.end(), user.begin(), user.end());
+    std::vector<char*> cargs;
+    cargs.reserve(args.size());
+    for (std::string& a : args) cargs.push_back(a.data());
+    int cargc = static_cast<int>(cargs.size());
+    benchmark::Initialize(&cargc, cargs.data());
+    if (benchmark::ReportUnrecognizedArguments(cargc, cargs.data())) return 1;
+
+    std::fprintf(stderr, "generating the sets (the boundary pairs are found by bisection with the oracle: about a minute)...\n");
+    std::vector<Set> sets(5);
+    sets[0].name = "random", sets[0].title = "random (seed 0xb0c5c701)";
+    sets[1].name = "boundary", sets[1].title = "one-ulp boundary pairs (seed 0xb0c5c702)";
+    sets[2].name = "touching", sets[2].title = "exactly touching and one-ulp neighbours (seed 0xb0c5c705)";
+    sets[3].name = "adversarial", sets[3].title = "adversarial near-touching mix (seed 0xb0c5c706)";
+    sets[4].name = "voxels", sets[4].title = "voxels touching a cylinder (radius 8, unit cells)";
+    {
+        boxcyl::testing::CaseGenerator gen(0xb0c5c701);
+        for (int i = 0; i < 4096; ++i) sets[0].cases.push_back(gen.next());
+    }
+    {
+        boxcyl::testing::CaseGenerator gen(0xb0c5c702);
+        while (sets[1].cases.size() < 1024) {
+            Case a, b;
+            boxcyl::testing::Parameter p;
+            if (!boxcyl::testing::boundary_pair(gen, a, b, p)) continue;
+            sets[1].cases.push_back(a);
+            sets[1].cases.push_back(b);
+        }
+    }
+    {
+        std::mt19937_64 rng(0xb0c5c705);
+        for (int i = 0; i < 2048; ++i) sets[2].cases.push_back(boxcyl::testing::touching_case(rng));
+    }
+    {
+        std::mt19937_64 rng(0xb0c5c706);
+        for (int i = 0; i < 2048; ++i) sets[3].cases.push_back(boxcyl::testing::adversarial_case(rng));
+    }
+    sets[4].cases = voxels().cases;
+    for (Set& s : sets) {
+        for (const Case& c : s.cases) {
+            const Stage st = with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return deciding_stage(b, cyl); });
+            s.by_stage[st].push_back(c);
+            s.wrong_default += answer<Method::default_query>(c) != boxcyl::testing::oracle_answer(c);
+        }
+    }
+
+    for (const Set& s : sets) {
+        for (int m = 0; m < 3; ++m) add(s.name + "/" + kMethodKey[m], Method(m), &s.cases);
+        for (int k = 0; k < kStages; ++k) {
+            add(s.name + "/stage_" + std::to_string(k) + "/default", Method::default_query, &s.by_stage[k]);
+            add(s.name + "/stage_" + std::to_string(k) + "/without_middle", Method::without_middle, &s.by_stage[k]);
+        }
+        for (int m = int(Method::bounded); m < int(Method::kCount); ++m)
+            add(s.name + "/stage_" + std::to_string(smiddle) + "/" + kMethodKey[m], Method(m), &s.by_stage[smiddle]);
+    }
+    benchmark::RegisterBenchmark("voxels/batch", voxel_batch);
+    benchmark::RegisterBenchmark("voxels/grid", voxel_grid);
+
+    Reporter reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    benchmark::Shutdown();
+    summary(stdout, sets);
+    if (!markdown.empty()) {
+        std::FILE* f = std::fopen(markdown.c_str(), "w");
+        if (!f) {
+            std::fprintf(stderr, "cannot write %s\n", markdown.c_str());
+            return 1;
+        }
+        summary(f, sets);
+        std::fclose(f);
+    }
+    return 0;
+}
