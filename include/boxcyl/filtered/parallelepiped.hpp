@@ -28,7 +28,8 @@
 // coordinates, exact in one sweep for orthogonal axes), both shrunk about their centres (0.9, 0.99,
 // 0.9999: a witness needs room), certificates tested after steps 1, 2, 4, 8, ... of each phase.
 // Undecided queries (touching or within rounding of it, thin overlaps of skewed or flat solids) go to
-// exact §3 on the exact solid (algo::convex_hull on rationals, the unit axis in Q(√d)): the answer is always exact.
+// the exact stage: the parallelepiped test in integers and Z[√d] (exact/integer_parallelepiped.hpp), or the
+// convex-hull method on rationals and Q(√d) for dependent axes: the answer is always exact.
 // No magnitude is out of range: overflow and underflow make enclosures undecided, never wrong.
 // Needs the exact backend (boxcyl::exact).
 #pragma once
@@ -44,6 +45,7 @@
 #include <type_traits>  // std::is_same_v
 
 #include "boxcyl/algo/convex_hull.hpp"
+#include "boxcyl/exact/integer_parallelepiped.hpp"
 #include "boxcyl/algo/linear_inequalities.hpp"
 #include "boxcyl/filtered.hpp"  // filtered::Result
 #include "boxcyl/geometry/cylinder.hpp"
@@ -61,9 +63,15 @@ namespace boxcyl::filtered {
 
 namespace parallelepiped_detail {
 
-// ---- Exact stage: §3 on the exact solid. ----
+// ---- Exact stage: the parallelepiped test in integers, else the convex-hull method on the exact solid. ----
 
+// The integer test (exact/integer_parallelepiped.hpp) takes the half-edge vectors e_m·W_m exactly as
+// given and needs no orthonormality: it answers every parallelepiped whose non-zero half-edge vectors
+// are independent, in integers and Z[√d] with no rational. Dependent ones (flat solids spanned by
+// parallel or coplanar axes) go to the convex-hull method in rationals and Q(√d).
 inline bool exact_answer(const Parallelepiped<double>& b, const Cylinder<double>& c) {
+    const OrientedBox<double> as_given{b.center, b.axes, b.extents};
+    if (const std::optional<bool> r = exact::integer::intersects_parallelepiped(as_given, c)) return *r;
     const Parallelepiped<Rational> eb = to_exact(b);
     const Cylinder<Rational> ec = to_exact(c);
     const QuadraticField<Rational> field(dot(ec.axis, ec.axis));
