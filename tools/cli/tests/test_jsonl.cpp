@@ -189,7 +189,7 @@ TEST(JsonlStructure, MessagesNameTheField) {
          "line 7: box.extents[2]: is negative"},
         // |axes[2]|² = 1.00010000252…, beyond 1e-4 but "1.000100" to six decimals: printed with the digits that show it.
         {R"({"box": {"center": [0, 0, 0], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1.00005000001]], "extents": [1, 1, 1]}, )" + c + "}",
-         "line 7: box.axes[2]: is not unit length (|axes[2]|² = 1.000100003, tolerance 1e-4)"},
+         "line 7: box.axes[2]: is not unit length (|axes[2]|² = 1.000100003, tolerance 1e-4); for axes of any length and angle use \"kind\": \"parallelepiped\""},
         // Syntax.
         {"{", "line 7: invalid JSON: column 2: syntax error while parsing object key - unexpected end of input; expected string literal"},
         {"{} {}", "line 7: invalid JSON: column 4: syntax error while parsing value - unexpected '{'; expected end of input"},
