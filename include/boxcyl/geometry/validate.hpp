@@ -54,27 +54,34 @@ inline constexpr double orthonormality_tolerance = 1e-4;
 
 namespace detail {
 
-// --- the checks themselves: booleans, no strings, combined with & rather than && so that valid
-// input (the common case) takes no branch per field ---
+// --- the checks themselves: no strings; truth values as ints (0 or 1) combined with & rather than &&,
+// so that valid input (the common case) takes no branch per field (ints: & on bools draws clang's
+// -Wbitwise-instead-of-logical) ---
 
 template <class T>
-bool finite(T x) noexcept {
-    return std::fabs(x) <= std::numeric_limits<T>::max();  // false for NaN and ±Inf
+int finite(T x) noexcept {
+    return static_cast<int>(std::fabs(x) <= std::numeric_limits<T>::max());  // 0 for NaN and ±Inf
 }
 
 template <class T>
-bool finite3(const Vec3<T>& p) noexcept {
+int finite3(const Vec3<T>& p) noexcept {
     return finite(p[0]) & finite(p[1]) & finite(p[2]);
 }
 
 template <class T>
-bool size_ok(T x) noexcept {
-    return finite(x) & !(x < T(0));
+int size_ok(T x) noexcept {
+    return finite(x) & static_cast<int>(!(x < T(0)));
 }
 
 template <class T>
-bool is_zero3(const Vec3<T>& p) noexcept {
-    return (p[0] == T(0)) & (p[1] == T(0)) & (p[2] == T(0));
+int is_zero3(const Vec3<T>& p) noexcept {
+    return static_cast<int>(p[0] == T(0)) & static_cast<int>(p[1] == T(0)) & static_cast<int>(p[2] == T(0));
+}
+
+// min ≤ max, or not comparable (NaN: caught by finite3)
+template <class T>
+int ordered(T lo, T hi) noexcept {
+    return static_cast<int>(!(hi < lo));
 }
 
 // The Gram entry Ai·Aj in long double, so that the check itself cannot overflow for finite input of
@@ -257,25 +264,25 @@ Validity describe(const Parallelepiped<T>& b, const std::string& prefix) {
 // True when validate() would say ok: the same checks, without building any text.
 template <class T>
 bool is_valid(const Cylinder<T>& c) noexcept {
-    return detail::finite3(c.center) & detail::finite3(c.axis) & !detail::is_zero3(c.axis) &
-           detail::size_ok(c.radius) & detail::size_ok(c.height);
+    return (detail::finite3(c.center) & detail::finite3(c.axis) & (detail::is_zero3(c.axis) ^ 1) &
+            detail::size_ok(c.radius) & detail::size_ok(c.height)) != 0;
 }
 
 template <class T>
 bool is_valid(const AlignedBox<T>& b) noexcept {
-    return detail::finite3(b.min) & detail::finite3(b.max) & !(b.max[0] < b.min[0]) & !(b.max[1] < b.min[1]) &
-           !(b.max[2] < b.min[2]);
+    return (detail::finite3(b.min) & detail::finite3(b.max) & detail::ordered(b.min[0], b.max[0]) &
+            detail::ordered(b.min[1], b.max[1]) & detail::ordered(b.min[2], b.max[2])) != 0;
 }
 
 template <class T>
 bool is_valid(const CanonicalBox<T>& b) noexcept {
-    return detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) & detail::size_ok(b.extents[2]);
+    return (detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) & detail::size_ok(b.extents[2])) != 0;
 }
 
 template <class T>
 bool is_valid(const OrientedBox<T>& b) noexcept {
-    const bool others = detail::finite3(b.center) & detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) &
-                        detail::size_ok(b.extents[2]);
+    const bool others = (detail::finite3(b.center) & detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) &
+                         detail::size_ok(b.extents[2])) != 0;
     // gram_clearly_ok() implies finite, non-zero axes: a NaN or ±Inf component makes a Gram entry NaN
     // or +Inf, a zero axis makes |Ai|² zero.
     if (others && detail::gram_clearly_ok(b.axes)) return true;
@@ -287,9 +294,9 @@ bool is_valid(const OrientedBox<T>& b) noexcept {
 // Any axes: only finite fields and non-negative extents are asked.
 template <class T>
 bool is_valid(const Parallelepiped<T>& b) noexcept {
-    return detail::finite3(b.center) & detail::finite3(b.axes[0]) & detail::finite3(b.axes[1]) &
-           detail::finite3(b.axes[2]) & detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) &
-           detail::size_ok(b.extents[2]);
+    return (detail::finite3(b.center) & detail::finite3(b.axes[0]) & detail::finite3(b.axes[1]) &
+            detail::finite3(b.axes[2]) & detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) &
+            detail::size_ok(b.extents[2])) != 0;
 }
 
 // Names the first bad field and why. `prefix` names the object in messages ("cylinder", or
