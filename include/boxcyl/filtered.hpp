@@ -432,19 +432,28 @@ inline bool tiny_components_zeroed(const Vec3<double>& a, Vec3<double>& zeroed, 
 // takes every size as the enclosure [s − η, s + η]: a decided answer holds for every problem in it,
 // the widened one (a miss certifies a miss) and the narrowed one (a hit certifies a hit — only if
 // every size is ≥ η, so that the narrowed cylinder exists and lies inside the exact one).
+// The spread itself, shared by both methods: radius and half-height become [s − η, s + η],
+// η = 2^-198·(H + r) rounded up. False when η overflows (nothing is decided then); `thin` says whether
+// some size was below η (then only a miss certifies).
+template <class N>
+bool spread_sizes_by_eta(N& radius, N& half_height, bool& thin) {
+    const double reach = (N(half_height.hi()) + N(radius.hi())).hi();
+    const double eta = boxcyl::detail::next_up(0x1p-198 * reach);
+    if (!(eta < std::numeric_limits<double>::infinity())) return false;
+    thin = false;
+    for (N* size : {&radius, &half_height}) {
+        if (!(size->lo() >= eta)) thin = true;
+        *size = nonneg(N(size->high(), size->low(), boxcyl::detail::next_up(size->error() + eta)));
+    }
+    return true;
+}
 template <class N, class Frame>
 std::optional<bool> decide_tiny_axis_spread(const CanonicalQuery<N>& q, const Vec3<double>& a0, Frame&& direction_of,
                                             double scale) {
     CanonicalQuery<N> z = q;
     z.cylinder.direction = direction_of(unit_direction<N>(a0));
-    const double reach = (N(q.cylinder.half_height.hi()) + N(q.cylinder.radius.hi())).hi();
-    const double eta = boxcyl::detail::next_up(0x1p-198 * reach);
-    if (!(eta < std::numeric_limits<double>::infinity())) return std::nullopt;
     bool thin = false;
-    for (N* size : {&z.cylinder.radius, &z.cylinder.half_height}) {
-        if (!(size->lo() >= eta)) thin = true;
-        *size = nonneg(N(size->high(), size->low(), boxcyl::detail::next_up(size->error() + eta)));
-    }
+    if (!spread_sizes_by_eta(z.cylinder.radius, z.cylinder.half_height, thin)) return std::nullopt;
     const std::optional<bool> r = decide(z, scale);
     if (r && (!*r || !thin)) return r;
     return std::nullopt;
@@ -782,14 +791,8 @@ inline std::optional<bool> middle_hull(const OrientedBox<double>& b, const Cylin
     if (tiny_components_zeroed(c.axis, a0, -200)) {
         UnitCylinder<N> z = u;
         z.direction = unit_direction<N>(a0);
-        const double reach = (N(u.half_height.hi()) + N(u.radius.hi())).hi();
-        const double eta = boxcyl::detail::next_up(0x1p-198 * reach);
-        if (eta < std::numeric_limits<double>::infinity()) {
-            bool thin = false;
-            for (N* size : {&z.radius, &z.half_height}) {
-                if (!(size->lo() >= eta)) thin = true;
-                *size = nonneg(N(size->high(), size->low(), boxcyl::detail::next_up(size->error() + eta)));
-            }
+        bool thin = false;
+        if (spread_sizes_by_eta(z.radius, z.half_height, thin)) {
             const std::optional<bool> r = run(z);
             if (r && (!*r || !thin)) return r;
         }
