@@ -10,11 +10,17 @@
 //    on the adversarial near-touching mix and on one-ulp boundary pairs, in all four rounding modes
 //    (the middle stage declines outside round-to-nearest; the answers must not change). Built a second
 //    time with FMA contraction forced on (tests/CMakeLists.txt: test_middle_fma).
+//  * The clipped-candidates test alone (filtered/clipped_candidates.hpp, the middle stage's method for
+//    rotated frames): every answer it gives equals the oracle, on rotated boxes whose face, edge or vertex
+//    a cylinder touches up to a few ulps (axis parallel to a box edge, to a face, or oblique; solid, flat
+//    and segment boxes; disks), on random queries and on one-ulp boundary pairs; and it decides every
+//    one whose gap is a few ulps.
 #include <gtest/gtest.h>
 
 #include <cfenv>   // rounding modes
 #include <cmath>   // std::ldexp, std::fabs
 #include <cstdio>  // std::printf
+#include <optional>  // the clipped test's undecided
 #include <random>  // operand generators
 #include <string>  // messages
 #include <vector>  // case lists
@@ -188,6 +194,85 @@ TEST(DoubleDouble, ProbeSeesTheRoundingMode) {
         const RoundingMode guard(mode);
         EXPECT_FALSE(detail::round_to_nearest()) << mode_name(mode);
     }
+}
+
+// ---- The clipped-candidates test (rotated frames) ----
+
+std::optional<bool> clipped_answer(const OrientedBox<double>& b, const Cylinder<double>& c) {
+    return filtered::detail::middle_clipped(b, c);
+}
+
+// A rounded rotation, a box on it, and a cylinder placed against its face k (side parallel to the face
+// when `parallel`, else an oblique axis touching with its rim), then moved by `ulps` ulps of its radius.
+Case rotated_contact(std::mt19937_64& rng, int shape, int ulps_moved) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    Case c;
+    c.kind = BoxKind::oriented;
+    c.oriented.axes = random_rotation(rng);
+    c.oriented.center = {unit(rng) * 8 - 4, unit(rng) * 8 - 4, unit(rng) * 8 - 4};
+    c.oriented.extents = {0.5 + unit(rng), 0.5 + unit(rng), 0.5 + unit(rng)};
+    const int k = static_cast<int>(rng() % 3), a = (k + 1) % 3, b = (k + 2) % 3;
+    if (shape == 3) c.oriented.extents[static_cast<std::size_t>(b)] = 0;  // flat: the face k is a segment's strip
+    if (shape == 4) c.oriented.extents[static_cast<std::size_t>(b)] = c.oriented.extents[static_cast<std::size_t>(a)] = 0;
+    c.cylinder.radius = 0.25 + unit(rng);
+    c.cylinder.height = shape == 2 ? 0.0 : 0.5 + unit(rng);
+    // shape 0: side parallel to the face (axis = a box axis); 1: axis along the face normal (a cap on the
+    // face); 2: a disk parallel to the face; 3, 4: side parallel to a flat or segment box's face.
+    const bool along_normal = shape == 1 || shape == 2;
+    c.cylinder.axis = c.oriented.axes[static_cast<std::size_t>(along_normal ? k : a)];
+    const double d = c.oriented.extents[static_cast<std::size_t>(k)] +
+                     (along_normal ? 0.5 * c.cylinder.height : c.cylinder.radius);
+    for (std::size_t i = 0; i < 3; ++i)
+        c.cylinder.center[i] = c.oriented.center[i] + d * c.oriented.axes[static_cast<std::size_t>(k)][i];
+    double& moved = along_normal ? c.cylinder.center[rng() % 3] : c.cylinder.radius;
+    for (int i = 0; i < std::abs(ulps_moved); ++i)
+        moved = std::nextafter(moved, ulps_moved > 0 ? INFINITY : -INFINITY);
+    return c;
+}
+
+TEST(ClippedCandidates, RotatedContactsAgreeWithOracleAndAreDecided) {
+    std::mt19937_64 rng(7301);
+    long decided = 0, total = 0, moved = 0, moved_decided = 0;
+    for (long i = 0; i < scaled(600); ++i) {
+        const int shape = static_cast<int>(i % 5);
+        const int ulps_moved = static_cast<int>(rng() % 9) - 4;
+        const Case c = rotated_contact(rng, shape, ulps_moved);
+        ASSERT_TRUE(validate(c.oriented).ok() && validate(c.cylinder).ok()) << describe(c);
+        const std::optional<bool> r = clipped_answer(c.oriented, c.cylinder);
+        ++total;
+        if (ulps_moved != 0 && shape != 1 && shape != 2) ++moved;
+        if (!r) continue;
+        ++decided;
+        if (ulps_moved != 0 && shape != 1 && shape != 2) ++moved_decided;
+        EXPECT_EQ(*r, oracle_answer(c)) << "shape " << shape << ", " << ulps_moved << " ulps: " << describe(c);
+    }
+    std::printf("  rotated contacts: %ld of %ld decided; moved side contacts: %ld of %ld\n", decided, total,
+                moved_decided, moved);
+    // A side parallel to a face, moved by 1 to 4 ulps of its radius: a gap of about 2^-52 relative, which
+    // the double-double enclosures resolve whatever the edge-parallel degeneracy.
+    EXPECT_EQ(moved_decided, moved);
+}
+
+TEST(ClippedCandidates, RandomAndBoundaryQueriesAgreeWithOracle) {
+    long decided = 0, total = 0;
+    auto check = [&](const Case& c) {
+        if (c.kind != BoxKind::oriented) return;
+        const std::optional<bool> r = clipped_answer(c.oriented, c.cylinder);
+        ++total;
+        if (!r) return;
+        ++decided;
+        EXPECT_EQ(*r, oracle_answer(c)) << describe(c);
+    };
+    CaseGenerator gen(7302);
+    for (long i = 0; i < scaled(3000); ++i) check(gen.next());
+    CaseGenerator pairs(7303);
+    for (long n = 0; n < scaled(150);) {
+        Case x, y;
+        Parameter p;
+        if (!boundary_pair(pairs, x, y, p)) continue;
+        check(x), check(y), ++n;
+    }
+    std::printf("  random and boundary oriented boxes: %ld of %ld decided\n", decided, total);
 }
 
 // ---- The default query on the near-touching sets ----

@@ -9,23 +9,23 @@
 //   Stage 0b, searched certificates (filtered/witness_search.hpp): the axis point nearest to the box
 //   and a few alternating projections give a separating direction or a witness point, which stage
 //   0's tests (and two-point forms of them) certify; ≈95% of the queries stage 0 leaves end here.
-//   Stage 1, the certified filter: the canonical problem (the box's frame) is built in an enclosure type N
-//   so that it encloses the exact one — first Bounded (number/bounded.hpp: a double and a running
-//   error bound, cheap), then Interval (number/interval.hpp: tighter) if that could not decide — and
-//   the same generic linear-inequalities code, algo::linear_inequalities<N>, runs on it inside an
-//   UncertaintyScope. If no comparison was undecided, every real problem inside the intervals takes the same
-//   branches to the same answer; the exact problem is one of them, so that answer is exact. Oriented boxes
-//   whose axes are not exactly orthonormal are first widened by a proved bound η (docs/robustness.md §4).
-//   Where it stays undecided on degenerate shapes (disks, flat boxes, segments), hit certificates
-//   (certain_hit, frame_hit: a witness point solved exactly in real arithmetic, only inequalities
-//   checked on enclosures) and thickened sizes (misses) decide most of the rest (docs/robustness.md §5).
-//   Before stage 2, a thorough witness search tries once more to certify a hit.
-//   The middle stage: stage 1 once more in double-double with a running error bound
-//   (number/double_double.hpp, ≈2^-100 relative per operation): near-touching inputs that are not
-//   exactly touching are decided here (docs/robustness.md, The middle stage). Round to nearest only.
-//   It runs after stage 1's Bounded run, before its Interval run and the thorough witness search,
-//   which cost more on the queries that reach it (bench/bench_sets.cpp).
-//   Stage 2, the exact fallback (only when stage 1 could not decide): linear inequalities evaluated in integers and
+//   The exact stage right after stage 0 for narrow inputs (integer or binary-fraction coordinates):
+//   there it costs less than any further filter (exact/integer_inequalities.hpp).
+//   The middle stage (round to nearest): the canonical problem (the box's frame) built in double-double
+//   enclosures with a running error bound (number/double_double.hpp, ≈2^-100 relative per operation),
+//   and the generic linear-inequalities code, algo::linear_inequalities<N>, run on it inside an
+//   UncertaintyScope: if no comparison was undecided, every real problem inside the enclosures takes
+//   the same branches to the same answer; the exact problem is one of them, so that answer is exact.
+//   Degenerate shapes (disks, flat boxes, segments) add hit certificates (certain_hit, frame_hit: a
+//   witness point solved exactly in real arithmetic, only inequalities checked on enclosures) and
+//   thickened sizes (misses) (docs/robustness.md §5). Rotated frames (not exactly orthonormal) run the
+//   clipped-candidates test on the exact parallelepiped (filtered/clipped_candidates.hpp). Near-touching
+//   inputs that are not exactly touching are decided here (docs/robustness.md §12).
+//   Stage 1, in the other rounding modes instead of the middle stage: the same evaluation on Bounded
+//   (number/bounded.hpp: a double and a running error bound), then on Interval (number/interval.hpp);
+//   oriented boxes whose axes are not exactly orthonormal are widened by a proved bound η
+//   (docs/robustness.md §4); then a thorough witness search tries once more to certify a hit.
+//   Stage 2, the exact fallback (only when nothing before could decide): linear inequalities evaluated in integers and
 //   Z[√d] after scaling by a power of two (exact/integer_inequalities.hpp: no rationals) for aligned
 //   and canonical boxes and for exactly orthonormal frames (signed permutations: the only exactly
 //   orthonormal frames of doubles), the parallelepiped's clipped edges and face cuts in integers for
@@ -43,8 +43,8 @@
 // library): check boxcyl::fp_environment_ok() once at start-up if that can happen.
 //
 // Debug switches (compile-time macros; define them before including this header, in every TU):
-//   BOXCYL_FORCE_EXACT=1   skip stage 1: every query answers with stage 2 (exact_used == true).
-//   BOXCYL_CHECK_FILTER=1  whenever stage 1 decides, also run stage 2; on a mismatch throw
+//   BOXCYL_FORCE_EXACT=1   skip the filters: every query answers with stage 2 (exact_used == true).
+//   BOXCYL_CHECK_FILTER=1  whenever a filter decides, also run stage 2; on a mismatch throw
 //                          std::logic_error naming the case (hex floats, copy-pasteable).
 //   BOXCYL_MIDDLE_STAGE=0  skip the middle stage (what it saves is measured by bench/bench_sets.cpp).
 //
@@ -68,6 +68,7 @@
 #include "boxcyl/exact/integer_inequalities.hpp"
 #include "boxcyl/exact/integer_parallelepiped.hpp"
 #include "boxcyl/exact_paths.hpp"
+#include "boxcyl/filtered/clipped_candidates.hpp"
 #include "boxcyl/filtered/semi_static.hpp"
 #include "boxcyl/filtered/witness_search.hpp"
 #include "boxcyl/geometry/box.hpp"
@@ -447,23 +448,30 @@ bool spread_sizes_by_eta(N& radius, N& half_height, bool& thin) {
     }
     return true;
 }
+// `settled` is set when the run was undecided with every size ≥ η: the query is then within about 2η
+// of touching, far below what any double-double evaluation on the axis as given can resolve.
 template <class N, class Frame>
 std::optional<bool> decide_tiny_axis_spread(const CanonicalQuery<N>& q, const Vec3<double>& a0, Frame&& direction_of,
-                                            double scale) {
+                                            double scale, bool& settled) {
+    settled = false;
     CanonicalQuery<N> z = q;
     z.cylinder.direction = direction_of(unit_direction<N>(a0));
     bool thin = false;
     if (!spread_sizes_by_eta(z.cylinder.radius, z.cylinder.half_height, thin)) return std::nullopt;
     const std::optional<bool> r = decide(z, scale);
     if (r && (!*r || !thin)) return r;
+    settled = !thin;
     return std::nullopt;
 }
 template <class N, class Frame>
 std::optional<bool> decide_axis(CanonicalQuery<N> q, const Vec3<double>& a, Frame&& direction_of, double scale) {
     Vec3<double> a0;
     if constexpr (std::is_same_v<N, DoubleDouble>) {
-        if (tiny_components_zeroed(a, a0, -200))
-            if (const std::optional<bool> r = decide_tiny_axis_spread(q, a0, direction_of, scale)) return r;
+        if (tiny_components_zeroed(a, a0, -200)) {
+            bool settled = false;
+            if (const std::optional<bool> r = decide_tiny_axis_spread(q, a0, direction_of, scale, settled)) return r;
+            if (settled) return std::nullopt;  // the exact stage answers
+        }
     } else if (tiny_components_zeroed(a, a0)) {
         CanonicalQuery<N> z = q;
         z.cylinder.direction = direction_of(unit_direction<N>(a0));
@@ -756,8 +764,9 @@ std::optional<bool> filter(const Box& box, const Cylinder<double>& cyl) {
 //
 // An oriented box whose frame is not a signed permutation (a rotation rounded to double) is not a
 // rectangular box: stage 1 widens it by η (about 2^-52 relative), within which near-touching inputs
-// stay undecided at any precision. The middle stage runs the convex-hull method (algo/convex_hull.hpp) on the exact
-// parallelepiped instead, every length an enclosure: if no comparison was undecided, the exact
+// stay undecided at any precision. The middle stage runs the clipped-candidates test on the exact
+// parallelepiped instead (middle_clipped), and where that is undecided the convex-hull method
+// (algo/convex_hull.hpp), every length an enclosure: if no comparison was undecided, the exact
 // computation takes the same branches (the hull's sort included: an undecided comparison answers by
 // the order of the values, so the sort always sees a strict weak order) and gives the same answer.
 inline std::optional<bool> middle_hull(const OrientedBox<double>& b, const Cylinder<double>& c) {
@@ -804,6 +813,87 @@ inline std::optional<bool> middle_hull(const OrientedBox<double>& b, const Cylin
     }
     return run(u);
 }
+// The parallelepiped test of the exact stage on double-double enclosures (filtered/clipped_candidates.hpp):
+// decides the rotated-frame queries the convex-hull method cannot, those whose axis is parallel to a box
+// edge or face.
+// A zero size: a flat box, a disk or a segment (where hits have no inner problem to certify).
+inline bool degenerate(const AlignedBox<double>& b, const Cylinder<double>& c) {
+    return b.min[0] == b.max[0] || b.min[1] == b.max[1] || b.min[2] == b.max[2] || c.radius == 0 || c.height == 0;
+}
+template <class Box>
+bool degenerate(const Box& b, const Cylinder<double>& c) {
+    return b.extents[0] == 0 || b.extents[1] == 0 || b.extents[2] == 0 || c.radius == 0 || c.height == 0;
+}
+
+// The box's part of the problem, G = K − C and the half-edge vectors, for each box kind (scaled by 2^k).
+template <class N>
+void clipped_box(const OrientedBox<double>& b, const Cylinder<double>& c, int k, clipped::Problem<N>& p) {
+    for (std::size_t i = 0; i < 3; ++i) {
+        p.G[i] = scaled<N>(b.center[i], k) - scaled<N>(c.center[i], k);
+        const N e = scaled_nonneg<N>(b.extents[i], k);
+        for (std::size_t j = 0; j < 3; ++j) p.a[i][j] = e * N(b.axes[i][j]);
+        p.zero[i] = b.extents[i] == 0;
+    }
+}
+template <class N>
+void clipped_box(const AlignedBox<double>& b, const Cylinder<double>& c, int k, clipped::Problem<N>& p) {
+    for (std::size_t i = 0; i < 3; ++i) {
+        const N lo = scaled<N>(b.min[i], k - 1), hi = scaled<N>(b.max[i], k - 1);
+        p.G[i] = lo + hi - scaled<N>(c.center[i], k);
+        p.a[i] = Vec3<N>{N(0), N(0), N(0)};
+        p.a[i][i] = nonneg(hi - lo);
+        p.zero[i] = b.min[i] == b.max[i];
+    }
+}
+template <class N>
+void clipped_box(const CanonicalBox<double>& b, const Cylinder<double>& c, int k, clipped::Problem<N>& p) {
+    for (std::size_t i = 0; i < 3; ++i) {
+        p.G[i] = -scaled<N>(c.center[i], k);
+        p.a[i] = Vec3<N>{N(0), N(0), N(0)};
+        p.a[i][i] = scaled_nonneg<N>(b.extents[i], k);
+        p.zero[i] = b.extents[i] == 0;
+    }
+}
+inline void update_max_box(double& m, const OrientedBox<double>& b) {
+    update_max(m, b.center);
+    update_max(m, b.extents);
+}
+inline void update_max_box(double& m, const AlignedBox<double>& b) {
+    update_max(m, b.min);
+    update_max(m, b.max);
+}
+inline void update_max_box(double& m, const CanonicalBox<double>& b) { update_max(m, b.extents); }
+
+template <class Box>
+std::optional<bool> middle_clipped(const Box& b, const Cylinder<double>& c) {
+    double m = 0;
+    update_max_box(m, b);
+    update_max(m, c.center);
+    update_max(m, c.radius);
+    update_max(m, c.height);
+    const int k = scale_exponent(m);
+    // False when the unit axis is not certainly enclosed.
+    auto problem = [&]<class N>(clipped::Problem<N>& p) {
+        clipped_box(b, c, k, p);
+        p.r = scaled_nonneg<N>(c.radius, k);
+        p.H = scaled_nonneg<N>(c.height, k - 1);
+        p.disk = c.height == 0;
+        UncertaintyScope scope;
+        p.u = unit_direction<N>(c.axis);
+        return scope.certain();
+    };
+    clipped::Problem<Bounded> fast;
+    if (!problem(fast)) return std::nullopt;
+    bool tight_ok = true;
+    const std::optional<bool> r = clipped::decide<Bounded, DoubleDouble>(fast, [&] {
+        clipped::Problem<DoubleDouble> p;
+        tight_ok = problem(p);
+        return p;
+    });
+    if (!tight_ok) return std::nullopt;
+    return r;
+}
+
 template <class Box>
 std::optional<bool> middle(const Box& box, const Cylinder<double>& cyl) {
     if (!boxcyl::detail::round_to_nearest()) return std::nullopt;
@@ -811,12 +901,38 @@ std::optional<bool> middle(const Box& box, const Cylinder<double>& cyl) {
         int perm[3];
         double sign[3];
         if (!signed_permutation(box.axes, perm, sign)) {
+            if (const std::optional<bool> r = middle_clipped(box, cyl)) return r;
             // The convex-hull method decides what η leaves undecided; the certificates of filter() (frame_hit) decide
             // some hits whose hull comparisons are degenerate (e.g. an edge parallel to the axis).
             if (const std::optional<bool> r = middle_hull(box, cyl)) return r;
         }
     }
-    return filter<DoubleDouble>(box, cyl);
+    if (const std::optional<bool> r = filter<DoubleDouble>(box, cyl)) return r;
+    // Where §4 leaves a degenerate shape undecided (a flat box, a disk, a segment: a hit has no inner
+    // problem), the clipped-candidates test certifies it by a candidate segment within r. Not for an
+    // axis with components below 2^-200 of the others: what §4 leaves there hangs on them
+    // (docs/robustness.md §12); nor for solid shapes, where what §4 leaves is exactly touching.
+    Vec3<double> a0;
+    if (!degenerate(box, cyl) || tiny_components_zeroed(cyl.axis, a0, -200)) return std::nullopt;
+    return middle_clipped(box, cyl);
+}
+
+// Stage 1: Bounded, then Interval, then the thorough witness search for hits.
+template <class Box>
+std::optional<bool> stage_one(const Box& box, const Cylinder<double>& cyl, const semi_static::Problem& p, bool in_range) {
+    if (const std::optional<bool> r = filter(box, cyl)) return r;
+    if (in_range && witness_search::certain_hit(p, box, cyl)) return true;
+    return std::nullopt;
+}
+
+// Whether the middle stage runs: built in (BOXCYL_MIDDLE_STAGE, on by default) and the rounding mode
+// is to nearest.
+inline bool middle_runs() {
+#if !defined(BOXCYL_MIDDLE_STAGE) || BOXCYL_MIDDLE_STAGE
+    return boxcyl::detail::round_to_nearest();
+#else
+    return false;
+#endif
 }
 
 // ---- Stage 2: exact, without the oracle. ----
@@ -872,14 +988,25 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
         if (const std::optional<bool> e = exact::integer::answer_if_narrow(box, cyl)) return {*e, true};
     }
     if (!fast && in_range) fast = witness_search::decide(p, box, cyl);  // stage 0b
-    if (!fast) fast = filter<Bounded>(box, cyl);  // stage 1
-#if !defined(BOXCYL_MIDDLE_STAGE) || BOXCYL_MIDDLE_STAGE
-    // The middle stage before stage 1's Interval run and the thorough witness search: on the queries
-    // that get this far (near touching) it decides more, and costs less than either of them.
-    if (!fast) fast = middle(box, cyl);
-#endif
-    if (!fast) fast = filter<Interval>(box, cyl);  // stage 1, tight enclosure
-    if (!fast && in_range && witness_search::certain_hit(p, box, cyl)) fast = true;
+    if (!fast) {
+        if (middle_runs()) {
+            // In round to nearest the middle stage decides everything stage 1 would, and more, at less
+            // cost; what it leaves is (nearly always) exactly touching or hangs on a subnormal, where
+            // the exact stage costs less than any further filter. Except for degenerate shapes (flat
+            // boxes, disks, segments), where the thorough witness search still certifies deep hits
+            // with no inner problem (a flat box crossed by a thick disk), and stage 1's coarser
+            // zeroing of tiny axis components (2^-30, not 2^-200) some hits of segments and disks
+            // whose axis has subnormal components.
+            fast = middle(box, cyl);
+            if (!fast && degenerate(box, cyl)) {
+                Vec3<double> a0;
+                if (tiny_components_zeroed(cyl.axis, a0, -200)) fast = filter(box, cyl);
+                if (!fast && in_range && witness_search::certain_hit(p, box, cyl)) fast = true;
+            }
+        } else {
+            fast = stage_one(box, cyl, p, in_range);
+        }
+    }
     if (!fast) return {exact_answer(box, cyl), true};
 #if defined(BOXCYL_CHECK_FILTER) && BOXCYL_CHECK_FILTER
     if (exact_answer(box, cyl) != *fast)

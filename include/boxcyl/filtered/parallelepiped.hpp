@@ -27,7 +27,9 @@
 // between the cylinder and the parallelepiped (the latter by coordinate descent on the box
 // coordinates, exact in one sweep for orthogonal axes), both shrunk about their centres (0.9, 0.99,
 // 0.9999: a witness needs room), certificates tested after steps 1, 2, 4, 8, ... of each phase.
-// Undecided queries (touching or within rounding of it, thin overlaps of skewed or flat solids) go to
+// Then, in round to nearest, the middle stage's clipped-candidates test on double-double enclosures
+// (filtered/clipped_candidates.hpp: decisive within a few ulps of touching, axes of any length).
+// Undecided queries (touching or within rounding of it, thin overlaps of flat solids) go to
 // the exact stage: the parallelepiped test in integers and Z[√d] (exact/integer_parallelepiped.hpp), or the
 // convex-hull method on rationals and Q(√d) for dependent axes: the answer is always exact.
 // No magnitude is out of range: overflow and underflow make enclosures undecided, never wrong.
@@ -528,7 +530,11 @@ inline Result query(const Parallelepiped<double>& box, const Cylinder<double>& c
 #if defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT
     return {parallelepiped_detail::exact_answer(box, cyl), true};
 #else
-    const std::optional<bool> fast = parallelepiped_detail::filter(box, cyl);
+    std::optional<bool> fast = parallelepiped_detail::filter(box, cyl);
+    // Near touching, the middle stage's clipped-candidates test on double-double enclosures (round to
+    // nearest only): the oriented box's test, which takes the axes exactly as given.
+    if (!fast && detail::middle_runs())
+        fast = detail::middle_clipped(OrientedBox<double>{box.center, box.axes, box.extents}, cyl);
     if (!fast) return {parallelepiped_detail::exact_answer(box, cyl), true};
 #if defined(BOXCYL_CHECK_FILTER) && BOXCYL_CHECK_FILTER
     if (parallelepiped_detail::exact_answer(box, cyl) != *fast)
