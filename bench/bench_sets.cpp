@@ -10,10 +10,10 @@
 // Columns per set: the default query (`intersects(box, cyl)`), the same pipeline without the middle
 // stage (stage 1's undecided queries go straight to the exact stage, as before the middle stage
 // existed: "without middle"), and plain double §4 (`{Algorithm::inequalities, Arithmetic::float64}`).
-// Per stage: how many queries of the set each stage decides, in the order they run (0: semi-static,
-// 0b: witness search, 1 Bounded: §4 and the hit certificates on Bounded, middle: the same on
-// DoubleDouble, 1 Interval: the same on Interval, the thorough witness search, exact), and the default
-// query's mean time on that subset, timed on its own.
+// Per stage: how many queries of the set each stage decides, in the order they run (0: semi-static;
+// the exact stage straight after it for narrow inputs, integer or binary-fraction coordinates; 0b:
+// witness search; middle: double-double enclosures; exact), and the default query's mean time on that
+// subset, timed on its own.
 // Built a second time as bench_sets_before with BOXCYL_MIDDLE_STAGE=0 (the library without the middle
 // stage), so that the batch API and the grid query, which call the library's scalar query, can be
 // compared too (two runs: those ratios are across processes).
@@ -49,23 +49,20 @@ constexpr const char* kBuild = "with the middle stage";
 constexpr const char* kBuild = "without the middle stage (BOXCYL_MIDDLE_STAGE=0)";
 #endif
 
-enum Stage { s0, s0b, s1b, smiddle, s1i, sthorough, sexact, kStages };
-constexpr const char* kStageName[kStages] = {"0 semi-static",  "0b witness search",       "1 Bounded",
-                                             "middle (double-double)", "1 Interval", "thorough witness search",
-                                             "exact"};
+enum Stage { s0, snarrow, s0b, smiddle, sexact, kStages };
+constexpr const char* kStageName[kStages] = {"0 semi-static", "exact, narrow inputs", "0b witness search",
+                                             "middle (double-double)", "exact"};
 
-// The stage that decides the query, replaying filtered::detail::run's order.
+// The stage that decides the query, replaying filtered::detail::run's order in round to nearest.
 template <class Box>
 Stage deciding_stage(const Box& box, const Cylinder<double>& cyl) {
     namespace f = filtered;
     f::semi_static::Problem p;
     const bool in_range = f::semi_static::problem(box, cyl, p);
     if (in_range && f::semi_static::decide(p, box, cyl)) return s0;
+    if (exact::integer::answer_if_narrow(box, cyl)) return snarrow;
     if (in_range && f::witness_search::decide(p, box, cyl)) return s0b;
-    if (f::detail::filter<Bounded>(box, cyl)) return s1b;
     if (f::detail::middle(box, cyl)) return smiddle;
-    if (f::detail::filter<Interval>(box, cyl)) return s1i;
-    if (in_range && f::witness_search::certain_hit(p, box, cyl)) return sthorough;
     return sexact;
 }
 // The default pipeline without the middle stage (what the library did before it: stage 1 is Bounded

@@ -107,38 +107,39 @@ cat <<'WHERE'
 ## Where the time goes in today's design
 
 The default query (`include/boxcyl/filtered.hpp`; derivations in docs/robustness.md) runs these
-stages in order and stops at the first that decides:
+stages in order and stops at the first that decides (round to nearest, the mode every figure here
+was measured in):
 
 1. **Stage 0**, the semi-static filter: a dozen separating-axis and witness tests in plain double with
    error bounds fixed at compile time. It decides about 92% of random queries at a few tens of ns.
-2. **Stage 0b**, the witness search: a few projection steps find a separating direction or a witness
+2. **The exact stage for narrow inputs**: integer or binary-fraction coordinates (voxel and block-model
+   grids, CAD) go straight to exact integer arithmetic, which costs less there than any further filter.
+3. **Stage 0b**, the witness search: a few projection steps find a separating direction or a witness
    point that stage 0's tests certify; most of what stage 0 leaves on random data.
-3. **Stage 1, Bounded**: §4 on enclosures (a double with a running error bound), with the hit
-   certificates and thickened sizes for degenerate shapes: 1–4 µs.
-4. **The middle stage**: the same in double-double with a running error bound (about 2^-100 relative
-   per operation), and §3 on the exact parallelepiped for rotated frames. It decides every query that
-   is not exactly touching unless its decision hangs on a subnormal quantity: most of the boundary,
-   touching and voxel queries that reach it.
-5. **Stage 1, Interval**, then the **thorough witness search** (up to 3 × 256 projection steps): they
-   now see almost nothing, as the table *by deciding stage* shows.
-6. **The exact stage**, in integers and Z[√d] after one power-of-two scaling (docs/robustness.md §11):
+4. **The middle stage**, on double-double enclosures with a running error bound (about 2^-100 relative
+   per operation): §4 with its hit certificates for aligned, canonical and signed-permutation boxes;
+   for rotated frames the clipped-candidates test (the axis segment through the box, or a box edge
+   clipped to the cylinder's slab, or a face cut by a slab plane, within r of the axis: each test
+   three-valued, on Bounded first and double-double only where Bounded could not tell), which stays
+   decisive when the cylinder axis is parallel to a box edge or face. It decides every query that is
+   not exactly touching unless its decision hangs on a subnormal quantity.
+5. **The exact stage**, in integers and Z[√d] after one power-of-two scaling (docs/robustness.md §11):
    §4 for aligned, canonical and signed-permutation boxes, the parallelepiped's clipped edges and face
    cuts for rotated frames; fixed-width stack integers (16 limbs, GMP's mpn) while the values fit,
-   mpz otherwise. Inputs with integer or binary-fraction coordinates (*narrow*) go there right after
-   stage 0. About 0.5–2 µs on exactly touching inputs of ordinary ranges (`bench_exact_stage`); tens to
-   hundreds of µs where one query spans hundreds of binary orders (an axis component of 1e-300 beside
-   1, 2^±1000 in one query), which run on mpz numbers of thousands of bits. It is what is left of the
-   time on the boundary and adversarial sets.
+   mpz otherwise.
+
+In the other rounding modes the middle stage declines (its error-free transformations assume round to
+nearest) and stage 1 runs instead: §4 on Bounded, then on Interval, then the thorough witness search
+(up to 3 × 256 projection steps), then the exact stage. In round to nearest they are skipped: the
+middle stage decides all they would, at less cost (the table *the stages alone*), and on what it leaves
+(exactly touching, or hanging on a subnormal) they only add their cost before the exact stage.
 
 On random data nearly nothing reaches the middle stage, and the default query stays below plain
-double §4 (stage 0 tests less than §4 computes). Near touching, the middle stage replaces most exact
-fallbacks by a few µs of double-double arithmetic; the exact stage's cost on what remains then
-dominates the means of the boundary and adversarial sets. The table *the stages alone* gives each
-candidate's cost on the queries the middle stage decides, which is why it runs before stage 1's
-Interval run and the thorough search: both cost more there and decide less. Stage 1's Bounded run,
-which still comes first (it is what decides in the other rounding modes, and on random data), is of
-the same order as the middle stage on those queries: on near-touching data most of a decided query's
-time is Bounded plus the middle stage, and most of a set's time is its exact fallbacks.
+double §4 (stage 0 tests less than §4 computes). Near touching, the middle stage decides nearly
+everything that is not exactly touching in a few µs; what remains of the time is the exact stage on
+exactly touching inputs, cheap on ordinary ranges and tens of µs where one query spans hundreds of
+binary orders (an axis component of 1e-300 beside 1, 2^±1000 in one query: mpz numbers of thousands
+of bits).
 
 ## All algorithms and the peer libraries (`bench/bench_query.cpp`, `bench/peers.cpp`)
 
