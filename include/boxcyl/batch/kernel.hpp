@@ -12,12 +12,14 @@
 #include <cassert>    // debug-build precondition checks
 #include <cstddef>    // std::size_t
 #include <cstdint>    // std::uint64_t
-#include <span>       // inputs and outputs
-#include <stdexcept>  // std::invalid_argument for short outputs
-#include <vector>     // per-thread counters
+#include <limits>       // DBL_MAX: the boxes' cheap check
+#include <span>         // inputs and outputs
+#include <stdexcept>    // std::invalid_argument for short outputs
+#include <type_traits>  // std::is_same_v: the rows' in-register transpose is for doubles
+#include <vector>       // per-thread counters
 
 #if defined(__AVX512F__)
-#include <immintrin.h>  // gather(): _mm512_set_pd
+#include <immintrin.h>  // gather(): _mm512_set_pd; AlignedRowsSource's transpose
 #endif
 
 #include "boxcyl/batch/filter.hpp"
@@ -45,15 +47,15 @@ BOXCYL_BATCH_INLINE void load(const T* p, std::size_t i, std::size_t valid, Lane
     out.copy_from(buf, stdx::element_aligned);
 }
 
-// Lanes p[idx[0]], …, p[idx[count − 1]], the last repeated to fill the vector. Built from the scalars:
-// written to a buffer lane by lane and loaded as one vector, they stalled store forwarding (a tenth of
-// the 10M random-box run). With AVX-512 by _mm512_set_pd: GCC kept the simd generator constructor, the
-// portable form, out of line in that kernel only (a call per gathered vector; 10M random boxes 10.3 →
-// 9.2 ns per box, near-surface aligned sets 7% faster). It inlines it for SSE2 and AVX2, where the set
-// intrinsics were no faster.
-template <class T>
-BOXCYL_BATCH_INLINE Lanes gather(const T* p, const std::size_t* idx, std::size_t count) {
-    auto at = [&](std::size_t l) { return static_cast<double>(p[idx[std::min(l, count - 1)]]); };
+// Lanes value(idx[0]), …, value(idx[count − 1]), the last repeated to fill the vector. Built from the
+// scalars: written to a buffer lane by lane and loaded as one vector, they stalled store forwarding
+// (a tenth of the 10M random-box run). With AVX-512 by _mm512_set_pd: GCC kept the simd generator
+// constructor, the portable form, out of line in that kernel only (a call per gathered vector; 10M
+// random boxes 10.3 → 9.2 ns per box, near-surface aligned sets 7% faster). It inlines it for SSE2
+// and AVX2, where the set intrinsics were no faster.
+template <class Value>
+BOXCYL_BATCH_INLINE Lanes gather(const Value& value, const std::size_t* idx, std::size_t count) {
+    auto at = [&](std::size_t l) { return static_cast<double>(value(idx[std::min(l, count - 1)])); };
 #if defined(__AVX512F__)
     if constexpr (lane_count == 8)
         return Lanes(_mm512_set_pd(at(7), at(6), at(5), at(4), at(3), at(2), at(1), at(0)));
@@ -61,20 +63,26 @@ BOXCYL_BATCH_INLINE Lanes gather(const T* p, const std::size_t* idx, std::size_t
     return Lanes([&](auto l) { return at(l); });
 }
 
+// Whether every lane certainly passes is_valid (Options::check_boxes): hi − lo in [0, DBL_MAX] is false
+// for NaN, ±∞ and lo > hi (and for bounds whose difference overflows: is_valid judges those).
+BOXCYL_BATCH_INLINE bool plausible(const Lanes lo[3], const Lanes hi[3]) {
+    constexpr double top = std::numeric_limits<double>::max();
+    const Lanes d0 = hi[0] - lo[0], d1 = hi[1] - lo[1], d2 = hi[2] - lo[2];
+    return stdx::all_of(d0 >= 0 && d0 <= top && d1 >= 0 && d1 <= top && d2 >= 0 && d2 <= top);
+}
+
 template <class T>
 struct AlignedSource {
     const AlignedBoxes<T>& b;
 
-    // First pass: lanes [i, i + valid), the centre-and-ball tests.
-    BOXCYL_BATCH_INLINE LaneResult lanes(const CylinderFilter& f, std::size_t i, std::size_t valid) const {
-        Lanes lo[3], hi[3];
+    // First pass: lanes [i, i + valid) (block_bits runs the centre-and-ball tests on them).
+    BOXCYL_BATCH_INLINE void load_lanes(std::size_t i, std::size_t valid, Lanes lo[3], Lanes hi[3]) const {
         load(b.min_x.data(), i, valid, lo[0]);
         load(b.min_y.data(), i, valid, lo[1]);
         load(b.min_z.data(), i, valid, lo[2]);
         load(b.max_x.data(), i, valid, hi[0]);
         load(b.max_y.data(), i, valid, hi[1]);
         load(b.max_z.data(), i, valid, hi[2]);
-        return aligned_ball_lanes(f, lo, hi);
     }
     // Second pass: the boxes idx[0, count) (count ≤ lane_count) that the first left, gathered, through
     // the whole filter.
@@ -82,14 +90,85 @@ struct AlignedSource {
         const T* arrays[6] = {b.min_x.data(), b.min_y.data(), b.min_z.data(), b.max_x.data(), b.max_y.data(), b.max_z.data()};
         Lanes lo[3], hi[3];
         for (int j = 0; j < 3; ++j) {
-            lo[j] = gather(arrays[j], idx, count);
-            hi[j] = gather(arrays[3 + j], idx, count);
+            const T* lo_j = arrays[j];
+            const T* hi_j = arrays[3 + j];
+            lo[j] = gather([lo_j](std::size_t k) { return lo_j[k]; }, idx, count);
+            hi[j] = gather([hi_j](std::size_t k) { return hi_j[k]; }, idx, count);
         }
         return aligned_lanes(f, lo, hi);
     }
     AlignedBox<double> box(std::size_t i) const {
         return {{double(b.min_x[i]), double(b.min_y[i]), double(b.min_z[i])},
                 {double(b.max_x[i]), double(b.max_y[i]), double(b.max_z[i])}};
+    }
+};
+
+// Aligned boxes as an array of AlignedBox<T> (rows of six numbers: min, max), read in place: each
+// vector of lanes is taken from the rows in registers, so the caller's array is read once and no
+// structure-of-arrays copy exists.
+template <class T>
+struct AlignedRowsSource {
+    std::span<const AlignedBox<T>> b;
+    static_assert(sizeof(AlignedBox<T>) == 6 * sizeof(T), "AlignedBox<T> must be six packed numbers");
+
+    BOXCYL_BATCH_INLINE void load_lanes(std::size_t i, std::size_t valid, Lanes lo[3], Lanes hi[3]) const {
+#if defined(__AVX512F__)
+        if constexpr (lane_count == 8 && std::is_same_v<T, double>) {
+            if (valid == 8) {
+                transpose8(reinterpret_cast<const char*>(b.data() + i), lo, hi);
+                return;
+            }
+        }
+#endif
+        const AlignedBox<T>* x = b.data() + i;
+        const std::size_t last = valid - 1;
+        for (std::size_t j = 0; j < 3; ++j) {
+            lo[j] = Lanes([&](auto l) { return static_cast<double>(x[std::min<std::size_t>(l, last)].min[j]); });
+            hi[j] = Lanes([&](auto l) { return static_cast<double>(x[std::min<std::size_t>(l, last)].max[j]); });
+        }
+    }
+#if defined(__AVX512F__)
+    // Eight rows (48 doubles, six vector loads) into the six vectors of their columns: column c of row r
+    // is element 6r + c. Rows 0–3 lie in loads 0–2, rows 4–7 in loads 3–5, at the same offsets: one
+    // two-source permutation takes each column's elements from loads 0–1 (lanes 0–3) and another from
+    // loads 3–4 (lanes 4–7), merged by a blend; a third takes those in loads 2 and 5 (rows 2, 3, 6, 7
+    // from column 4 on, rows 3 and 7 before), blended in. Three permutations and two blends a column.
+    BOXCYL_BATCH_INLINE static void transpose8(const char* p, Lanes lo[3], Lanes hi[3]) {
+        const __m512d r0 = _mm512_loadu_pd(p), r1 = _mm512_loadu_pd(p + 64), r2 = _mm512_loadu_pd(p + 128);
+        const __m512d r3 = _mm512_loadu_pd(p + 192), r4 = _mm512_loadu_pd(p + 256), r5 = _mm512_loadu_pd(p + 320);
+        auto column = [&](int c) {
+            // Element 6r + c of a 24-double half, r = 0..3: in its first two loads (index < 16, as a
+            // two-source index) or in its third (index − 16).
+            long long near[8], far[8];
+            __mmask8 from_third = 0;
+            for (int l = 0; l < 8; ++l) {
+                const int e = 6 * (l % 4) + c;
+                near[l] = e < 16 ? e : 0;
+                far[l] = e < 16 ? 0 : (e - 16) + (l < 4 ? 0 : 8);  // lanes 4–7 from the second source
+                if (e >= 16) from_third = static_cast<__mmask8>(from_third | (1u << l));
+            }
+            const __m512i in = _mm512_set_epi64(near[7], near[6], near[5], near[4], near[3], near[2], near[1], near[0]);
+            const __m512i out = _mm512_set_epi64(far[7], far[6], far[5], far[4], far[3], far[2], far[1], far[0]);
+            const __m512d low = _mm512_permutex2var_pd(r0, in, r1), high = _mm512_permutex2var_pd(r3, in, r4);
+            const __m512d both = _mm512_mask_blend_pd(0xF0, low, high);
+            return _mm512_mask_blend_pd(from_third, both, _mm512_permutex2var_pd(r2, out, r5));
+        };
+        lo[0] = Lanes(column(0)), lo[1] = Lanes(column(1)), lo[2] = Lanes(column(2));
+        hi[0] = Lanes(column(3)), hi[1] = Lanes(column(4)), hi[2] = Lanes(column(5));
+    }
+#endif
+    LaneResult gathered(const CylinderFilter& f, const std::size_t* idx, std::size_t count) const {
+        const AlignedBox<T>* x = b.data();
+        Lanes lo[3], hi[3];
+        for (std::size_t j = 0; j < 3; ++j) {
+            lo[j] = gather([x, j](std::size_t k) { return x[k].min[j]; }, idx, count);
+            hi[j] = gather([x, j](std::size_t k) { return x[k].max[j]; }, idx, count);
+        }
+        return aligned_lanes(f, lo, hi);
+    }
+    AlignedBox<double> box(std::size_t i) const {
+        const AlignedBox<T>& x = b[i];
+        return {{double(x.min[0]), double(x.min[1]), double(x.min[2])}, {double(x.max[0]), double(x.max[1]), double(x.max[2])}};
     }
 };
 
@@ -146,22 +225,36 @@ BOXCYL_BATCH_INLINE LaneBits to_bits(const LaneResult& r) {
 }
 
 // Answers for boxes [begin, begin + count), count ≤ 64, as bits 0..count−1: the first pass over every
-// vector of boxes without a branch per lane; a source with a second pass (aligned boxes: the whole
-// filter) sends the lanes the first left undecided through it, gathered into full vectors; a source
-// whose first pass stops before the hit search (oriented boxes) sends the lanes it left through that
-// search (filter.hpp's search_hits), gathered; what is still undecided goes to the scalar exact
-// default, one box at a time.
+// vector of boxes without a branch per lane (aligned sources load the lanes, and the centre-and-ball
+// tests run here); a source with a second pass (aligned boxes: the whole filter) sends the lanes the
+// first left undecided through it, gathered into full vectors; a source whose first pass stops before
+// the hit search (oriented boxes) sends the lanes it left through that search (filter.hpp's
+// search_hits), gathered; what is still undecided goes to the scalar exact default, one box at a time.
+// check (Options::check_boxes): every box of the block is known valid before any is answered — for
+// aligned sources by a few comparisons on the loaded lanes (is_valid over the block only when they
+// cannot clear a vector), else by is_valid per box; the first invalid one throws InvalidBox.
 template <class Source>
 std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, const Source& s, std::size_t begin,
-                         std::size_t count, Stats& st) {
+                         std::size_t count, bool check, Stats& st) {
 #ifndef NDEBUG
-    for (std::size_t i = begin; i < begin + count; ++i)
-        assert(is_valid(s.box(i)) && "boxcyl::batch::intersects: invalid box (see boxcyl::validate)");
+    if (!check)
+        for (std::size_t i = begin; i < begin + count; ++i)
+            assert(is_valid(s.box(i)) && "boxcyl::batch::intersects: invalid box (see boxcyl::validate)");
 #endif
+    constexpr bool loads = requires(Lanes* v) { s.load_lanes(std::size_t{0}, std::size_t{1}, v, v); };
     std::uint64_t bits = 0, open = 0;
+    bool suspect = check && !loads;
     for (std::size_t k = 0; k < count; k += lane_count) {
         const std::size_t valid = std::min(lane_count, count - k);
-        const LaneResult r = s.lanes(f, begin + k, valid);
+        LaneResult r;
+        if constexpr (loads) {
+            Lanes lo[3], hi[3];
+            s.load_lanes(begin + k, valid, lo, hi);
+            if (check && !plausible(lo, hi)) suspect = true;
+            r = aligned_ball_lanes(f, lo, hi);  // NaN or ∞ lanes of an invalid box: harmless, never used
+        } else {
+            r = s.lanes(f, begin + k, valid);
+        }
         if (stdx::all_of(r.decided) && stdx::none_of(r.hit)) continue;  // certain misses: the common case
         static_assert(lane_count < 64);
         const std::uint64_t in_range = (std::uint64_t{1} << valid) - 1;
@@ -169,6 +262,9 @@ std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, c
         bits |= (b.hit & in_range) << k;
         open |= (b.open & in_range) << k;
     }
+    if (suspect)
+        for (std::size_t i = begin; i < begin + count; ++i)
+            if (!is_valid(s.box(i))) throw InvalidBox(i);
     // A pass over the open lanes, gathered into full vectors: pass(idx, m) filters the boxes idx[0, m).
     auto gathered_pass = [&](auto&& pass) {
         std::size_t idx[64], n = 0;
@@ -213,7 +309,7 @@ Stats run(const Cylinder<double>& cyl, const Source& s, std::size_t n, const Opt
         Stats x;
         for (std::size_t blk = first; blk < last; ++blk) {
             const std::size_t begin = blk * 64, count = std::min<std::size_t>(64, n - begin);
-            emit(blk, block_bits(f, cyl, s, begin, count, x), count);
+            emit(blk, block_bits(f, cyl, s, begin, count, opt.check_boxes, x), count);
         }
         per_thread[t] = x;
     });
@@ -253,6 +349,15 @@ Stats aligned_bools(const Cylinder<double>& cyl, const AlignedBoxes<T>& b, std::
     return detail::to_bools(cyl, detail::AlignedSource<T>{b}, b.size(), out, opt);
 }
 template <class T>
+Stats rows_mask(const Cylinder<double>& cyl, std::span<const AlignedBox<T>> b, std::span<std::uint64_t> mask,
+                const Options& opt) {
+    return detail::to_mask(cyl, detail::AlignedRowsSource<T>{b}, b.size(), mask, opt);
+}
+template <class T>
+Stats rows_bools(const Cylinder<double>& cyl, std::span<const AlignedBox<T>> b, std::span<bool> out, const Options& opt) {
+    return detail::to_bools(cyl, detail::AlignedRowsSource<T>{b}, b.size(), out, opt);
+}
+template <class T>
 Stats oriented_mask(const Cylinder<double>& cyl, std::span<const OrientedBox<T>> b, std::span<std::uint64_t> mask,
                     const Options& opt) {
     return detail::to_mask(cyl, detail::OrientedSource<T>{b}, b.size(), mask, opt);
@@ -265,7 +370,7 @@ Stats oriented_bools(const Cylinder<double>& cyl, std::span<const OrientedBox<T>
 
 template <class T>
 constexpr KernelEntries<T> entries() {
-    return {&aligned_mask<T>, &aligned_bools<T>, &oriented_mask<T>, &oriented_bools<T>};
+    return {&aligned_mask<T>, &aligned_bools<T>, &rows_mask<T>, &rows_bools<T>, &oriented_mask<T>, &oriented_bools<T>};
 }
 
 // kernel: the name this table answers to (Kernel::compiled for the header's own).
