@@ -30,6 +30,7 @@
 #include <chrono>              // the signal-check period; the timed raw batch
 #include <cmath>               // std::fabs
 #include <condition_variable>  // the caller waits for the workers with a timeout
+#include <cstdint>             // std::uintptr_t: the rows' alignment
 #include <cstring>             // std::memcpy: array elements need not be aligned
 #include <ctime>               // clock_gettime: the timed raw batch's CPU time
 #include <exception>           // a worker's unexpected exception, rethrown by the caller
@@ -540,6 +541,37 @@ struct OrientedBatchChunk {
     }
 };
 
+// Aligned boxes with one cylinder, as the rows of a C-contiguous (N, 2, 3) array (min and max of box i
+// are the six numbers at 48i bytes): no copy; the batch API reads the rows in place, and checks each
+// box on the numbers it loads (Options::check_boxes) — a chunk that holds an invalid box is answered
+// no further, and the box is named by validate().
+struct AlignedRowsChunk {
+    const AlignedFields& boxes;
+    const AlignedBox* rows;
+    struct Scratch {};
+
+    void operator()(Scratch&, const Cylinder& cyl, bool* result, FirstFailure& failure, Index begin, Index end) const {
+        const auto m = static_cast<std::size_t>(end - begin);
+        try {
+            boxcyl::batch::intersects(cyl, std::span<const AlignedBox>(rows + begin, m),
+                                      std::span<bool>(result + begin, m), {1, boxcyl::batch::Kernel::automatic, true});
+        } catch (const boxcyl::batch::InvalidBox& e) {
+            const Index i = begin + static_cast<Index>(e.index);
+            failure.record(2 * i, boxcyl::validate(boxes(i), element_name("box", "boxes", false, i)).message());
+        }
+    }
+};
+
+// The rows of a C-contiguous (N, 2, 3) float64 array, when min and max are its two halves (the
+// package passes boxes[:, 0] and boxes[:, 1]); else nullptr.
+const AlignedBox* aligned_rows(const AlignedFields& b) {
+    auto adjacent = [](const Field& f) { return f.offset[0] == 0 && f.offset[1] == 8 && f.offset[2] == 16; };
+    const bool rows = adjacent(b.min) && adjacent(b.max) && b.min.step == 48 && b.max.step == 48 &&
+                      b.max.base == b.min.base + 24 &&
+                      reinterpret_cast<std::uintptr_t>(b.min.base) % alignof(AlignedBox) == 0;
+    return rows ? reinterpret_cast<const AlignedBox*>(b.min.base) : nullptr;
+}
+
 py::array_t<bool> intersects_aligned(const py::array& min, const py::array& max, bool box_single,
                                      const py::array& center, const py::array& axis, const py::array& radius,
                                      const py::array& height, bool cylinder_single, boxcyl::Algorithm algorithm,
@@ -547,6 +579,9 @@ py::array_t<bool> intersects_aligned(const py::array& min, const py::array& max,
     const AlignedFields boxes{field(min, "min", {3}), field(max, "max", {3})};
     const CylinderFields cyls = cylinder_fields(center, axis, radius, height);
     const Index n = batch_length({&boxes.min, &boxes.max, &cyls.center, &cyls.axis, &cyls.radius, &cyls.height});
+    if (const AlignedBox* rows = box_single ? nullptr : aligned_rows(boxes))
+        return run_batch(n, boxes, box_single, cyls, cylinder_single, algorithm, arithmetic, threads, kAlignedChunks,
+                         AlignedRowsChunk{boxes, rows});
     return run_batch(n, boxes, box_single, cyls, cylinder_single, algorithm, arithmetic, threads, kAlignedChunks,
                      AlignedBatchChunk{boxes});
 }
@@ -661,6 +696,22 @@ py::tuple timed_batch_aligned(const F64Array& soa, const Cylinder& cyl, unsigned
         py::gil_scoped_release release;
         boxcyl::batch::intersects(cyl, boxcyl::batch::AlignedBoxes<double>{row(0), row(1), row(2), row(3), row(4), row(5)},
                                   result, {threads});
+        timer.stop();
+    }
+    return py::make_tuple(out, timer.wall, timer.cpu);
+}
+
+// boxes: (N, 2, 3) rows [min, max], read in place as AlignedBox<double>.
+py::tuple timed_batch_aligned_rows(const F64Array& boxes, const Cylinder& cyl, unsigned threads) {
+    if (boxes.ndim() != 3 || boxes.shape(1) != 2 || boxes.shape(2) != 3) throw py::value_error("boxes: expected shape (N, 2, 3)");
+    const auto n = static_cast<std::size_t>(boxes.shape(0));
+    const auto* rows = reinterpret_cast<const AlignedBox*>(boxes.data());
+    py::array_t<bool> out(static_cast<Index>(n));
+    std::span<bool> result(out.mutable_data(), n);
+    Timer timer;
+    {
+        py::gil_scoped_release release;
+        boxcyl::batch::intersects(cyl, std::span<const AlignedBox>(rows, n), result, {threads});
         timer.stop();
     }
     return py::make_tuple(out, timer.wall, timer.cpu);
@@ -806,6 +857,8 @@ PYBIND11_MODULE(_core, m) {
           "arithmetic"_a, "threads"_a);
     m.def("_timed_batch_aligned", &timed_batch_aligned, "soa"_a, "cylinder"_a, "threads"_a,
           "boxcyl::batch::intersects alone on (6, N) arrays: (answers, wall seconds, CPU seconds). For benchmarks.");
+    m.def("_timed_batch_aligned_rows", &timed_batch_aligned_rows, "boxes"_a, "cylinder"_a, "threads"_a,
+          "boxcyl::batch::intersects alone on (N, 2, 3) [min, max] rows: (answers, wall seconds, CPU seconds). For benchmarks.");
     m.def("_timed_batch_oriented", &timed_batch_oriented, "boxes"_a, "cylinder"_a, "threads"_a,
           "boxcyl::batch::intersects alone on (N, 15) oriented boxes: (answers, wall seconds, CPU seconds). For benchmarks.");
     m.def("_hardware_threads", [] { return std::max(1u, std::thread::hardware_concurrency()); },
