@@ -15,6 +15,7 @@
 #include <cstddef>  // std::size_t, std::ptrdiff_t
 #include <cstdint>  // std::uint64_t
 #include <cstdio>   // std::printf
+#include <iterator>  // std::size
 #include <limits>   // NaN and infinity for the checked boxes
 #include <memory>   // std::unique_ptr<bool[]>
 #include <ostream>  // PrintTo
@@ -563,7 +564,8 @@ TEST_P(BatchKernels, RoundingModes) {
 // Options::check_boxes: valid sets give the same answers as without it (the rows and the six arrays,
 // including valid boxes whose extent overflows a double, which the cheap check cannot clear); an
 // invalid box — NaN, ±∞, min > max in one coordinate — throws InvalidBox naming it, wherever it lies
-// in its vector and block, and the first of two invalid boxes is the one named.
+// in its vector and block, and the first of two invalid boxes is the one named. The same for oriented
+// boxes and parallelepipeds.
 TEST_P(BatchKernels, CheckedBoxes) {
     const BatchSet s = random_batch(0xBA7CA000, 300);
     std::vector<AlignedBox<double>> boxes = s.aligned;
@@ -612,14 +614,45 @@ TEST_P(BatchKernels, CheckedBoxes) {
             }
         }
     }
-    // Oriented boxes are checked by is_valid: an axis that is not unit length.
+    // Oriented boxes: valid ones (an axis 1e-5 off unit length included) answer as without the check;
+    // a non-finite number, a negative extent, an axis off unit length or two axes not orthogonal
+    // beyond validate()'s tolerance throw, the first of two named.
     std::vector<OrientedBox<double>> o = s.oriented;
-    o[70].axes[1] = {0, 2, 0};
+    o[5].axes[0] = {1 + 1e-5, 0, 0};
+    if (!is_valid(o[5])) o[5] = s.oriented[5];
+    const std::vector<bool> wo = scalar_answers(s.cylinder, o);
+    batch::intersects(s.cylinder, std::span<const OrientedBox<double>>(o), std::span<bool>(bools.get(), o.size()), checked);
+    for (std::size_t i = 0; i < o.size(); ++i) EXPECT_EQ(bools[i], wo[i]) << "oriented, box " << i;
+    using Spoil = void (*)(OrientedBox<double>&);
+    const Spoil spoils[] = {
+        [](OrientedBox<double>& b) { b.center[1] = std::numeric_limits<double>::quiet_NaN(); },
+        [](OrientedBox<double>& b) { b.extents[2] = -0.5; },
+        [](OrientedBox<double>& b) { b.extents[0] = std::numeric_limits<double>::infinity(); },
+        [](OrientedBox<double>& b) { b.axes[1] = {b.axes[1][0] * 2, b.axes[1][1] * 2, b.axes[1][2] * 2}; },
+        [](OrientedBox<double>& b) { b.axes[2] = b.axes[0]; },
+    };
+    for (std::size_t k = 0; k < std::size(spoils); ++k)
+        for (std::size_t at : {std::size_t{0}, std::size_t{6}, std::size_t{70}, o.size() - 1}) {
+            std::vector<OrientedBox<double>> b = o;
+            spoils[k](b[at]);
+            if (at + 3 < b.size()) spoils[0](b[at + 3]);
+            std::size_t index = b.size();
+            try {
+                batch::intersects(s.cylinder, std::span<const OrientedBox<double>>(b), std::span<std::uint64_t>(mask), checked);
+            } catch (const batch::InvalidBox& e) {
+                index = e.index;
+            }
+            EXPECT_EQ(index, at) << "oriented, spoil " << k;
+        }
+    // Parallelepipeds: is_valid per box.
+    std::vector<Parallelepiped<double>> p;
+    for (const OrientedBox<double>& b : s.oriented) p.push_back({b.center, b.axes, b.extents});
+    p[90].extents[1] = -1;
     try {
-        batch::intersects(s.cylinder, std::span<const OrientedBox<double>>(o), std::span<std::uint64_t>(mask), checked);
-        ADD_FAILURE() << "oriented: no InvalidBox";
+        batch::intersects(s.cylinder, std::span<const Parallelepiped<double>>(p), std::span<std::uint64_t>(mask), checked);
+        ADD_FAILURE() << "parallelepipeds: no InvalidBox";
     } catch (const batch::InvalidBox& e) {
-        EXPECT_EQ(e.index, 70u);
+        EXPECT_EQ(e.index, 90u);
     }
 }
 

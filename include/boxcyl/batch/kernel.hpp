@@ -63,6 +63,22 @@ BOXCYL_BATCH_INLINE Lanes gather(const Value& value, const std::size_t* idx, std
     return Lanes([&](auto l) { return at(l); });
 }
 
+// Whether every lane certainly passes is_valid (Options::check_boxes), for oriented boxes: every number
+// finite, extents ≥ 0, and the Gram matrix of the axes in double within 10^-12 inside validate()'s
+// tolerance (for axes of length about 1 its rounding error is below 10^-15, and an axis much longer
+// fails its diagonal entry whatever the rounding; NaN and ∞ fail every comparison).
+BOXCYL_BATCH_INLINE bool plausible(const Lanes k[3], const Lanes A[3][3], const Lanes e[3]) {
+    constexpr double top = std::numeric_limits<double>::max(), tol = orthonormality_tolerance - 1e-12;
+    LaneMask ok = stdx::abs(k[0]) <= top && stdx::abs(k[1]) <= top && stdx::abs(k[2]) <= top && e[0] >= 0 &&
+                  e[0] <= top && e[1] >= 0 && e[1] <= top && e[2] >= 0 && e[2] <= top;
+    for (int a = 0; a < 3; ++a)
+        for (int c = a; c < 3; ++c) {
+            const Lanes g = A[a][0] * A[c][0] + A[a][1] * A[c][1] + A[a][2] * A[c][2];
+            ok = ok && stdx::abs(g - (a == c ? 1.0 : 0.0)) <= tol;  // finite axes follow from these
+        }
+    return stdx::all_of(ok);
+}
+
 // Whether every lane certainly passes is_valid (Options::check_boxes): hi − lo in [0, DBL_MAX] is false
 // for NaN, ±∞ and lo > hi (and for bounds whose difference overflows: is_valid judges those).
 BOXCYL_BATCH_INLINE bool plausible(const Lanes lo[3], const Lanes hi[3]) {
@@ -176,12 +192,10 @@ template <class T>
 struct OrientedSource {
     std::span<const OrientedBox<T>> b;
 
-    // First pass: the whole filter but its hit search.
-    LaneResult lanes(const CylinderFilter& f, std::size_t i, std::size_t valid) const {
+    // First pass: lanes [i, i + valid) (block_bits runs the whole filter but its hit search on them).
+    BOXCYL_BATCH_INLINE void load_frames(std::size_t i, std::size_t valid, Lanes k[3], Lanes A[3][3], Lanes e[3]) const {
         const OrientedBox<T>* x = b.data() + i;
-        Lanes k[3], A[3][3], e[3];
         load([x, valid](std::size_t l) -> const OrientedBox<T>& { return x[std::min(l, valid - 1)]; }, k, A, e);
-        return oriented_lanes(f, k, A, e);
     }
     // Last pass: the hit search, on the boxes idx[0, count) that the first left, gathered.
     LaneResult searched(const CylinderFilter& f, const std::size_t* idx, std::size_t count) const {
@@ -231,8 +245,9 @@ BOXCYL_BATCH_INLINE LaneBits to_bits(const LaneResult& r) {
 // the hit search (oriented boxes) sends the lanes it left through that search (filter.hpp's
 // search_hits), gathered; what is still undecided goes to the scalar exact default, one box at a time.
 // check (Options::check_boxes): every box of the block is known valid before any is answered — for
-// aligned sources by a few comparisons on the loaded lanes (is_valid over the block only when they
-// cannot clear a vector), else by is_valid per box; the first invalid one throws InvalidBox.
+// aligned and oriented sources by a few vector operations on the loaded lanes (is_valid over the block
+// only when they cannot clear a vector), else by is_valid per box; the first invalid one throws
+// InvalidBox.
 template <class Source>
 std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, const Source& s, std::size_t begin,
                          std::size_t count, bool check, Stats& st) {
@@ -242,8 +257,9 @@ std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, c
             assert(is_valid(s.box(i)) && "boxcyl::batch::intersects: invalid box (see boxcyl::validate)");
 #endif
     constexpr bool loads = requires(Lanes* v) { s.load_lanes(std::size_t{0}, std::size_t{1}, v, v); };
+    constexpr bool frames = requires(Lanes* v, Lanes (*m)[3]) { s.load_frames(std::size_t{0}, std::size_t{1}, v, m, v); };
     std::uint64_t bits = 0, open = 0;
-    bool suspect = check && !loads;
+    bool suspect = check && !loads && !frames;
     for (std::size_t k = 0; k < count; k += lane_count) {
         const std::size_t valid = std::min(lane_count, count - k);
         LaneResult r;
@@ -252,6 +268,11 @@ std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, c
             s.load_lanes(begin + k, valid, lo, hi);
             if (check && !plausible(lo, hi)) suspect = true;
             r = aligned_ball_lanes(f, lo, hi);  // NaN or ∞ lanes of an invalid box: harmless, never used
+        } else if constexpr (frames) {
+            Lanes c[3], A[3][3], e[3];
+            s.load_frames(begin + k, valid, c, A, e);
+            if (check && !plausible(c, A, e)) suspect = true;
+            r = oriented_lanes(f, c, A, e);
         } else {
             r = s.lanes(f, begin + k, valid);
         }

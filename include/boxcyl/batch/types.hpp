@@ -44,9 +44,10 @@ struct Options {
     unsigned threads = 1;               // 0: std::thread::hardware_concurrency()
     Kernel kernel = Kernel::automatic;  // which SIMD kernel (answers do not depend on it)
     // Check every box (boxcyl::is_valid) before answering it, instead of assuming it valid: an invalid
-    // box throws InvalidBox. For aligned boxes a few vector comparisons in the filter's first pass, on
-    // the numbers it loads anyway (a box they cannot clear is judged by is_valid); other boxes call
-    // is_valid per box.
+    // box throws InvalidBox. For aligned and oriented boxes a few vector operations in the filter's
+    // first pass, on the numbers it loads anyway (bounds ordered and finite; for oriented boxes finite
+    // numbers, extents ≥ 0, the axes' Gram matrix in double); a block they cannot clear is judged by
+    // is_valid. Parallelepipeds call is_valid per box.
     bool check_boxes = false;
 };
 
