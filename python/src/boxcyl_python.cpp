@@ -10,11 +10,14 @@
 //
 // A batch runs in chunks on worker threads with the GIL released, while the calling thread checks for
 // signals every few milliseconds (Ctrl-C raises KeyboardInterrupt promptly; the workers stop after
-// their current chunk). Each chunk gathers its elements from the arrays and checks them with a few
-// comparisons per element; an element that fails is then named by boxcyl::validate ("boxes[17].max[0]:
-// is less than boxes[17].min[0]"), and the batch reports the first invalid element by index. One
-// cylinder against many boxes with the default query goes through the batch API per chunk
-// (boxcyl/batch.hpp: SIMD filter + exact fallback); anything else through the scalar query.
+// their current chunk). Every element is checked with a few comparisons (an element that fails is then
+// named by boxcyl::validate: "boxes[17].max[0]: is less than boxes[17].min[0]"), and the batch reports
+// the first invalid element by index. One cylinder against many boxes with the default query goes
+// through the batch API per chunk (boxcyl/batch.hpp: SIMD filter + exact fallback), which checks the
+// boxes as its filter loads them (Options::check_boxes): aligned boxes in a C-contiguous (N, 2, 3)
+// array are read in place (its AlignedBox rows form), oriented boxes copied into OrientedBox structs,
+// other aligned layouts gathered into its six arrays and checked on the way. Anything else goes
+// through the scalar query, checked element by element.
 #include <pybind11/numpy.h>     // input arrays, bool output arrays
 #include <pybind11/pybind11.h>  // the bindings
 #include <pybind11/stl.h>       // std::array <-> Python sequences
@@ -435,8 +438,7 @@ struct Buffer {
 // false for NaN, ±Inf and min > max (and for bounds so far apart that the difference overflows, which
 // the caller then judges exactly). With SSE2, two boxes at a time when each row's three numbers are
 // adjacent (the usual layouts: (N, 2, 3) and (N, 3) arrays, also strided views of them). It reads the
-// caller's arrays once: on a machine whose memory is slow next to the filter, that pass is most of
-// what the batch forms cost beyond the batch API itself.
+// caller's arrays once; a C-contiguous (N, 2, 3) array skips this copy (AlignedRowsChunk).
 bool gather_aligned(const AlignedFields& b, Index begin, Index m, double* v) {
     constexpr double big = std::numeric_limits<double>::max();
     auto adjacent = [](const Field& f) { return f.offset[0] == 0 && f.offset[1] == 8 && f.offset[2] == 16; };
