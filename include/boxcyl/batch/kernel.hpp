@@ -143,8 +143,8 @@ struct AlignedRowsSource {
         // A full vector of double rows: each column by one gather instruction (element c of row r
         // is 6r + c doubles from the first row). Beside the six arrays, the filter's first pass
         // here costs 5–8% more (bench_batch: batched/regular/aligned_rows against aligned, AVX-512);
-        // an in-register transpose of the six loads (vpermt2pd, three a column) was no faster on
-        // the data the Python batch sees and 7% slower on bench_batch's 10M random boxes.
+        // an in-register transpose of the six loads (vpermt2pd, three a column) was no faster
+        // (bench/python_batch.py's boxes; bench_batch's 10M random boxes) and takes more code.
         if constexpr (std::is_same_v<T, double> && (lane_count == 8 || lane_count == 4)) {
             if (valid == lane_count) {
                 const char* p = reinterpret_cast<const char*>(b.data() + i);
