@@ -535,12 +535,14 @@ void gather_oriented(const OrientedFields& b, Index begin, Index m, OrientedBox*
     const char* e = b.extents.base + begin * b.extents.step;
     constexpr Index ahead = 8;
     for (Index i = 0; i < m; ++i) {
+#if defined(__GNUC__)
         if (i + ahead < m) {
             __builtin_prefetch(c + (i + ahead) * b.center.step);
             __builtin_prefetch(a + (i + ahead) * b.axes.step);
             __builtin_prefetch(a + (i + ahead) * b.axes.step + 64);
             __builtin_prefetch(e + (i + ahead) * b.extents.step);
         }
+#endif
         std::memcpy(&v[i].center, c + i * b.center.step, sizeof(Vec));
         std::memcpy(&v[i].axes, a + i * b.axes.step, 3 * sizeof(Vec));
         std::memcpy(&v[i].extents, e + i * b.extents.step, sizeof(Vec));
