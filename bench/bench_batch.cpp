@@ -23,6 +23,9 @@
 // themselves (stream_GB_per_s, the fastest of five passes with the same threads) and report
 // bandwidth_share_pct: the batch's throughput as a share of it, the goal being ≥ 50.
 //
+// Aligned boxes are timed in both forms of the batch API: `aligned` the six arrays, `aligned_rows` an
+// array of AlignedBox<double> (the [min, max] rows, read in place) holding the same boxes.
+//
 // Kernels: each batch run twice, `automatic` (boxcyl::batch_dispatch's choice for this CPU, named in
 // the label) and `compiled` (the header's portable kernel).
 //
@@ -107,8 +110,10 @@ void scalar(benchmark::State& state, bool only_regular, bool oriented) {
     report(state, per_pass, 0);
 }
 
+enum class Form { arrays, rows, oriented };
+
 // The batch, one call per cylinder.
-void batched(benchmark::State& state, bool only_regular, bool oriented, unsigned threads, batch::Kernel kernel) {
+void batched(benchmark::State& state, bool only_regular, Form form, unsigned threads, batch::Kernel kernel) {
     if (!batch::available(kernel)) return state.SkipWithError("kernel not available on this machine");
     const std::vector<Set>& sets = data(only_regular);
     std::vector<std::uint64_t> mask(batch::mask_words(kBoxesPerSet));
@@ -117,10 +122,12 @@ void batched(benchmark::State& state, bool only_regular, bool oriented, unsigned
     for (auto _ : state) {
         per_pass = 0;
         for (const Set& s : sets) {
+            const batch::Options opt{threads, kernel};
+            const std::span<std::uint64_t> out(mask);
             const batch::Stats st =
-                oriented ? batch::intersects(s.boxes.cylinder, std::span<const OrientedBox<double>>(s.boxes.oriented),
-                                             std::span<std::uint64_t>(mask), {threads, kernel})
-                         : batch::intersects(s.boxes.cylinder, s.soa.view(), std::span<std::uint64_t>(mask), {threads, kernel});
+                form == Form::oriented ? batch::intersects(s.boxes.cylinder, std::span<const OrientedBox<double>>(s.boxes.oriented), out, opt)
+                : form == Form::rows   ? batch::intersects(s.boxes.cylinder, std::span<const AlignedBox<double>>(s.boxes.aligned), out, opt)
+                                       : batch::intersects(s.boxes.cylinder, s.soa.view(), out, opt);
             benchmark::DoNotOptimize(mask.data());
             per_pass += st.boxes;
             exact += st.exact_lanes;
@@ -233,9 +240,28 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-void large_batch(benchmark::State& state, bool voxels, unsigned threads, batch::Kernel kernel) {
+// The same boxes as an array of AlignedBox<double> (built on first use: 480 MB more).
+const std::vector<AlignedBox<double>>& large_rows(bool voxels) {
+    auto make = [](const Large& l) {
+        std::vector<AlignedBox<double>> rows(kLarge);
+        for (std::size_t i = 0; i < kLarge; ++i)
+            rows[i] = {{l.soa.v[0][i], l.soa.v[1][i], l.soa.v[2][i]}, {l.soa.v[3][i], l.soa.v[4][i], l.soa.v[5][i]}};
+        return rows;
+    };
+    if (voxels) {
+        static const std::vector<AlignedBox<double>> v = make(large(true));
+        return v;
+    }
+    static const std::vector<AlignedBox<double>> r = make(large(false));
+    return r;
+}
+
+// rows: the batch reads large_rows() instead of the six arrays (the bandwidth is still the arrays').
+void large_batch(benchmark::State& state, bool voxels, unsigned threads, batch::Kernel kernel, bool rows = false) {
     if (!batch::available(kernel)) return state.SkipWithError("kernel not available on this machine");
     const Large& l = large(voxels);
+    const std::span<const AlignedBox<double>> row_view = rows ? std::span<const AlignedBox<double>>(large_rows(voxels))
+                                                              : std::span<const AlignedBox<double>>();
     // The bandwidth, in this run, with the same threads: the fastest of five streaming passes (so the
     // share below errs low).
     double stream_s = 1e300;
@@ -249,7 +275,9 @@ void large_batch(benchmark::State& state, bool voxels, unsigned threads, batch::
     batch::Kernel ran = kernel;
     const auto t0 = std::chrono::steady_clock::now();
     for (auto _ : state) {
-        const batch::Stats st = batch::intersects(l.cylinder, l.soa.view(), std::span<std::uint64_t>(mask), {threads, kernel});
+        const batch::Options opt{threads, kernel};
+        const batch::Stats st = rows ? batch::intersects(l.cylinder, row_view, std::span<std::uint64_t>(mask), opt)
+                                     : batch::intersects(l.cylinder, l.soa.view(), std::span<std::uint64_t>(mask), opt);
         benchmark::DoNotOptimize(mask.data());
         ran = st.kernel;
         exact += st.exact_lanes;
@@ -297,17 +325,21 @@ void stream_sum(benchmark::State& state, bool voxels, unsigned threads) {
 // flags: 2 doubles on plain x86-64).
 constexpr batch::Kernel kAuto = batch::Kernel::automatic, kPortable = batch::Kernel::compiled;
 BENCHMARK_CAPTURE(scalar, mixed/aligned, false, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(batched, mixed/aligned/automatic, false, false, 1u, kAuto)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(batched, mixed/aligned/compiled, false, false, 1u, kPortable)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, mixed/aligned/automatic, false, Form::arrays, 1u, kAuto)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, mixed/aligned/compiled, false, Form::arrays, 1u, kPortable)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, mixed/aligned_rows/automatic, false, Form::rows, 1u, kAuto)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, mixed/aligned_rows/compiled, false, Form::rows, 1u, kPortable)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(scalar, mixed/oriented, false, true)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(batched, mixed/oriented/automatic, false, true, 1u, kAuto)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(batched, mixed/oriented/compiled, false, true, 1u, kPortable)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, mixed/oriented/automatic, false, Form::oriented, 1u, kAuto)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, mixed/oriented/compiled, false, Form::oriented, 1u, kPortable)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(scalar, regular/aligned, true, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(batched, regular/aligned/automatic, true, false, 1u, kAuto)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(batched, regular/aligned/compiled, true, false, 1u, kPortable)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, regular/aligned/automatic, true, Form::arrays, 1u, kAuto)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, regular/aligned/compiled, true, Form::arrays, 1u, kPortable)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, regular/aligned_rows/automatic, true, Form::rows, 1u, kAuto)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, regular/aligned_rows/compiled, true, Form::rows, 1u, kPortable)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(scalar, regular/oriented, true, true)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(batched, regular/oriented/automatic, true, true, 1u, kAuto)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(batched, regular/oriented/compiled, true, true, 1u, kPortable)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, regular/oriented/automatic, true, Form::oriented, 1u, kAuto)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(batched, regular/oriented/compiled, true, Form::oriented, 1u, kPortable)->Unit(benchmark::kMillisecond);
 BENCHMARK(prepare)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(small_batch, mixed/aligned/n_8, std::size_t{8})->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(small_batch, mixed/aligned/n_64, std::size_t{64})->Unit(benchmark::kMicrosecond);
@@ -323,5 +355,8 @@ BENCHMARK_CAPTURE(large_batch, random/threads_1/automatic, false, 1u, kAuto)->Un
 BENCHMARK_CAPTURE(large_batch, random/threads_all/automatic, false, 0u, kAuto)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(large_batch, random/threads_1/compiled, false, 1u, kPortable)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(large_batch, random/threads_all/compiled, false, 0u, kPortable)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, random_rows/threads_1/automatic, false, 1u, kAuto, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, random_rows/threads_all/automatic, false, 0u, kAuto, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, random_rows/threads_1/compiled, false, 1u, kPortable, true)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();

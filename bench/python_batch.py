@@ -9,12 +9,14 @@ oriented boxes (center, axes, extents arrays), it times
            validation of every box, and the batch API, as a user calls them;
   c++      boxcyl::batch::intersects alone (boxcyl._core._timed_batch_*), on the structure-of-arrays
            (aligned) or OrientedBox array (oriented) it takes, prepared beforehand and timed inside C++;
-  c++ +    the same plus numpy's copy of the (N, 2, 3) array into the six arrays the C++ batch takes
-  layout   (what a caller holding boxes as [min, max] rows pays to call it; aligned only);
+  c++ rows boxcyl::batch::intersects alone on the (N, 2, 3) array itself, read in place as
+           AlignedBox<double> rows (aligned only; the form the Python aligned batch calls);
+  c++ +    the same as c++ plus numpy's copy of the (N, 2, 3) array into the six arrays
+  layout   (what a caller holding boxes as [min, max] rows would pay without the rows form; aligned only);
 
 each with one thread and with all cores (threads=None / 0), interleaved, `--repeat` times. It prints
 the fastest wall time and the fastest process CPU time (all threads) of each, and the ratios of the
-python form to c++. On a machine shared with other work the CPU times are the steadier figures.
+python form to each C++ baseline. On a machine shared with other work the CPU times are the steadier figures.
 Last, the Ctrl-C latency: SIGINT sent to a batch of 10^8 exactly touching boxes (each one left to the
 exact fallback), the time until KeyboardInterrupt arrives, over five tries.
 """
@@ -63,20 +65,19 @@ def oriented_case(rng, n):
     return (center, rows, extents), cyl
 
 
-def measure(name, python_call, cxx_call, layout_call, repeat):
-    py, cxx, lay = [], [], []
+def measure(name, python_call, baselines, repeat):
+    """baselines: (label, call) pairs; each call returns (wall, cpu) seconds of its timed part."""
+    py, base = [], [[] for _ in baselines]
     for _ in range(repeat):
         py.append(timed(python_call))
-        cxx.append(cxx_call())
-        if layout_call:
-            lay.append(layout_call())
-    (pw, pc), (cw, cc) = best(py), best(cxx)
-    print(f"{name:<22} python {pw * 1e3:8.2f} ms wall {pc * 1e3:8.2f} ms cpu | c++ {cw * 1e3:8.2f} ms wall "
-          f"{cc * 1e3:8.2f} ms cpu | python/c++ {pw / cw:5.2f} wall {pc / cc:5.2f} cpu")
-    if layout_call:
-        lw, lc = best(lay)
-        print(f"{'':<22} c++ + layout {lw * 1e3:8.2f} ms wall {lc * 1e3:8.2f} ms cpu | python/(c++ + layout) "
-              f"{pw / lw:5.2f} wall {pc / lc:5.2f} cpu")
+        for samples, (_, call) in zip(base, baselines):
+            samples.append(call())
+    pw, pc = best(py)
+    print(f"{name:<22} python {pw * 1e3:8.2f} ms wall {pc * 1e3:8.2f} ms cpu")
+    for samples, (label, _) in zip(base, baselines):
+        bw, bc = best(samples)
+        print(f"{'':<22} {label:<14} {bw * 1e3:8.2f} ms wall {bc * 1e3:8.2f} ms cpu | python/({label}) "
+              f"{pw / bw:5.2f} wall {pc / bc:5.2f} cpu")
 
 
 def interrupt_latency(tries):
@@ -109,6 +110,7 @@ def main():
     soa = np.ascontiguousarray(np.moveaxis(boxes, 0, -1).reshape(6, n))  # min_x, min_y, min_z, max_x, ...
     expected, _, _ = _core._timed_batch_aligned(soa, cyl, 1)
     assert np.array_equal(boxcyl.intersects_aligned(boxes, cyl), expected)
+    assert np.array_equal(_core._timed_batch_aligned_rows(boxes, cyl, 1)[0], expected)
     print(f"aligned: {expected.mean() * 100:.1f} % hit")
 
     def layout_and_batch(threads):
@@ -121,7 +123,9 @@ def main():
     for threads in (1, None):
         t = 0 if threads is None else threads
         measure(f"aligned, threads={threads}", lambda: boxcyl.intersects_aligned(boxes, cyl, threads=threads),
-                lambda: _core._timed_batch_aligned(soa, cyl, t)[1:], lambda: layout_and_batch(t), args.repeat)
+                [("c++", lambda: _core._timed_batch_aligned(soa, cyl, t)[1:]),
+                 ("c++ rows", lambda: _core._timed_batch_aligned_rows(boxes, cyl, t)[1:]),
+                 ("c++ + layout", lambda: layout_and_batch(t))], args.repeat)
 
     (center, axes, extents), cyl = oriented_case(rng, n)
     rows = np.concatenate([center, axes.reshape(n, 9), extents], axis=1)
@@ -132,7 +136,7 @@ def main():
         t = 0 if threads is None else threads
         measure(f"oriented, threads={threads}",
                 lambda: boxcyl.intersects_oriented((center, axes, extents), cyl, threads=threads),
-                lambda: _core._timed_batch_oriented(rows, cyl, t)[1:], None, args.repeat)
+                [("c++", lambda: _core._timed_batch_oriented(rows, cyl, t)[1:])], args.repeat)
 
     lat = interrupt_latency(5)
     print(f"Ctrl-C: KeyboardInterrupt {statistics.median(lat) * 1e3:.1f} ms after SIGINT (median of 5, "

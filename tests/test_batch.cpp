@@ -15,6 +15,8 @@
 #include <cstddef>  // std::size_t, std::ptrdiff_t
 #include <cstdint>  // std::uint64_t
 #include <cstdio>   // std::printf
+#include <iterator>  // std::size
+#include <limits>   // NaN and infinity for the checked boxes
 #include <memory>   // std::unique_ptr<bool[]>
 #include <ostream>  // PrintTo
 #include <stdexcept>  // unavailable kernels
@@ -122,6 +124,8 @@ void check_set(const Cylinder<double>& cyl, const std::vector<AlignedBox<double>
     const std::vector<bool> wa = scalar_answers(cyl, aligned), wo = scalar_answers(cyl, oriented);
     const Soa<double> sa(aligned);
     compare(cyl, sa.view(), aligned, wa, aligned.size(), threads, where + " aligned", ca);
+    compare(cyl, std::span<const AlignedBox<double>>(aligned), aligned, wa, aligned.size(), threads,
+            where + " aligned rows", ca);
     const std::vector<OrientedBox<double>>& od = oriented;
     compare(cyl, std::span<const OrientedBox<double>>(od), oriented, wo, oriented.size(), threads, where + " oriented", co);
 }
@@ -158,6 +162,10 @@ void check_float(const BatchSet& s, const std::string& where, Count& ca, Count& 
     wa = scalar_answers(cd, av);
     wo = scalar_answers(cd, ov);
     compare(cf, keep_a.view(), av, wa, av.size(), 1, where + " float aligned", ca);
+    std::vector<AlignedBox<float>> rows;
+    for (std::size_t i = 0; i < av.size(); ++i)
+        rows.push_back({{keep_a.v[0][i], keep_a.v[1][i], keep_a.v[2][i]}, {keep_a.v[3][i], keep_a.v[4][i], keep_a.v[5][i]}});
+    compare(cf, std::span<const AlignedBox<float>>(rows), av, wa, av.size(), 1, where + " float aligned rows", ca);
     compare(cf, std::span<const OrientedBox<float>>(keep_o), ov, wo, ov.size(), 1, where + " float oriented", co);
 }
 
@@ -523,6 +531,8 @@ TEST_P(BatchKernels, ThreadsGiveTheSameAnswers) {
     Count ca, co;
     for (unsigned t : {1u, 2u, 4u, 0u}) {
         compare(s.cylinder, sa.view(), s.aligned, wa, s.aligned.size(), t, "large N", ca);
+        compare(s.cylinder, std::span<const AlignedBox<double>>(s.aligned), s.aligned, wa, s.aligned.size(), t,
+                "large N rows", ca);
         compare(s.cylinder, std::span<const OrientedBox<double>>(s.oriented), s.oriented, wo, s.oriented.size(), t,
                 "large N", co);
     }
@@ -543,10 +553,122 @@ TEST_P(BatchKernels, RoundingModes) {
         const Soa<double> sa(s.aligned);
         RoundingMode guard(mode);
         compare(s.cylinder, sa.view(), s.aligned, wa, s.aligned.size(), 1, std::string("mode ") + mode_name(mode), ca);
+        compare(s.cylinder, std::span<const AlignedBox<double>>(s.aligned), s.aligned, wa, s.aligned.size(), 1,
+                std::string("mode ") + mode_name(mode) + " rows", ca);
         compare(s.cylinder, std::span<const OrientedBox<double>>(s.oriented), s.oriented, wo, s.oriented.size(), 1,
                 std::string("mode ") + mode_name(mode), co);
     }
     print("rounding modes", ca, co);
+}
+
+// Options::check_boxes: valid sets give the same answers as without it (the rows and the six arrays,
+// including valid boxes whose extent overflows a double, which the cheap check cannot clear); an
+// invalid box — NaN, ±∞, min > max in one coordinate — throws InvalidBox naming it, wherever it lies
+// in its vector and block, and the first of two invalid boxes is the one named. The same for oriented
+// boxes and parallelepipeds.
+TEST_P(BatchKernels, CheckedBoxes) {
+    const BatchSet s = random_batch(0xBA7CA000, 300);
+    std::vector<AlignedBox<double>> boxes = s.aligned;
+    boxes.push_back({{-1e308, -1e308, -1e308}, {1e308, 1e308, 1e308}});  // valid; hi − lo overflows
+    boxes.push_back({{0, 0, 0}, {0, 0, 0}});                               // a point
+    const std::vector<bool> want = scalar_answers(s.cylinder, boxes);
+    const batch::Options checked{1, g_kernel, true};
+    std::vector<std::uint64_t> mask(batch::mask_words(boxes.size()));
+    std::unique_ptr<bool[]> bools(new bool[boxes.size()]);
+    const Soa<double> soa(boxes);
+    batch::intersects(s.cylinder, std::span<const AlignedBox<double>>(boxes), std::span<std::uint64_t>(mask), checked);
+    batch::intersects(s.cylinder, soa.view(), std::span<bool>(bools.get(), boxes.size()), checked);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        EXPECT_EQ(((mask[i / 64] >> (i % 64)) & 1u) != 0, want[i]) << "rows, box " << i;
+        EXPECT_EQ(bools[i], want[i]) << "arrays, box " << i;
+    }
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    struct Bad {
+        int coordinate;  // 0..5: min x, y, z, max x, y, z
+        double value;
+    };
+    for (const Bad bad : {Bad{0, nan}, Bad{4, nan}, Bad{2, inf}, Bad{3, -inf}, Bad{5, -1e9}, Bad{1, 1e9}}) {
+        for (std::size_t at : {std::size_t{0}, std::size_t{3}, std::size_t{7}, std::size_t{64}, std::size_t{130},
+                               boxes.size() - 1}) {
+            std::vector<AlignedBox<double>> b = boxes;
+            (bad.coordinate < 3 ? b[at].min : b[at].max)[static_cast<std::size_t>(bad.coordinate % 3)] = bad.value;
+            if (at + 2 < b.size()) b[at + 2].min[0] = nan;  // a later invalid box is not the one named
+            const Soa<double> bs(b);
+            for (unsigned threads : {1u, 2u}) {
+                std::size_t rows_index = 0, arrays_index = 0;
+                try {
+                    batch::intersects(s.cylinder, std::span<const AlignedBox<double>>(b), std::span<std::uint64_t>(mask),
+                                      {threads, g_kernel, true});
+                    ADD_FAILURE() << "rows: no InvalidBox for box " << at;
+                } catch (const batch::InvalidBox& e) {
+                    rows_index = e.index;
+                }
+                try {
+                    batch::intersects(s.cylinder, bs.view(), std::span<bool>(bools.get(), b.size()), {threads, g_kernel, true});
+                    ADD_FAILURE() << "arrays: no InvalidBox for box " << at;
+                } catch (const batch::InvalidBox& e) {
+                    arrays_index = e.index;
+                }
+                EXPECT_EQ(rows_index, at) << "coordinate " << bad.coordinate << " threads " << threads;
+                EXPECT_EQ(arrays_index, at) << "coordinate " << bad.coordinate << " threads " << threads;
+            }
+        }
+    }
+    // Oriented boxes: valid ones (an axis 1e-5 off unit length included) answer as without the check;
+    // a non-finite number, a negative extent, an axis off unit length or two axes not orthogonal
+    // beyond validate()'s tolerance throw, the first of two named.
+    std::vector<OrientedBox<double>> o = s.oriented;
+    o[5].axes[0] = {1 + 1e-5, 0, 0};
+    if (!is_valid(o[5])) o[5] = s.oriented[5];
+    const std::vector<bool> wo = scalar_answers(s.cylinder, o);
+    batch::intersects(s.cylinder, std::span<const OrientedBox<double>>(o), std::span<bool>(bools.get(), o.size()), checked);
+    for (std::size_t i = 0; i < o.size(); ++i) EXPECT_EQ(bools[i], wo[i]) << "oriented, box " << i;
+    using Spoil = void (*)(OrientedBox<double>&);
+    const Spoil spoils[] = {
+        [](OrientedBox<double>& b) { b.center[1] = std::numeric_limits<double>::quiet_NaN(); },
+        [](OrientedBox<double>& b) { b.extents[2] = -0.5; },
+        [](OrientedBox<double>& b) { b.extents[0] = std::numeric_limits<double>::infinity(); },
+        [](OrientedBox<double>& b) { b.axes[1] = {b.axes[1][0] * 2, b.axes[1][1] * 2, b.axes[1][2] * 2}; },
+        [](OrientedBox<double>& b) { b.axes[2] = b.axes[0]; },
+    };
+    for (std::size_t k = 0; k < std::size(spoils); ++k)
+        for (std::size_t at : {std::size_t{0}, std::size_t{6}, std::size_t{70}, o.size() - 1}) {
+            std::vector<OrientedBox<double>> b = o;
+            spoils[k](b[at]);
+            if (at + 3 < b.size()) spoils[0](b[at + 3]);
+            std::size_t index = b.size();
+            try {
+                batch::intersects(s.cylinder, std::span<const OrientedBox<double>>(b), std::span<std::uint64_t>(mask), checked);
+            } catch (const batch::InvalidBox& e) {
+                index = e.index;
+            }
+            EXPECT_EQ(index, at) << "oriented, spoil " << k;
+        }
+    // Parallelepipeds: is_valid per box.
+    std::vector<Parallelepiped<double>> p;
+    for (const OrientedBox<double>& b : s.oriented) p.push_back({b.center, b.axes, b.extents});
+    p[90].extents[1] = -1;
+    try {
+        batch::intersects(s.cylinder, std::span<const Parallelepiped<double>>(p), std::span<std::uint64_t>(mask), checked);
+        ADD_FAILURE() << "parallelepipeds: no InvalidBox";
+    } catch (const batch::InvalidBox& e) {
+        EXPECT_EQ(e.index, 90u);
+    }
+}
+
+// The rows form reads AlignedBox<T> in place, from any start: offsets 0..8 into a set, so that every
+// vector's rows start at every alignment and the in-register transpose sees every position.
+TEST_P(BatchKernels, RowsAtEveryOffset) {
+    Count ca, co;
+    const BatchSet s = random_batch(0xBA7CB000, 200);
+    const std::vector<bool> wa = scalar_answers(s.cylinder, s.aligned);
+    for (std::size_t offset = 0; offset <= 8; ++offset) {
+        const std::span<const AlignedBox<double>> rows = std::span<const AlignedBox<double>>(s.aligned).subspan(offset);
+        const std::vector<AlignedBox<double>> boxes(rows.begin(), rows.end());
+        const std::vector<bool> want(wa.begin() + static_cast<std::ptrdiff_t>(offset), wa.end());
+        compare(s.cylinder, rows, boxes, want, rows.size(), 1, "offset " + std::to_string(offset), ca);
+    }
+    print("rows at offsets 0..8", ca, co);
 }
 
 TEST(Batch, MismatchedLengthsAndShortOutputsThrow) {

@@ -10,6 +10,10 @@
 // Boxes:
 //   AlignedBoxes<T>   structure of arrays: box i is [min_x[i], max_x[i]] × [min_y[i], max_y[i]] ×
 //                     [min_z[i], max_z[i]]; six spans of the same length, T = float or double.
+//   AlignedBox<T>     array of structures (std::span<const AlignedBox<T>>), T = float or double: box i
+//                     is the six numbers min, max — the layout of an (N, 2, 3) array of [min, max] rows,
+//                     read in place (each vector of lanes is transposed in registers; the answers and
+//                     the speed are those of the six arrays).
 //   OrientedBox<T>    array of structures (std::span<const OrientedBox<T>>), T = float or double: the
 //                     library's own struct, so existing arrays need no copy; the filter gathers each
 //                     vector of lanes from it.
@@ -34,7 +38,8 @@
 // blocks (batch/split.hpp); Options::threads = 0 uses std::thread::hardware_concurrency(), and a
 // batch smaller than 32768 boxes per thread uses fewer threads (one below 65536 boxes).
 //
-// Preconditions: validate() holds for the cylinder and every box (asserted in debug builds); the
+// Preconditions: validate() holds for the cylinder and every box (asserted in debug builds; with
+// Options::check_boxes the boxes are checked instead, and an invalid one throws InvalidBox); the
 // floating-point environment is the default one (round to nearest, no flush-to-zero: see
 // boxcyl::fp_environment_ok()). Needs the exact backend (link boxcyl::exact), like the default query.
 #pragma once
@@ -136,6 +141,29 @@ Stats intersects(const Cylinder<double>& cyl, const AlignedBoxes<T>& boxes, std:
     detail::check_lengths(boxes);
     const KernelTable& t = detail::select(opt.kernel);
     return detail::stamped(t.template entries<T>().aligned_bools(cyl, boxes, out, opt), t);
+}
+
+// ---- Aligned boxes (array of AlignedBox<T>), T = float or double. ----
+// (Overloads rather than a template, so that a std::vector of boxes converts to the span.)
+inline Stats intersects(const Cylinder<double>& cyl, std::span<const AlignedBox<double>> boxes,
+                        std::span<std::uint64_t> mask, const Options& opt = {}) {
+    const KernelTable& t = detail::select(opt.kernel);
+    return detail::stamped(t.d.rows_mask(cyl, boxes, mask, opt), t);
+}
+inline Stats intersects(const Cylinder<double>& cyl, std::span<const AlignedBox<double>> boxes, std::span<bool> out,
+                        const Options& opt = {}) {
+    const KernelTable& t = detail::select(opt.kernel);
+    return detail::stamped(t.d.rows_bools(cyl, boxes, out, opt), t);
+}
+inline Stats intersects(const Cylinder<double>& cyl, std::span<const AlignedBox<float>> boxes,
+                        std::span<std::uint64_t> mask, const Options& opt = {}) {
+    const KernelTable& t = detail::select(opt.kernel);
+    return detail::stamped(t.f.rows_mask(cyl, boxes, mask, opt), t);
+}
+inline Stats intersects(const Cylinder<double>& cyl, std::span<const AlignedBox<float>> boxes, std::span<bool> out,
+                        const Options& opt = {}) {
+    const KernelTable& t = detail::select(opt.kernel);
+    return detail::stamped(t.f.rows_bools(cyl, boxes, out, opt), t);
 }
 
 // ---- Oriented boxes (array of OrientedBox<T>), T = float or double. ----

@@ -80,6 +80,14 @@ Stats intersects(const Cylinder<double>& cyl, const AlignedBoxes<float>& boxes, 
                  const Options& opt = {});
 Stats intersects(const Cylinder<double>& cyl, const AlignedBoxes<float>& boxes, std::span<bool> out,
                  const Options& opt = {});
+Stats intersects(const Cylinder<double>& cyl, std::span<const AlignedBox<double>> boxes,
+                 std::span<std::uint64_t> mask, const Options& opt = {});
+Stats intersects(const Cylinder<double>& cyl, std::span<const AlignedBox<double>> boxes, std::span<bool> out,
+                 const Options& opt = {});
+Stats intersects(const Cylinder<double>& cyl, std::span<const AlignedBox<float>> boxes,
+                 std::span<std::uint64_t> mask, const Options& opt = {});
+Stats intersects(const Cylinder<double>& cyl, std::span<const AlignedBox<float>> boxes, std::span<bool> out,
+                 const Options& opt = {});
 Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<double>> boxes,
                  std::span<std::uint64_t> mask, const Options& opt = {});
 Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<double>> boxes, std::span<bool> out,

@@ -10,11 +10,14 @@
 //
 // A batch runs in chunks on worker threads with the GIL released, while the calling thread checks for
 // signals every few milliseconds (Ctrl-C raises KeyboardInterrupt promptly; the workers stop after
-// their current chunk). Each chunk gathers its elements from the arrays and checks them with a few
-// comparisons per element; an element that fails is then named by boxcyl::validate ("boxes[17].max[0]:
-// is less than boxes[17].min[0]"), and the batch reports the first invalid element by index. One
-// cylinder against many boxes with the default query goes through the batch API per chunk
-// (boxcyl/batch.hpp: SIMD filter + exact fallback); anything else through the scalar query.
+// their current chunk). Every element is checked with a few comparisons (an element that fails is then
+// named by boxcyl::validate: "boxes[17].max[0]: is less than boxes[17].min[0]"), and the batch reports
+// the first invalid element by index. One cylinder against many boxes with the default query goes
+// through the batch API per chunk (boxcyl/batch.hpp: SIMD filter + exact fallback), which checks the
+// boxes as its filter loads them (Options::check_boxes): aligned boxes in a C-contiguous (N, 2, 3)
+// array are read in place (its AlignedBox rows form), oriented boxes copied into OrientedBox structs,
+// other aligned layouts gathered into its six arrays and checked on the way. Anything else goes
+// through the scalar query, checked element by element.
 #include <pybind11/numpy.h>     // input arrays, bool output arrays
 #include <pybind11/pybind11.h>  // the bindings
 #include <pybind11/stl.h>       // std::array <-> Python sequences
@@ -30,6 +33,7 @@
 #include <chrono>              // the signal-check period; the timed raw batch
 #include <cmath>               // std::fabs
 #include <condition_variable>  // the caller waits for the workers with a timeout
+#include <cstdint>             // std::uintptr_t: the rows' alignment
 #include <cstring>             // std::memcpy: array elements need not be aligned
 #include <ctime>               // clock_gettime: the timed raw batch's CPU time
 #include <exception>           // a worker's unexpected exception, rethrown by the caller
@@ -434,8 +438,7 @@ struct Buffer {
 // false for NaN, ±Inf and min > max (and for bounds so far apart that the difference overflows, which
 // the caller then judges exactly). With SSE2, two boxes at a time when each row's three numbers are
 // adjacent (the usual layouts: (N, 2, 3) and (N, 3) arrays, also strided views of them). It reads the
-// caller's arrays once: on a machine whose memory is slow next to the filter, that pass is most of
-// what the batch forms cost beyond the batch API itself.
+// caller's arrays once; a C-contiguous (N, 2, 3) array skips this copy (AlignedRowsChunk).
 bool gather_aligned(const AlignedFields& b, Index begin, Index m, double* v) {
     constexpr double big = std::numeric_limits<double>::max();
     auto adjacent = [](const Field& f) { return f.offset[0] == 0 && f.offset[1] == 8 && f.offset[2] == 16; };
@@ -513,7 +516,42 @@ struct AlignedBatchChunk {
     }
 };
 
-// Oriented boxes with one cylinder: a chunk is gathered into OrientedBox structs, checked, answered.
+// Copies oriented boxes [begin, begin + m) into OrientedBox structs. When each field's numbers are
+// adjacent in a row (C-contiguous (N, 3) and (N, 3, 3) arrays, also row views of bigger ones), three
+// copies of 24, 72 and 24 bytes a box, with the rows a little ahead prefetched (the gather runs
+// between the batch's chunks, so nothing else hides the memory's latency).
+void gather_oriented(const OrientedFields& b, Index begin, Index m, OrientedBox* v) {
+    auto dense = [](const Field& f, std::size_t k) {
+        for (std::size_t j = 0; j < k; ++j)
+            if (f.offset[j] != static_cast<Index>(8 * j)) return false;
+        return f.step != 0;
+    };
+    if (!(dense(b.center, 3) && dense(b.axes, 9) && dense(b.extents, 3))) {
+        for (Index i = 0; i < m; ++i) v[i] = b(begin + i);
+        return;
+    }
+    const char* c = b.center.base + begin * b.center.step;
+    const char* a = b.axes.base + begin * b.axes.step;
+    const char* e = b.extents.base + begin * b.extents.step;
+    constexpr Index ahead = 8;
+    for (Index i = 0; i < m; ++i) {
+#if defined(__GNUC__)
+        if (i + ahead < m) {
+            __builtin_prefetch(c + (i + ahead) * b.center.step);
+            __builtin_prefetch(a + (i + ahead) * b.axes.step);
+            __builtin_prefetch(a + (i + ahead) * b.axes.step + 64);
+            __builtin_prefetch(e + (i + ahead) * b.extents.step);
+        }
+#endif
+        std::memcpy(&v[i].center, c + i * b.center.step, sizeof(Vec));
+        std::memcpy(&v[i].axes, a + i * b.axes.step, 3 * sizeof(Vec));
+        std::memcpy(&v[i].extents, e + i * b.extents.step, sizeof(Vec));
+    }
+}
+
+// Oriented boxes with one cylinder: a chunk is gathered into OrientedBox structs and answered by the
+// batch API, which checks each box on the numbers it loads (Options::check_boxes); an invalid box is
+// then named by validate().
 struct OrientedBatchChunk {
     const OrientedFields& boxes;
     using Scratch = Buffer<OrientedBox>;
@@ -522,23 +560,48 @@ struct OrientedBatchChunk {
                     Index end) const {
         const Index m = end - begin;
         OrientedBox* v = s.get(m);
-        bool ok = true;
-        for (Index i = 0; i < m; ++i) {
-            v[i] = boxes(begin + i);
-            ok &= plausible(v[i]);
+        gather_oriented(boxes, begin, m, v);
+        try {
+            boxcyl::batch::intersects(cyl, std::span<const OrientedBox>(v, static_cast<std::size_t>(m)),
+                                      std::span<bool>(result + begin, static_cast<std::size_t>(m)),
+                                      {1, boxcyl::batch::Kernel::automatic, true});
+        } catch (const boxcyl::batch::InvalidBox& e) {
+            const Index i = begin + static_cast<Index>(e.index);
+            failure.record(2 * i, boxcyl::validate(v[e.index], element_name("box", "boxes", false, i)).message());
         }
-        if (!ok) {
-            for (Index i = 0; i < m; ++i)
-                if (!plausible(v[i]))
-                    if (auto val = boxcyl::validate(v[i], element_name("box", "boxes", false, begin + i)); !val) {
-                        failure.record(2 * (begin + i), val.message());
-                        return;
-                    }
-        }
-        boxcyl::batch::intersects(cyl, std::span<const OrientedBox>(v, static_cast<std::size_t>(m)),
-                                  std::span<bool>(result + begin, static_cast<std::size_t>(m)), {1});
     }
 };
+
+// Aligned boxes with one cylinder, as the rows of a C-contiguous (N, 2, 3) array (min and max of box i
+// are the six numbers at 48i bytes): no copy; the batch API reads the rows in place, and checks each
+// box on the numbers it loads (Options::check_boxes) — a chunk that holds an invalid box is answered
+// no further, and the box is named by validate().
+struct AlignedRowsChunk {
+    const AlignedFields& boxes;
+    const AlignedBox* rows;
+    struct Scratch {};
+
+    void operator()(Scratch&, const Cylinder& cyl, bool* result, FirstFailure& failure, Index begin, Index end) const {
+        const auto m = static_cast<std::size_t>(end - begin);
+        try {
+            boxcyl::batch::intersects(cyl, std::span<const AlignedBox>(rows + begin, m),
+                                      std::span<bool>(result + begin, m), {1, boxcyl::batch::Kernel::automatic, true});
+        } catch (const boxcyl::batch::InvalidBox& e) {
+            const Index i = begin + static_cast<Index>(e.index);
+            failure.record(2 * i, boxcyl::validate(boxes(i), element_name("box", "boxes", false, i)).message());
+        }
+    }
+};
+
+// The rows of a C-contiguous (N, 2, 3) float64 array, when min and max are its two halves (the
+// package passes boxes[:, 0] and boxes[:, 1]); else nullptr.
+const AlignedBox* aligned_rows(const AlignedFields& b) {
+    auto adjacent = [](const Field& f) { return f.offset[0] == 0 && f.offset[1] == 8 && f.offset[2] == 16; };
+    const bool rows = adjacent(b.min) && adjacent(b.max) && b.min.step == 48 && b.max.step == 48 &&
+                      b.max.base == b.min.base + 24 &&
+                      reinterpret_cast<std::uintptr_t>(b.min.base) % alignof(AlignedBox) == 0;
+    return rows ? reinterpret_cast<const AlignedBox*>(b.min.base) : nullptr;
+}
 
 py::array_t<bool> intersects_aligned(const py::array& min, const py::array& max, bool box_single,
                                      const py::array& center, const py::array& axis, const py::array& radius,
@@ -547,6 +610,9 @@ py::array_t<bool> intersects_aligned(const py::array& min, const py::array& max,
     const AlignedFields boxes{field(min, "min", {3}), field(max, "max", {3})};
     const CylinderFields cyls = cylinder_fields(center, axis, radius, height);
     const Index n = batch_length({&boxes.min, &boxes.max, &cyls.center, &cyls.axis, &cyls.radius, &cyls.height});
+    if (const AlignedBox* rows = box_single ? nullptr : aligned_rows(boxes))
+        return run_batch(n, boxes, box_single, cyls, cylinder_single, algorithm, arithmetic, threads, kAlignedChunks,
+                         AlignedRowsChunk{boxes, rows});
     return run_batch(n, boxes, box_single, cyls, cylinder_single, algorithm, arithmetic, threads, kAlignedChunks,
                      AlignedBatchChunk{boxes});
 }
@@ -661,6 +727,22 @@ py::tuple timed_batch_aligned(const F64Array& soa, const Cylinder& cyl, unsigned
         py::gil_scoped_release release;
         boxcyl::batch::intersects(cyl, boxcyl::batch::AlignedBoxes<double>{row(0), row(1), row(2), row(3), row(4), row(5)},
                                   result, {threads});
+        timer.stop();
+    }
+    return py::make_tuple(out, timer.wall, timer.cpu);
+}
+
+// boxes: (N, 2, 3) rows [min, max], read in place as AlignedBox<double>.
+py::tuple timed_batch_aligned_rows(const F64Array& boxes, const Cylinder& cyl, unsigned threads) {
+    if (boxes.ndim() != 3 || boxes.shape(1) != 2 || boxes.shape(2) != 3) throw py::value_error("boxes: expected shape (N, 2, 3)");
+    const auto n = static_cast<std::size_t>(boxes.shape(0));
+    const auto* rows = reinterpret_cast<const AlignedBox*>(boxes.data());
+    py::array_t<bool> out(static_cast<Index>(n));
+    std::span<bool> result(out.mutable_data(), n);
+    Timer timer;
+    {
+        py::gil_scoped_release release;
+        boxcyl::batch::intersects(cyl, std::span<const AlignedBox>(rows, n), result, {threads});
         timer.stop();
     }
     return py::make_tuple(out, timer.wall, timer.cpu);
@@ -806,6 +888,8 @@ PYBIND11_MODULE(_core, m) {
           "arithmetic"_a, "threads"_a);
     m.def("_timed_batch_aligned", &timed_batch_aligned, "soa"_a, "cylinder"_a, "threads"_a,
           "boxcyl::batch::intersects alone on (6, N) arrays: (answers, wall seconds, CPU seconds). For benchmarks.");
+    m.def("_timed_batch_aligned_rows", &timed_batch_aligned_rows, "boxes"_a, "cylinder"_a, "threads"_a,
+          "boxcyl::batch::intersects alone on (N, 2, 3) [min, max] rows: (answers, wall seconds, CPU seconds). For benchmarks.");
     m.def("_timed_batch_oriented", &timed_batch_oriented, "boxes"_a, "cylinder"_a, "threads"_a,
           "boxcyl::batch::intersects alone on (N, 15) oriented boxes: (answers, wall seconds, CPU seconds). For benchmarks.");
     m.def("_hardware_threads", [] { return std::max(1u, std::thread::hardware_concurrency()); },

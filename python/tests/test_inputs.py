@@ -217,6 +217,31 @@ def test_invalid_element_found_in_any_chunk_and_thread():
     assert got[190_000] and got.shape == (n,)
 
 
+def test_invalid_oriented_element_found_in_any_chunk_and_thread():
+    """Oriented boxes are checked by the batch API as it reads them; the error names the first invalid one."""
+    rng = np.random.default_rng(13)
+    n = 120_000
+    center = rng.uniform(-3, 3, (n, 3))
+    axes = np.tile(np.eye(3), (n, 1, 1))
+    extents = rng.uniform(0, 1, (n, 3))
+    expected = boxcyl.intersects_oriented((center, axes, extents), TOUCHING)
+    # A strided view of the same boxes (not adjacent in memory) gives the same answers.
+    wide = np.repeat(center, 2, axis=0)[::2]
+    assert np.array_equal(boxcyl.intersects_oriented((wide, axes, extents), TOUCHING), expected)
+    axes[100_003, 2] = (0, 0, 1.001)  # |axes[2]|² = 1.002: not unit length
+    extents[110_000, 0] = np.nan
+    for threads in (1, 2, 3):
+        with raises("boxes[100003].axes[2]: is not unit length"):
+            boxcyl.intersects_oriented((center, axes, extents), TOUCHING, threads=threads)
+    axes[100_003, 2] = (0, 0, 1 + 1e-5)  # within the tolerance: valid
+    with raises("boxes[110000].extents[0]: is NaN"):
+        boxcyl.intersects_oriented((center, axes, extents), TOUCHING)
+    extents[110_000, 0] = 0.5
+    center[0, 1] = -np.inf
+    with raises("boxes[0].center[1]: is -Inf"):
+        boxcyl.intersects_oriented((center, axes, extents), TOUCHING)
+
+
 def test_threads_keyword_gives_the_same_answers():
     rng = np.random.default_rng(12)
     n = 150_000

@@ -29,6 +29,14 @@ Stats header_aligned(const Cylinder<double>& c, const AlignedBoxes<float>& b, Ma
 Stats header_aligned(const Cylinder<double>& c, const AlignedBoxes<float>& b, Bools out, const Options& o) {
     return boxcyl::batch::intersects(c, b, out, o);
 }
+template <class T>
+Stats header_rows(const Cylinder<double>& c, std::span<const boxcyl::AlignedBox<T>> b, Mask out, const Options& o) {
+    return boxcyl::batch::intersects(c, b, out, o);
+}
+template <class T>
+Stats header_rows(const Cylinder<double>& c, std::span<const boxcyl::AlignedBox<T>> b, Bools out, const Options& o) {
+    return boxcyl::batch::intersects(c, b, out, o);
+}
 Stats header_oriented(const Cylinder<double>& c, std::span<const OrientedBox<double>> b, Mask out, const Options& o) {
     return boxcyl::batch::intersects(c, b, out, o);
 }
@@ -70,6 +78,18 @@ Stats intersects(const Cylinder<double>& c, const AlignedBoxes<float>& b, Mask o
 }
 Stats intersects(const Cylinder<double>& c, const AlignedBoxes<float>& b, Bools out, const Options& o) {
     return header_aligned(c, b, out, o);
+}
+Stats intersects(const Cylinder<double>& c, std::span<const AlignedBox<double>> b, Mask out, const Options& o) {
+    return header_rows(c, b, out, o);
+}
+Stats intersects(const Cylinder<double>& c, std::span<const AlignedBox<double>> b, Bools out, const Options& o) {
+    return header_rows(c, b, out, o);
+}
+Stats intersects(const Cylinder<double>& c, std::span<const AlignedBox<float>> b, Mask out, const Options& o) {
+    return header_rows(c, b, out, o);
+}
+Stats intersects(const Cylinder<double>& c, std::span<const AlignedBox<float>> b, Bools out, const Options& o) {
+    return header_rows(c, b, out, o);
 }
 Stats intersects(const Cylinder<double>& c, std::span<const OrientedBox<double>> b, Mask out, const Options& o) {
     return header_oriented(c, b, out, o);

@@ -49,7 +49,7 @@ void scalar(const char* type) {
     check(!boxcyl::intersects(aligned, far, plain), "plain double query");
 }
 
-// Three aligned boxes: touching, apart by one ulp, overlapping; as arrays and as oriented boxes.
+// Three aligned boxes: touching, apart by one ulp, overlapping; as arrays, as rows and as oriented boxes.
 template <class T>
 void batch() {
     const T one_ulp = std::nextafter(T(1), T(0));
@@ -63,6 +63,20 @@ void batch() {
     bool out[3] = {};
     boxcyl::batch::intersects(cyl, boxes, std::span<bool>(out), {/*threads*/ 2});
     check(out[0] && !out[1] && out[2], "batch of aligned boxes (bools, 2 threads)");
+    std::vector<boxcyl::AlignedBox<T>> rows;
+    for (std::size_t i = 0; i < 3; ++i) rows.push_back({{min_x[i], min_y[i], min_z[i]}, {max_x[i], max_y[i], max_z[i]}});
+    mask.assign(mask.size(), 0);
+    boxcyl::batch::intersects(cyl, std::span<const boxcyl::AlignedBox<T>>(rows), std::span<std::uint64_t>(mask));
+    check(mask[0] == 0b101, "batch of aligned boxes (rows)");
+    rows[1].max[0] = rows[1].min[0] - 1;  // min > max: invalid
+    bool threw = false;
+    try {
+        boxcyl::batch::intersects(cyl, std::span<const boxcyl::AlignedBox<T>>(rows), std::span<bool>(out),
+                                  {1, boxcyl::batch::Kernel::automatic, /*check_boxes*/ true});
+    } catch (const boxcyl::batch::InvalidBox& e) {
+        threw = e.index == 1;
+    }
+    check(threw, "batch of aligned boxes (rows, checked: boxes[1] is invalid)");
     std::vector<boxcyl::OrientedBox<T>> oriented;
     for (std::size_t i = 0; i < 3; ++i)
         oriented.push_back({{(min_x[i] + max_x[i]) / 2, 0, 0},

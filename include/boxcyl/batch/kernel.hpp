@@ -12,12 +12,14 @@
 #include <cassert>    // debug-build precondition checks
 #include <cstddef>    // std::size_t
 #include <cstdint>    // std::uint64_t
-#include <span>       // inputs and outputs
-#include <stdexcept>  // std::invalid_argument for short outputs
-#include <vector>     // per-thread counters
+#include <limits>       // DBL_MAX: the boxes' cheap check
+#include <span>         // inputs and outputs
+#include <stdexcept>    // std::invalid_argument for short outputs
+#include <type_traits>  // std::is_same_v: the rows' in-register transpose is for doubles
+#include <vector>       // per-thread counters
 
-#if defined(__AVX512F__)
-#include <immintrin.h>  // gather(): _mm512_set_pd
+#if defined(__AVX2__)
+#include <immintrin.h>  // gather(): _mm512_set_pd; AlignedRowsSource's column gathers
 #endif
 
 #include "boxcyl/batch/filter.hpp"
@@ -45,15 +47,15 @@ BOXCYL_BATCH_INLINE void load(const T* p, std::size_t i, std::size_t valid, Lane
     out.copy_from(buf, stdx::element_aligned);
 }
 
-// Lanes p[idx[0]], …, p[idx[count − 1]], the last repeated to fill the vector. Built from the scalars:
-// written to a buffer lane by lane and loaded as one vector, they stalled store forwarding (a tenth of
-// the 10M random-box run). With AVX-512 by _mm512_set_pd: GCC kept the simd generator constructor, the
-// portable form, out of line in that kernel only (a call per gathered vector; 10M random boxes 10.3 →
-// 9.2 ns per box, near-surface aligned sets 7% faster). It inlines it for SSE2 and AVX2, where the set
-// intrinsics were no faster.
-template <class T>
-BOXCYL_BATCH_INLINE Lanes gather(const T* p, const std::size_t* idx, std::size_t count) {
-    auto at = [&](std::size_t l) { return static_cast<double>(p[idx[std::min(l, count - 1)]]); };
+// Lanes value(idx[0]), …, value(idx[count − 1]), the last repeated to fill the vector. Built from the
+// scalars: written to a buffer lane by lane and loaded as one vector, they stalled store forwarding
+// (a tenth of the 10M random-box run). With AVX-512 by _mm512_set_pd: GCC kept the simd generator
+// constructor, the portable form, out of line in that kernel only (a call per gathered vector; 10M
+// random boxes 10.3 → 9.2 ns per box, near-surface aligned sets 7% faster). It inlines it for SSE2
+// and AVX2, where the set intrinsics were no faster.
+template <class Value>
+BOXCYL_BATCH_INLINE Lanes gather(const Value& value, const std::size_t* idx, std::size_t count) {
+    auto at = [&](std::size_t l) { return static_cast<double>(value(idx[std::min(l, count - 1)])); };
 #if defined(__AVX512F__)
     if constexpr (lane_count == 8)
         return Lanes(_mm512_set_pd(at(7), at(6), at(5), at(4), at(3), at(2), at(1), at(0)));
@@ -61,20 +63,42 @@ BOXCYL_BATCH_INLINE Lanes gather(const T* p, const std::size_t* idx, std::size_t
     return Lanes([&](auto l) { return at(l); });
 }
 
+// Whether every lane certainly passes is_valid (Options::check_boxes), for oriented boxes: every number
+// finite, extents ≥ 0, and the Gram matrix of the axes in double within 10^-12 inside validate()'s
+// tolerance (for axes of length about 1 its rounding error is below 10^-15, and an axis much longer
+// fails its diagonal entry whatever the rounding; NaN and ∞ fail every comparison).
+BOXCYL_BATCH_INLINE bool plausible(const Lanes k[3], const Lanes A[3][3], const Lanes e[3]) {
+    constexpr double top = std::numeric_limits<double>::max(), tol = orthonormality_tolerance - 1e-12;
+    LaneMask ok = stdx::abs(k[0]) <= top && stdx::abs(k[1]) <= top && stdx::abs(k[2]) <= top && e[0] >= 0 &&
+                  e[0] <= top && e[1] >= 0 && e[1] <= top && e[2] >= 0 && e[2] <= top;
+    for (int a = 0; a < 3; ++a)
+        for (int c = a; c < 3; ++c) {
+            const Lanes g = A[a][0] * A[c][0] + A[a][1] * A[c][1] + A[a][2] * A[c][2];
+            ok = ok && stdx::abs(g - (a == c ? 1.0 : 0.0)) <= tol;  // finite axes follow from these
+        }
+    return stdx::all_of(ok);
+}
+
+// Whether every lane certainly passes is_valid (Options::check_boxes): hi − lo in [0, DBL_MAX] is false
+// for NaN, ±∞ and lo > hi (and for bounds whose difference overflows: is_valid judges those).
+BOXCYL_BATCH_INLINE bool plausible(const Lanes lo[3], const Lanes hi[3]) {
+    constexpr double top = std::numeric_limits<double>::max();
+    const Lanes d0 = hi[0] - lo[0], d1 = hi[1] - lo[1], d2 = hi[2] - lo[2];
+    return stdx::all_of(d0 >= 0 && d0 <= top && d1 >= 0 && d1 <= top && d2 >= 0 && d2 <= top);
+}
+
 template <class T>
 struct AlignedSource {
     const AlignedBoxes<T>& b;
 
-    // First pass: lanes [i, i + valid), the centre-and-ball tests.
-    BOXCYL_BATCH_INLINE LaneResult lanes(const CylinderFilter& f, std::size_t i, std::size_t valid) const {
-        Lanes lo[3], hi[3];
+    // First pass: lanes [i, i + valid) (block_bits runs the centre-and-ball tests on them).
+    BOXCYL_BATCH_INLINE void load_lanes(std::size_t i, std::size_t valid, Lanes lo[3], Lanes hi[3]) const {
         load(b.min_x.data(), i, valid, lo[0]);
         load(b.min_y.data(), i, valid, lo[1]);
         load(b.min_z.data(), i, valid, lo[2]);
         load(b.max_x.data(), i, valid, hi[0]);
         load(b.max_y.data(), i, valid, hi[1]);
         load(b.max_z.data(), i, valid, hi[2]);
-        return aligned_ball_lanes(f, lo, hi);
     }
     // Second pass: the boxes idx[0, count) (count ≤ lane_count) that the first left, gathered, through
     // the whole filter.
@@ -82,8 +106,10 @@ struct AlignedSource {
         const T* arrays[6] = {b.min_x.data(), b.min_y.data(), b.min_z.data(), b.max_x.data(), b.max_y.data(), b.max_z.data()};
         Lanes lo[3], hi[3];
         for (int j = 0; j < 3; ++j) {
-            lo[j] = gather(arrays[j], idx, count);
-            hi[j] = gather(arrays[3 + j], idx, count);
+            const T* lo_j = arrays[j];
+            const T* hi_j = arrays[3 + j];
+            lo[j] = gather([lo_j](std::size_t k) { return lo_j[k]; }, idx, count);
+            hi[j] = gather([hi_j](std::size_t k) { return hi_j[k]; }, idx, count);
         }
         return aligned_lanes(f, lo, hi);
     }
@@ -93,16 +119,83 @@ struct AlignedSource {
     }
 };
 
+// Aligned boxes as an array of AlignedBox<T> (rows of six numbers: min, max), read in place: each
+// vector of lanes is taken from the rows in registers, so the caller's array is read once and no
+// structure-of-arrays copy exists.
+template <class T>
+struct AlignedRowsSource {
+    std::span<const AlignedBox<T>> b;
+    static_assert(sizeof(AlignedBox<T>) == 6 * sizeof(T), "AlignedBox<T> must be six packed numbers");
+    // Rows prefetched this many boxes ahead of the vector being loaded. One stream of rows, with the
+    // filter's work between its loads, got less from the hardware prefetcher than six arrays do: at
+    // 10^6 random boxes (AVX-512) the rows ran ≈15% slower than the six arrays without it, the same
+    // speed with it (64 and 256 boxes alike: bench/python_batch.py, aligned c++ rows against c++).
+    static constexpr std::size_t kAhead = 64;
+
+    BOXCYL_BATCH_INLINE void load_lanes(std::size_t i, std::size_t valid, Lanes lo[3], Lanes hi[3]) const {
+#if defined(__GNUC__)
+        if (i + kAhead + lane_count <= b.size()) {
+            const char* ahead = reinterpret_cast<const char*>(b.data() + i + kAhead);
+            for (std::size_t line = 0; line < lane_count * sizeof(AlignedBox<T>); line += 64) __builtin_prefetch(ahead + line);
+        }
+#endif
+#if defined(__AVX2__)
+        // A full vector of double rows: each column by one gather instruction (element c of row r
+        // is 6r + c doubles from the first row). Beside the six arrays, the filter's first pass
+        // here costs 5–8% more (bench_batch: batched/regular/aligned_rows against aligned, AVX-512);
+        // an in-register transpose of the six loads (vpermt2pd, three a column) was no faster
+        // (bench/python_batch.py's boxes; bench_batch's 10M random boxes) and takes more code.
+        if constexpr (std::is_same_v<T, double> && (lane_count == 8 || lane_count == 4)) {
+            if (valid == lane_count) {
+                const char* p = reinterpret_cast<const char*>(b.data() + i);
+                lo[0] = column(p), lo[1] = column(p + 8), lo[2] = column(p + 16);
+                hi[0] = column(p + 24), hi[1] = column(p + 32), hi[2] = column(p + 40);
+                return;
+            }
+        }
+#endif
+        const AlignedBox<T>* x = b.data() + i;
+        const std::size_t last = valid - 1;
+        for (std::size_t j = 0; j < 3; ++j) {
+            lo[j] = Lanes([&](auto l) { return static_cast<double>(x[std::min<std::size_t>(l, last)].min[j]); });
+            hi[j] = Lanes([&](auto l) { return static_cast<double>(x[std::min<std::size_t>(l, last)].max[j]); });
+        }
+    }
+#if defined(__AVX2__)
+    // Lanes p[0], p[6], p[12], … (doubles): one column of lane_count rows.
+    BOXCYL_BATCH_INLINE static Lanes column(const char* p) {
+#if defined(__AVX512F__)
+        if constexpr (lane_count == 8)
+            return Lanes(_mm512_i64gather_pd(_mm512_set_epi64(42, 36, 30, 24, 18, 12, 6, 0), p, 8));
+#endif
+        if constexpr (lane_count == 4)
+            return Lanes(_mm256_i64gather_pd(reinterpret_cast<const double*>(p), _mm256_set_epi64x(18, 12, 6, 0), 8));
+        return Lanes();
+    }
+#endif
+    LaneResult gathered(const CylinderFilter& f, const std::size_t* idx, std::size_t count) const {
+        const AlignedBox<T>* x = b.data();
+        Lanes lo[3], hi[3];
+        for (std::size_t j = 0; j < 3; ++j) {
+            lo[j] = gather([x, j](std::size_t k) { return x[k].min[j]; }, idx, count);
+            hi[j] = gather([x, j](std::size_t k) { return x[k].max[j]; }, idx, count);
+        }
+        return aligned_lanes(f, lo, hi);
+    }
+    AlignedBox<double> box(std::size_t i) const {
+        const AlignedBox<T>& x = b[i];
+        return {{double(x.min[0]), double(x.min[1]), double(x.min[2])}, {double(x.max[0]), double(x.max[1]), double(x.max[2])}};
+    }
+};
+
 template <class T>
 struct OrientedSource {
     std::span<const OrientedBox<T>> b;
 
-    // First pass: the whole filter but its hit search.
-    LaneResult lanes(const CylinderFilter& f, std::size_t i, std::size_t valid) const {
+    // First pass: lanes [i, i + valid) (block_bits runs the whole filter but its hit search on them).
+    BOXCYL_BATCH_INLINE void load_frames(std::size_t i, std::size_t valid, Lanes k[3], Lanes A[3][3], Lanes e[3]) const {
         const OrientedBox<T>* x = b.data() + i;
-        Lanes k[3], A[3][3], e[3];
         load([x, valid](std::size_t l) -> const OrientedBox<T>& { return x[std::min(l, valid - 1)]; }, k, A, e);
-        return oriented_lanes(f, k, A, e);
     }
     // Last pass: the hit search, on the boxes idx[0, count) that the first left, gathered.
     LaneResult searched(const CylinderFilter& f, const std::size_t* idx, std::size_t count) const {
@@ -146,22 +239,43 @@ BOXCYL_BATCH_INLINE LaneBits to_bits(const LaneResult& r) {
 }
 
 // Answers for boxes [begin, begin + count), count ≤ 64, as bits 0..count−1: the first pass over every
-// vector of boxes without a branch per lane; a source with a second pass (aligned boxes: the whole
-// filter) sends the lanes the first left undecided through it, gathered into full vectors; a source
-// whose first pass stops before the hit search (oriented boxes) sends the lanes it left through that
-// search (filter.hpp's search_hits), gathered; what is still undecided goes to the scalar exact
-// default, one box at a time.
+// vector of boxes without a branch per lane (aligned sources load the lanes, and the centre-and-ball
+// tests run here); a source with a second pass (aligned boxes: the whole filter) sends the lanes the
+// first left undecided through it, gathered into full vectors; a source whose first pass stops before
+// the hit search (oriented boxes) sends the lanes it left through that search (filter.hpp's
+// search_hits), gathered; what is still undecided goes to the scalar exact default, one box at a time.
+// check (Options::check_boxes): every box of the block is known valid before any is answered — for
+// aligned and oriented sources by a few vector operations on the loaded lanes (is_valid over the block
+// only when they cannot clear a vector), else by is_valid per box; the first invalid one throws
+// InvalidBox.
 template <class Source>
 std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, const Source& s, std::size_t begin,
-                         std::size_t count, Stats& st) {
+                         std::size_t count, bool check, Stats& st) {
 #ifndef NDEBUG
-    for (std::size_t i = begin; i < begin + count; ++i)
-        assert(is_valid(s.box(i)) && "boxcyl::batch::intersects: invalid box (see boxcyl::validate)");
+    if (!check)
+        for (std::size_t i = begin; i < begin + count; ++i)
+            assert(is_valid(s.box(i)) && "boxcyl::batch::intersects: invalid box (see boxcyl::validate)");
 #endif
+    constexpr bool loads = requires(Lanes* v) { s.load_lanes(std::size_t{0}, std::size_t{1}, v, v); };
+    constexpr bool frames = requires(Lanes* v, Lanes (*m)[3]) { s.load_frames(std::size_t{0}, std::size_t{1}, v, m, v); };
     std::uint64_t bits = 0, open = 0;
+    bool suspect = check && !loads && !frames;
     for (std::size_t k = 0; k < count; k += lane_count) {
         const std::size_t valid = std::min(lane_count, count - k);
-        const LaneResult r = s.lanes(f, begin + k, valid);
+        LaneResult r;
+        if constexpr (loads) {
+            Lanes lo[3], hi[3];
+            s.load_lanes(begin + k, valid, lo, hi);
+            if (check && !plausible(lo, hi)) suspect = true;
+            r = aligned_ball_lanes(f, lo, hi);  // NaN or ∞ lanes of an invalid box: harmless, never used
+        } else if constexpr (frames) {
+            Lanes c[3], A[3][3], e[3];
+            s.load_frames(begin + k, valid, c, A, e);
+            if (check && !plausible(c, A, e)) suspect = true;
+            r = oriented_lanes(f, c, A, e);
+        } else {
+            r = s.lanes(f, begin + k, valid);
+        }
         if (stdx::all_of(r.decided) && stdx::none_of(r.hit)) continue;  // certain misses: the common case
         static_assert(lane_count < 64);
         const std::uint64_t in_range = (std::uint64_t{1} << valid) - 1;
@@ -169,6 +283,9 @@ std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, c
         bits |= (b.hit & in_range) << k;
         open |= (b.open & in_range) << k;
     }
+    if (suspect)
+        for (std::size_t i = begin; i < begin + count; ++i)
+            if (!is_valid(s.box(i))) throw InvalidBox(i);
     // A pass over the open lanes, gathered into full vectors: pass(idx, m) filters the boxes idx[0, m).
     auto gathered_pass = [&](auto&& pass) {
         std::size_t idx[64], n = 0;
@@ -213,7 +330,7 @@ Stats run(const Cylinder<double>& cyl, const Source& s, std::size_t n, const Opt
         Stats x;
         for (std::size_t blk = first; blk < last; ++blk) {
             const std::size_t begin = blk * 64, count = std::min<std::size_t>(64, n - begin);
-            emit(blk, block_bits(f, cyl, s, begin, count, x), count);
+            emit(blk, block_bits(f, cyl, s, begin, count, opt.check_boxes, x), count);
         }
         per_thread[t] = x;
     });
@@ -253,6 +370,15 @@ Stats aligned_bools(const Cylinder<double>& cyl, const AlignedBoxes<T>& b, std::
     return detail::to_bools(cyl, detail::AlignedSource<T>{b}, b.size(), out, opt);
 }
 template <class T>
+Stats rows_mask(const Cylinder<double>& cyl, std::span<const AlignedBox<T>> b, std::span<std::uint64_t> mask,
+                const Options& opt) {
+    return detail::to_mask(cyl, detail::AlignedRowsSource<T>{b}, b.size(), mask, opt);
+}
+template <class T>
+Stats rows_bools(const Cylinder<double>& cyl, std::span<const AlignedBox<T>> b, std::span<bool> out, const Options& opt) {
+    return detail::to_bools(cyl, detail::AlignedRowsSource<T>{b}, b.size(), out, opt);
+}
+template <class T>
 Stats oriented_mask(const Cylinder<double>& cyl, std::span<const OrientedBox<T>> b, std::span<std::uint64_t> mask,
                     const Options& opt) {
     return detail::to_mask(cyl, detail::OrientedSource<T>{b}, b.size(), mask, opt);
@@ -265,7 +391,7 @@ Stats oriented_bools(const Cylinder<double>& cyl, std::span<const OrientedBox<T>
 
 template <class T>
 constexpr KernelEntries<T> entries() {
-    return {&aligned_mask<T>, &aligned_bools<T>, &oriented_mask<T>, &oriented_bools<T>};
+    return {&aligned_mask<T>, &aligned_bools<T>, &rows_mask<T>, &rows_bools<T>, &oriented_mask<T>, &oriented_bools<T>};
 }
 
 // kernel: the name this table answers to (Kernel::compiled for the header's own).

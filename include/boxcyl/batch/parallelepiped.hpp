@@ -22,6 +22,7 @@
 #include "boxcyl/batch/types.hpp"
 #include "boxcyl/filtered/parallelepiped.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
+#include "boxcyl/geometry/validate.hpp"  // Options::check_boxes
 
 namespace boxcyl::batch::parallelepipeds {
 
@@ -41,6 +42,9 @@ Stats run(const Cylinder<double>& cyl, std::span<const Parallelepiped<T>> boxes,
         for (std::size_t blk = first; blk < last; ++blk) {
             const std::size_t begin = blk * 64, count = std::min<std::size_t>(64, n - begin);
             std::uint64_t bits = 0;
+            if (opt.check_boxes)
+                for (std::size_t l = 0; l < count; ++l)
+                    if (!is_valid(boxes[begin + l])) throw InvalidBox(begin + l);
             for (std::size_t l = 0; l < count; ++l) {
                 const filtered::Result r = filtered::query(widened(boxes[begin + l]), cyl);
                 bits |= std::uint64_t(r.intersect) << l;

@@ -5,6 +5,8 @@
 #include <cstddef>    // std::size_t
 #include <cstdint>    // std::uint64_t
 #include <span>       // inputs and outputs
+#include <stdexcept>  // InvalidBox
+#include <string>     // its message
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
@@ -41,6 +43,23 @@ constexpr const char* name(Kernel k) {
 struct Options {
     unsigned threads = 1;               // 0: std::thread::hardware_concurrency()
     Kernel kernel = Kernel::automatic;  // which SIMD kernel (answers do not depend on it)
+    // Check every box (boxcyl::is_valid) before answering it, instead of assuming it valid: an invalid
+    // box throws InvalidBox. For aligned and oriented boxes a few vector operations in the filter's
+    // first pass, on the numbers it loads anyway (bounds ordered and finite; for oriented boxes finite
+    // numbers, extents ≥ 0, the axes' Gram matrix in double); a block they cannot clear is judged by
+    // is_valid. Parallelepipeds call is_valid per box.
+    bool check_boxes = false;
+};
+
+// Thrown with Options::check_boxes for an invalid box: `index` is the first invalid box of the
+// lowest-numbered 64-box block that has one (with one thread: the first invalid box of the batch).
+// No box of that block was answered; the output is otherwise unspecified.
+struct InvalidBox : std::invalid_argument {
+    std::size_t index;
+    explicit InvalidBox(std::size_t i)
+        : std::invalid_argument("boxcyl::batch::intersects: boxes[" + std::to_string(i) +
+                                "] is invalid (see boxcyl::validate)"),
+          index(i) {}
 };
 
 struct Stats {
@@ -54,13 +73,16 @@ struct Stats {
 // Words of a bit mask for n boxes.
 constexpr std::size_t mask_words(std::size_t n) { return (n + 63) / 64; }
 
-// A kernel's entry points for one element type T of the boxes (float or double): aligned or oriented
-// boxes, into a bit mask or a bool per box. Preconditions as boxcyl::batch::intersects; the lengths are
+// A kernel's entry points for one element type T of the boxes (float or double): aligned boxes (six
+// arrays, or an array of AlignedBox<T>) or oriented boxes, into a bit mask or a bool per box. Preconditions as boxcyl::batch::intersects; the lengths are
 // checked by the caller.
 template <class T>
 struct KernelEntries {
     Stats (*aligned_mask)(const Cylinder<double>&, const AlignedBoxes<T>&, std::span<std::uint64_t>, const Options&);
     Stats (*aligned_bools)(const Cylinder<double>&, const AlignedBoxes<T>&, std::span<bool>, const Options&);
+    Stats (*rows_mask)(const Cylinder<double>&, std::span<const AlignedBox<T>>, std::span<std::uint64_t>,
+                       const Options&);
+    Stats (*rows_bools)(const Cylinder<double>&, std::span<const AlignedBox<T>>, std::span<bool>, const Options&);
     Stats (*oriented_mask)(const Cylinder<double>&, std::span<const OrientedBox<T>>, std::span<std::uint64_t>,
                            const Options&);
     Stats (*oriented_bools)(const Cylinder<double>&, std::span<const OrientedBox<T>>, std::span<bool>, const Options&);
