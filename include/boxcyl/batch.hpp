@@ -12,8 +12,10 @@
 //                     [min_z[i], max_z[i]]; six spans of the same length, T = float or double.
 //   AlignedBox<T>     array of structures (std::span<const AlignedBox<T>>), T = float or double: box i
 //                     is the six numbers min, max — the layout of an (N, 2, 3) array of [min, max] rows,
-//                     read in place (each vector of lanes is transposed in registers; the answers and
-//                     the speed are those of the six arrays).
+//                     read in place (each column of a vector of lanes gathered): the answers are those
+//                     of the six arrays; on data the first pass decides cheaply it costs more than
+//                     them (bench_batch: up to about 30% on random boxes with AVX-512), since the
+//                     gathers cost more than contiguous loads.
 //   OrientedBox<T>    array of structures (std::span<const OrientedBox<T>>), T = float or double: the
 //                     library's own struct, so existing arrays need no copy; the filter gathers each
 //                     vector of lanes from it.

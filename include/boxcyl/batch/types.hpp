@@ -74,8 +74,8 @@ struct Stats {
 constexpr std::size_t mask_words(std::size_t n) { return (n + 63) / 64; }
 
 // A kernel's entry points for one element type T of the boxes (float or double): aligned boxes (six
-// arrays, or an array of AlignedBox<T>) or oriented boxes, into a bit mask or a bool per box. Preconditions as boxcyl::batch::intersects; the lengths are
-// checked by the caller.
+// arrays, or an array of AlignedBox<T>) or oriented boxes, into a bit mask or a bool per box.
+// Preconditions as boxcyl::batch::intersects; the lengths are checked by the caller.
 template <class T>
 struct KernelEntries {
     Stats (*aligned_mask)(const Cylinder<double>&, const AlignedBoxes<T>&, std::span<std::uint64_t>, const Options&);
