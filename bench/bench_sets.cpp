@@ -7,13 +7,17 @@
 //   voxels       the 21³ unit cells of [−10, 11]³ against a cylinder of radius 8 and height 16 centred on
 //                a grid node, axis z: its side and caps touch cell faces exactly (per box: scalar
 //                queries, the batch API and the grid query over the same cells)
+//   degenerate   4096 random queries of CaseGenerator's degenerate profile (seed 0xb0c5c707: scales
+//                2^±600, zero sizes, sizes 2^±40 apart), where stage 0 leaves many queries far from
+//                touching to stage 1
 // Columns per set: the default query (`intersects(box, cyl)`), the same pipeline without the middle
 // stage (stage 1's undecided queries go straight to the exact stage, as before the middle stage
 // existed: "without middle"), and plain double §4 (`{Algorithm::inequalities, Arithmetic::float64}`).
 // Per stage: how many queries of the set each stage decides, in the order they run (0: semi-static;
 // the exact stage straight after it for narrow inputs, integer or binary-fraction coordinates; 0b:
-// witness search; middle: double-double enclosures; exact), and the default query's mean time on that
-// subset, timed on its own.
+// witness search; 1 Bounded, for queries not near touching; middle: double-double enclosures; the
+// certificates kept for degenerate shapes; exact), and the default query's mean time on that subset,
+// timed on its own.
 // Built a second time as bench_sets_before with BOXCYL_MIDDLE_STAGE=0 (the library without the middle
 // stage), so that the batch API and the grid query, which call the library's scalar query, can be
 // compared too (two runs: those ratios are across processes).
@@ -49,9 +53,11 @@ constexpr const char* kBuild = "with the middle stage";
 constexpr const char* kBuild = "without the middle stage (BOXCYL_MIDDLE_STAGE=0)";
 #endif
 
-enum Stage { s0, snarrow, s0b, smiddle, sexact, kStages };
-constexpr const char* kStageName[kStages] = {"0 semi-static", "exact, narrow inputs", "0b witness search",
-                                             "middle (double-double)", "exact"};
+enum Stage { s0, snarrow, s0b, s1b, smiddle, sdegenerate, sexact, kStages };
+constexpr const char* kStageName[kStages] = {"0 semi-static",          "exact, narrow inputs",
+                                             "0b witness search",      "1 Bounded (not near touching)",
+                                             "middle (double-double)", "degenerate-shape certificates",
+                                             "exact"};
 
 // The stage that decides the query, replaying filtered::detail::run's order in round to nearest.
 template <class Box>
@@ -62,7 +68,13 @@ Stage deciding_stage(const Box& box, const Cylinder<double>& cyl) {
     if (in_range && f::semi_static::decide(p, box, cyl)) return s0;
     if (exact::integer::answer_if_narrow(box, cyl)) return snarrow;
     if (in_range && f::witness_search::decide(p, box, cyl)) return s0b;
+    if (in_range && !f::witness_search::near_touching(p, box) && f::detail::filter<Bounded>(box, cyl)) return s1b;
     if (f::detail::middle(box, cyl)) return smiddle;
+    if (f::detail::degenerate(box, cyl)) {
+        Vec3<double> a0;
+        if (f::detail::tiny_components_zeroed(cyl.axis, a0, -200) && f::detail::filter(box, cyl)) return sdegenerate;
+        if (in_range && f::witness_search::certain_hit(p, box, cyl)) return sdegenerate;
+    }
     return sexact;
 }
 // The default pipeline without the middle stage (what the library did before it: stage 1 is Bounded
@@ -242,7 +254,7 @@ double ns(const std::string& name) {
 }
 
 void summary(std::FILE* out, const std::vector<Set>& sets) {
-    std::fprintf(out, "\n**The four sets** (%s; time per query, median of the repetitions; ratios from this run)\n\n", kBuild);
+    std::fprintf(out, "\n**The sets** (%s; time per query, median of the repetitions; ratios from this run)\n\n", kBuild);
     std::fprintf(out, "| set | queries | default | without middle | double §4 | default / double §4 | without middle / double §4 | wrong (default vs oracle) |\n");
     std::fprintf(out, "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     for (const Set& s : sets) {
@@ -285,6 +297,15 @@ void summary(std::FILE* out, const std::vector<Set>& sets) {
                      ns_text(ns(base + "alone_bounded")).c_str(), ns_text(ns(base + "alone_interval")).c_str(),
                      ns_text(ns(base + "alone_thorough_search")).c_str(), ns_text(ns(base + "alone_middle")).c_str());
     }
+    std::fprintf(out, "\n**The same on the queries stage 1's Bounded run decides** (those not near touching: why it "
+                      "runs before the middle stage there)\n\n");
+    std::fprintf(out, "| set | queries | stage 1, Bounded | middle stage |\n| --- | ---: | ---: | ---: |\n");
+    for (const Set& s : sets) {
+        if (s.by_stage[s1b].empty()) continue;
+        const std::string base = s.name + "/stage_" + std::to_string(s1b) + "/";
+        std::fprintf(out, "| %s | %zu | %s | %s |\n", s.name.c_str(), s.by_stage[s1b].size(),
+                     ns_text(ns(base + "alone_bounded")).c_str(), ns_text(ns(base + "alone_middle")).c_str());
+    }
     std::fprintf(out, "\n**Voxels touching a cylinder** (%zu unit cells of [%d, %d]³, cylinder radius 8, height 16, centre on "
                       "the grid node 0, axis z; time per box, one thread)\n\n",
                  kVoxelCells, kLo, kHi);
@@ -320,12 +341,13 @@ int main(int argc, char** argv) {
     if (benchmark::ReportUnrecognizedArguments(cargc, cargs.data())) return 1;
 
     std::fprintf(stderr, "generating the sets (the boundary pairs are found by bisection with the oracle: about a minute)...\n");
-    std::vector<Set> sets(5);
+    std::vector<Set> sets(6);
     sets[0].name = "random", sets[0].title = "random (seed 0xb0c5c701)";
     sets[1].name = "boundary", sets[1].title = "one-ulp boundary pairs (seed 0xb0c5c702)";
     sets[2].name = "touching", sets[2].title = "exactly touching and one-ulp neighbours (seed 0xb0c5c705)";
     sets[3].name = "adversarial", sets[3].title = "adversarial near-touching mix (seed 0xb0c5c706)";
     sets[4].name = "voxels", sets[4].title = "voxels touching a cylinder (radius 8, unit cells)";
+    sets[5].name = "degenerate", sets[5].title = "random, degenerate profile (seed 0xb0c5c707)";
     {
         boxcyl::testing::CaseGenerator gen(0xb0c5c701);
         for (int i = 0; i < 4096; ++i) sets[0].cases.push_back(gen.next());
@@ -349,6 +371,10 @@ int main(int argc, char** argv) {
         for (int i = 0; i < 2048; ++i) sets[3].cases.push_back(boxcyl::testing::adversarial_case(rng));
     }
     sets[4].cases = voxels().cases;
+    {
+        boxcyl::testing::CaseGenerator gen(0xb0c5c707, boxcyl::testing::Profile::degenerate);
+        for (int i = 0; i < 4096; ++i) sets[5].cases.push_back(gen.next());
+    }
     for (Set& s : sets) {
         for (const Case& c : s.cases) {
             const Stage st = with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return deciding_stage(b, cyl); });
@@ -365,6 +391,8 @@ int main(int argc, char** argv) {
         }
         for (int m = int(Method::bounded); m < int(Method::kCount); ++m)
             add(s.name + "/stage_" + std::to_string(smiddle) + "/" + kMethodKey[m], Method(m), &s.by_stage[smiddle]);
+        for (Method m : {Method::bounded, Method::middle})
+            add(s.name + "/stage_" + std::to_string(s1b) + "/" + kMethodKey[int(m)], m, &s.by_stage[s1b]);
     }
     benchmark::RegisterBenchmark("voxels/batch", voxel_batch);
     benchmark::RegisterBenchmark("voxels/grid", voxel_grid);

@@ -84,7 +84,10 @@ The sets:
   2^±1000 in one query, segments and disks ending at box vertices, denormal axis components beside 1,
   sub-ulp cylinders on boxes near 1e15 — each moved by up to two ulps;
 - **voxels**: the 9261 unit cells of [−10, 11]³ against a cylinder of radius 8 and height 16 centred on
-  the grid node 0 (axis z): its caps and side touch cell faces exactly.
+  the grid node 0 (axis z): its caps and side touch cell faces exactly;
+- **degenerate**: 4096 random queries of the generator's degenerate profile (scales 2^±600, zero sizes,
+  sizes 2^±40 apart within a query): random data where stage 0 leaves many queries, far from
+  touching, to the later stages.
 
 Columns: *default* is \`boxcyl::intersects(box, cyl)\`; *without middle* is the same pipeline with the
 middle stage left out (stage 1's undecided queries go on to stage 1's Interval run, the thorough witness
@@ -116,23 +119,30 @@ was measured in):
    grids, CAD) go straight to exact integer arithmetic, which costs less there than any further filter.
 3. **Stage 0b**, the witness search: a few projection steps find a separating direction or a witness
    point that stage 0's tests certify; most of what stage 0 leaves on random data.
-4. **The middle stage**, on double-double enclosures with a running error bound (about 2^-100 relative
+4. **Stage 1's Bounded run** (§4 on a double with a running error bound, with the hit certificates),
+   only for queries that do not look near touching: a plain-double hint from stage 0's separating-axis
+   tests and the axis segment's distance from the box (`witness_search::near_touching`). Far from
+   touching it decides nearly everything stage 0 leaves, at a third of the middle stage's cost (the
+   table *the same on the queries stage 1's Bounded run decides*); near touching it would only fail.
+5. **The middle stage**, on double-double enclosures with a running error bound (about 2^-100 relative
    per operation): §4 with its hit certificates for aligned, canonical and signed-permutation boxes;
    for rotated frames the clipped-candidates test (the axis segment through the box, or a box edge
    clipped to the cylinder's slab, or a face cut by a slab plane, within r of the axis: each test
    three-valued, on Bounded first and double-double only where Bounded could not tell), which stays
    decisive when the cylinder axis is parallel to a box edge or face. It decides every query that is
    not exactly touching unless its decision hangs on a subnormal quantity.
-5. **The exact stage**, in integers and Z[√d] after one power-of-two scaling (docs/robustness.md §11):
+6. **The exact stage**, in integers and Z[√d] after one power-of-two scaling (docs/robustness.md §11):
    §4 for aligned, canonical and signed-permutation boxes, the parallelepiped's clipped edges and face
    cuts for rotated frames; fixed-width stack integers (16 limbs, GMP's mpn) while the values fit,
    mpz otherwise.
 
-In the other rounding modes the middle stage declines (its error-free transformations assume round to
-nearest) and stage 1 runs instead: §4 on Bounded, then on Interval, then the thorough witness search
-(up to 3 × 256 projection steps), then the exact stage. In round to nearest they are skipped: the
-middle stage decides all they would, at less cost (the table *the stages alone*), and on what it leaves
-(exactly touching, or hanging on a subnormal) they only add their cost before the exact stage.
+Degenerate shapes (flat boxes, disks, segments) that the middle stage leaves get the thorough witness
+search (up to 3 × 256 projection steps) before the exact stage. In the other rounding modes the middle
+stage declines (its error-free transformations assume round to nearest) and stage 1 runs in full: §4 on
+Bounded, then on Interval, then the thorough witness search, then the exact stage. In round to nearest
+Interval and the thorough search are skipped: the middle stage decides all they would, at less cost
+(the table *the stages alone*), and on what it leaves (exactly touching, or hanging on a subnormal)
+they only add their cost before the exact stage.
 
 On random data nearly nothing reaches the middle stage, and the default query stays below plain
 double §4 (stage 0 tests less than §4 computes). Near touching, the middle stage decides nearly

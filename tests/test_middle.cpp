@@ -10,6 +10,8 @@
 //    on the adversarial near-touching mix and on one-ulp boundary pairs, in all four rounding modes
 //    (the middle stage declines outside round-to-nearest; the answers must not change). Built a second
 //    time with FMA contraction forced on (tests/CMakeLists.txt: test_middle_fma).
+//  * The hint that orders the middle stage before stage 1's Bounded run near touching
+//    (witness_search::near_touching) on contacts and on queries far from touching.
 //  * The clipped-candidates test alone (filtered/clipped_candidates.hpp, the middle stage's method for
 //    rotated frames): every answer it gives equals the oracle, on rotated boxes whose face, edge or vertex
 //    a cylinder touches up to a few ulps (axis parallel to a box edge, to a face, or oblique; solid, flat
@@ -273,6 +275,36 @@ TEST(ClippedCandidates, RandomAndBoundaryQueriesAgreeWithOracle) {
         check(x), check(y), ++n;
     }
     std::printf("  random and boundary oriented boxes: %ld of %ld decided\n", decided, total);
+}
+
+// ---- The order of the stages: the plain-double hint ----
+
+bool hint(const AlignedBox<double>& b, const Cylinder<double>& c) {
+    filtered::semi_static::Problem p;
+    EXPECT_TRUE(filtered::semi_static::problem(b, c, p));
+    return filtered::witness_search::near_touching(p, b);
+}
+
+TEST(NearTouchingHint, ContactsAreNearFarQueriesAreNot) {
+    const AlignedBox<double> box{{-1, -1, -1}, {1, 1, 1}};
+    // Near: the side on a face, a cap on a face, the side on an edge (Pythagorean offsets), the rim on a
+    // vertex; each also one ulp away.
+    const std::vector<Cylinder<double>> near = {
+        {{3, 0, 0}, {0, 0, 1}, 2, 1},
+        {{0, 0, 1.5}, {0, 0, 1}, 0.5, 1},
+        {{1 + 0.6, 1 + 0.8, 0}, {0, 0, 1}, 1, 1},
+        {{1 + 3, 1 + 4, 1.5}, {0, 0, 1}, 5, 1},
+        {{3, 0, 0}, {0, 0, 1}, std::nextafter(2.0, 3.0), 1},
+        {{0, 0, std::nextafter(1.5, 2.0)}, {0, 0, 1}, 0.5, 1},
+    };
+    for (const Cylinder<double>& c : near) EXPECT_TRUE(hint(box, c)) << filtered::detail::describe(c);
+    // Far: a deep hit, a thin overlap of a fifth of the box, a miss by half the box.
+    const std::vector<Cylinder<double>> far = {
+        {{0, 0, 0}, {1, 2, 3}, 0.5, 1},
+        {{2.8, 0, 0}, {0, 0, 1}, 2, 1},
+        {{4, 0, 0}, {0, 1, 1}, 2, 1},
+    };
+    for (const Cylinder<double>& c : far) EXPECT_FALSE(hint(box, c)) << filtered::detail::describe(c);
 }
 
 // ---- The default query on the near-touching sets ----

@@ -21,8 +21,10 @@
 //   thickened sizes (misses) (docs/robustness.md §5). Rotated frames (not exactly orthonormal) run the
 //   clipped-candidates test on the exact parallelepiped (filtered/clipped_candidates.hpp). Near-touching
 //   inputs that are not exactly touching are decided here (docs/robustness.md §12).
-//   Stage 1, in the other rounding modes instead of the middle stage: the same evaluation on Bounded
-//   (number/bounded.hpp: a double and a running error bound), then on Interval (number/interval.hpp);
+//   Stage 1: the same evaluation on Bounded (number/bounded.hpp: a double and a running error bound)
+//   — in round to nearest before the middle stage, for queries not near touching only (a plain-double
+//   hint, witness_search::near_touching); in the other rounding modes instead of the middle stage,
+//   followed by the same on Interval (number/interval.hpp);
 //   oriented boxes whose axes are not exactly orthonormal are widened by a proved bound η
 //   (docs/robustness.md §4); then a thorough witness search tries once more to certify a hit.
 //   Stage 2, the exact fallback (only when nothing before could decide): linear inequalities evaluated in integers and
@@ -990,14 +992,19 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
     if (!fast && in_range) fast = witness_search::decide(p, box, cyl);  // stage 0b
     if (!fast) {
         if (middle_runs()) {
-            // In round to nearest the middle stage decides everything stage 1 would, and more, at less
-            // cost; what it leaves is (nearly always) exactly touching or hangs on a subnormal, where
-            // the exact stage costs less than any further filter. Except for degenerate shapes (flat
-            // boxes, disks, segments), where the thorough witness search still certifies deep hits
-            // with no inner problem (a flat box crossed by a thick disk), and stage 1's coarser
-            // zeroing of tiny axis components (2^-30, not 2^-200) some hits of segments and disks
-            // whose axis has subnormal components.
-            fast = middle(box, cyl);
+            // In round to nearest the middle stage decides everything stage 1 would, and more. Near
+            // touching (witness_search::near_touching, a plain-double hint), and for magnitudes out of
+            // stage 0's range, it runs alone: stage 1's Bounded run would fail there first. Elsewhere
+            // Bounded runs first: it decides nearly all such queries (degenerate shapes, hits stage 0
+            // cannot certify) at a third of the middle stage's cost. What the middle stage leaves is
+            // (nearly always) exactly touching or hangs on a subnormal, where the exact stage costs
+            // less than any further filter. Except for degenerate shapes (flat boxes, disks,
+            // segments), where the thorough witness search still certifies deep hits with no inner
+            // problem (a flat box crossed by a thick disk), and stage 1's coarser zeroing of tiny
+            // axis components (2^-30, not 2^-200) some hits of segments and disks whose axis has
+            // subnormal components.
+            if (in_range && !witness_search::near_touching(p, box)) fast = filter<Bounded>(box, cyl);
+            if (!fast) fast = middle(box, cyl);
             if (!fast && degenerate(box, cyl)) {
                 Vec3<double> a0;
                 if (tiny_components_zeroed(cyl.axis, a0, -200)) fast = filter(box, cyl);

@@ -493,6 +493,32 @@ BOXCYL_STAGE0_INLINE std::optional<bool> decide(const Problem& p, const Kappas& 
     return std::nullopt;
 }
 
+// Whether one of stage 0's separating-axis tests (a box face's normal, the cylinder axis, d × E_i) is
+// within 2^20 of its error bound: the solids are then within about 2^-32 of the problem's scale of
+// touching along that direction. Only a hint for the order of the later stages (near touching, stage
+// 1's double precision cannot decide and the middle stage runs first; elsewhere stage 1 decides at a
+// third of the middle stage's cost), never for an answer.
+BOXCYL_STAGE0_INLINE bool near_touching(const Problem& p, const Kappas& k) {
+    constexpr double wide = 0x1p20;
+    const Vec3<double>& c = p.c;
+    const Vec3<double>& d = p.d;
+    const Vec3<double>& e = p.e;
+    auto near = [](double gap, double bound) { return std::fabs(gap) <= bound; };
+    if (near(axis_gap(c, d, e, p.h_out), wide * bound1(p, k.axis))) return true;
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, l = (i + 2) % 3;
+        const double s = face_gap(c[i], e[i], p.h_out, d[i]);
+        if (near(s, wide * bound1(p, k.face))) return true;
+        if (s > 0 && near(face_gap_squared(s, p.r_out, d[j], d[l]), wide * bound2(p, k.face_sq))) return true;
+        const double t = edge_gap(c[j], c[l], d[j], d[l], e[j], e[l]);
+        if (t > 0 && near(face_gap_squared(t, p.r_out, d[j], d[l]), wide * bound2(p, k.edge_sq))) return true;
+    }
+    return false;
+}
+inline bool near_touching(const Problem& p, const CanonicalBox<double>&) { return near_touching(p, canonical_kappas); }
+inline bool near_touching(const Problem& p, const AlignedBox<double>&) { return near_touching(p, aligned_kappas); }
+inline bool near_touching(const Problem& p, const OrientedBox<double>&) { return near_touching(p, oriented_kappas); }
+
 // `sound = false` (the filter() overloads below) sets every κ to 0: decisions on the computed values
 // alone, unsound, for the tests that show the bounds are needed.
 

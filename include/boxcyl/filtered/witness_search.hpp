@@ -243,6 +243,23 @@ inline auto offset_in_world(const Problem& p, const OrientedBox<double>& b, cons
 
 }  // namespace detail
 
+// A hint for the order of the later stages (never for an answer): whether the query looks within
+// about 2^-30 of its scale of touching — a separating-axis test of stage 0 near its bound
+// (semi_static::near_touching: a face or cap against a face, an edge against the side), or the axis
+// segment's distance from the box near r (the side or the rim against a vertex or an edge: the
+// distance from the nearest axis point to the box, in plain double).
+template <class Box>
+bool near_touching(const semi_static::Problem& p, const Box& box) {
+    if (semi_static::near_touching(p, box)) return true;
+    const double t = detail::nearest_axis_parameter(p, p.h);
+    Vec3<double> gap;
+    for (int i = 0; i < 3; ++i) {
+        const double x = p.c[i] + t * p.d[i];
+        gap[i] = x - semi_static::clamp_to(x, -p.e[i], p.e[i]);
+    }
+    return std::fabs(dot(gap, gap) - p.r * p.r) <= 0x1p-30 * p.l * p.l;
+}
+
 // Stage 0b on a problem computed by semi_static::problem() for the same box and cylinder: the answer,
 // or nullopt when undecided.
 inline std::optional<bool> decide(const semi_static::Problem& p, const CanonicalBox<double>&, const Cylinder<double>&) {
