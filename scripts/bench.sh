@@ -121,7 +121,7 @@ was measured in):
    point that stage 0's tests certify; most of what stage 0 leaves on random data.
 4. **Stage 1's Bounded run** (§4 on a double with a running error bound, with the hit certificates),
    only for queries that do not look near touching: a plain-double hint from stage 0's separating-axis
-   tests and the axis segment's distance from the box (`witness_search::near_touching`). Far from
+   tests and the axis segment's distance from the box (`looks_near_touching` in filtered.hpp). Far from
    touching it decides nearly everything stage 0 leaves, at a third of the middle stage's cost (the
    table *the same on the queries stage 1's Bounded run decides*); near touching it would only fail.
 5. **The middle stage**, on double-double enclosures with a running error bound (about 2^-100 relative

@@ -919,6 +919,45 @@ std::optional<bool> middle(const Box& box, const Cylinder<double>& cyl) {
     return middle_clipped(box, cyl);
 }
 
+// Every length times 2^k, the axis kept: the query at another scale (exact unless a value underflows;
+// used only for the hint below).
+inline AlignedBox<double> times_power_of_two(const AlignedBox<double>& b, int k) {
+    AlignedBox<double> r = b;
+    for (int i = 0; i < 3; ++i) r.min[i] = std::ldexp(b.min[i], k), r.max[i] = std::ldexp(b.max[i], k);
+    return r;
+}
+inline CanonicalBox<double> times_power_of_two(const CanonicalBox<double>& b, int k) {
+    CanonicalBox<double> r = b;
+    for (int i = 0; i < 3; ++i) r.extents[i] = std::ldexp(b.extents[i], k);
+    return r;
+}
+inline OrientedBox<double> times_power_of_two(const OrientedBox<double>& b, int k) {
+    OrientedBox<double> r = b;
+    for (int i = 0; i < 3; ++i) r.center[i] = std::ldexp(b.center[i], k), r.extents[i] = std::ldexp(b.extents[i], k);
+    return r;
+}
+
+// Whether the query looks near touching (witness_search::near_touching), for the order of the stages
+// only. A query out of stage 0's range (its scale beyond 2^±200) is looked at scaled to about 1.
+template <class Box>
+bool looks_near_touching(const Box& box, const Cylinder<double>& cyl, const semi_static::Problem& p, bool in_range) {
+    if (in_range) return witness_search::near_touching(p, box);
+    double m = 0;
+    update_max_box(m, box);
+    update_max(m, cyl.center);
+    update_max(m, cyl.radius);
+    update_max(m, cyl.height);
+    if (!(m > 0) || !(m < std::numeric_limits<double>::infinity())) return true;
+    const int k = -std::ilogb(m);
+    const Box b = times_power_of_two(box, k);
+    Cylinder<double> c = cyl;
+    for (int i = 0; i < 3; ++i) c.center[i] = std::ldexp(cyl.center[i], k);
+    c.radius = std::ldexp(cyl.radius, k);
+    c.height = std::ldexp(cyl.height, k);
+    semi_static::Problem q;
+    return !semi_static::problem(b, c, q) || witness_search::near_touching(q, b);
+}
+
 // Stage 1: Bounded, then Interval, then the thorough witness search for hits.
 template <class Box>
 std::optional<bool> stage_one(const Box& box, const Cylinder<double>& cyl, const semi_static::Problem& p, bool in_range) {
@@ -993,8 +1032,8 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
     if (!fast) {
         if (middle_runs()) {
             // In round to nearest the middle stage decides everything stage 1 would, and more. Near
-            // touching (witness_search::near_touching, a plain-double hint), and for magnitudes out of
-            // stage 0's range, it runs alone: stage 1's Bounded run would fail there first. Elsewhere
+            // touching (looks_near_touching, a plain-double hint) it runs alone: stage 1's Bounded
+            // run would fail there first. Elsewhere
             // Bounded runs first: it decides nearly all such queries (degenerate shapes, hits stage 0
             // cannot certify) at a third of the middle stage's cost. What the middle stage leaves is
             // (nearly always) exactly touching or hangs on a subnormal, where the exact stage costs
@@ -1003,7 +1042,7 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
             // problem (a flat box crossed by a thick disk), and stage 1's coarser zeroing of tiny
             // axis components (2^-30, not 2^-200) some hits of segments and disks whose axis has
             // subnormal components.
-            if (in_range && !witness_search::near_touching(p, box)) fast = filter<Bounded>(box, cyl);
+            if (!looks_near_touching(box, cyl, p, in_range)) fast = filter<Bounded>(box, cyl);
             if (!fast) fast = middle(box, cyl);
             if (!fast && degenerate(box, cyl)) {
                 Vec3<double> a0;
