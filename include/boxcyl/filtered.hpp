@@ -937,6 +937,39 @@ inline OrientedBox<double> times_power_of_two(const OrientedBox<double>& b, int 
     return r;
 }
 
+inline bool same_lengths(const AlignedBox<double>& a, const AlignedBox<double>& b) { return a.min == b.min && a.max == b.max; }
+inline bool same_lengths(const CanonicalBox<double>& a, const CanonicalBox<double>& b) { return a.extents == b.extents; }
+inline bool same_lengths(const OrientedBox<double>& a, const OrientedBox<double>& b) {
+    return a.center == b.center && a.extents == b.extents;
+}
+
+// The query with every length times 2^k, k bringing the largest to [1, 2), when its largest length is
+// beyond stage 0's range of scales and every length scales exactly (scaling back gives it again): the
+// same question, whose answer is the same.
+template <class Box>
+bool rescaled_exactly(const Box& box, const Cylinder<double>& cyl, Box& out_box, Cylinder<double>& out_cyl) {
+    double m = 0;
+    update_max_box(m, box);
+    update_max(m, cyl.center);
+    update_max(m, cyl.radius);
+    update_max(m, cyl.height);
+    if (!(m > 0) || !(m < std::numeric_limits<double>::infinity()) || semi_static::in_range(2 * m)) return false;
+    const int k = -std::ilogb(m);
+    bool exact = true;
+    auto scale = [&](double x) {
+        const double y = std::ldexp(x, k);
+        exact &= std::ldexp(y, -k) == x;
+        return y;
+    };
+    out_box = times_power_of_two(box, k);
+    out_cyl = cyl;
+    for (int i = 0; i < 3; ++i) out_cyl.center[i] = scale(cyl.center[i]);
+    out_cyl.radius = scale(cyl.radius);
+    out_cyl.height = scale(cyl.height);
+    const Box back = times_power_of_two(out_box, -k);
+    return exact && same_lengths(back, box);
+}
+
 // Whether the query looks near touching (witness_search::near_touching), for the order of the stages
 // only. A query out of stage 0's range (its scale beyond 2^±200) is looked at scaled to about 1.
 template <class Box>
@@ -1023,6 +1056,13 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
     // Stages 0, 0b and the thorough search share one computed problem (false: out of stage 0's range).
     semi_static::Problem p;
     const bool in_range = semi_static::problem(box, cyl, p);
+    if (!in_range) {
+        // Scales beyond stage 0's range (2^±200): the same question scaled by a power of two to about 1,
+        // when that is exact for every length (no value under- or overflows), gets the cheap stages.
+        Box scaled_box;
+        Cylinder<double> scaled_cyl;
+        if (rescaled_exactly(box, cyl, scaled_box, scaled_cyl)) return run(scaled_box, scaled_cyl);
+    }
     std::optional<bool> fast;
     if (in_range) fast = semi_static::decide(p, box, cyl);  // stage 0
     if (!fast) {  // narrow inputs: the exact stage costs less than stages 0b and 1 (exact/integer_inequalities.hpp)
