@@ -65,6 +65,11 @@ Stage deciding_stage(const Box& box, const Cylinder<double>& cyl) {
     namespace f = filtered;
     f::semi_static::Problem p;
     const bool in_range = f::semi_static::problem(box, cyl, p);
+    if (!in_range) {  // answered as the same query at scale 1 when that is exact
+        Box b;
+        Cylinder<double> c;
+        if (f::detail::rescaled_exactly(box, cyl, b, c)) return deciding_stage(b, c);
+    }
     if (in_range && f::semi_static::decide(p, box, cyl)) return s0;
     if (exact::integer::answer_if_narrow(box, cyl)) return snarrow;
     if (in_range && f::witness_search::decide(p, box, cyl)) return s0b;
