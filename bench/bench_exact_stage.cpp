@@ -15,10 +15,14 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdint>  // seeds
+#include <optional>  // a frame without an exact canonical form
+#include <random>   // the adversarial set
+#include <type_traits>  // per box kind
 #include <vector>   // the sets
 
 #include "boxcyl/query.hpp"
 #include "support/cases.hpp"
+#include "support/near_touching.hpp"
 #include "support/touching.hpp"
 
 namespace {
@@ -36,7 +40,7 @@ bool integer_frame(const Case& c) {
 }
 
 struct Sets {
-    std::vector<Case> touching_all, touching_integer, touching_turned, boundary_integer;
+    std::vector<Case> touching_all, touching_integer, touching_turned, boundary_integer, adversarial_integer;
 };
 
 const Sets& sets() {
@@ -58,17 +62,23 @@ const Sets& sets() {
             for (const Case& c : {a, b})
                 if (integer_frame(c) && reaches_exact_stage(c)) r.boundary_integer.push_back(c);
         }
+        std::mt19937_64 arng(0xb0c5c706);
+        for (int i = 0; i < 2048; ++i) {
+            const Case c = boxcyl::testing::adversarial_case(arng);
+            if (integer_frame(c) && reaches_exact_stage(c)) r.adversarial_integer.push_back(c);
+        }
         return r;
     }();
     return s;
 }
 
-enum class Set { touching_integer, touching_turned, boundary_integer, touching_all };
+enum class Set { touching_integer, touching_turned, boundary_integer, adversarial_integer, touching_all };
 const std::vector<Case>& set(Set which) {
     switch (which) {
         case Set::touching_integer: return sets().touching_integer;
         case Set::touching_turned: return sets().touching_turned;
         case Set::boundary_integer: return sets().boundary_integer;
+        case Set::adversarial_integer: return sets().adversarial_integer;
         case Set::touching_all: break;
     }
     return sets().touching_all;
@@ -87,6 +97,31 @@ void exact_stage(benchmark::State& state, Set which) {
         long hits = 0;
         for (const Case& c : cases)
             hits += with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::detail::exact_answer(b, cyl); });
+        benchmark::DoNotOptimize(hits);
+    }
+    counters(state, cases.size());
+}
+
+// The exact stage in integers without EpsilonSeries: FixedInt, then mpz_class.
+template <class Box>
+bool plain_integer(const Box& b, const Cylinder<double>& c) {
+    if constexpr (std::is_same_v<Box, OrientedBox<double>>) {
+        if (const std::optional<bool> r = exact::integer::answer_small(b, c)) return *r;
+        std::optional<exact::integer::Problem<mpz_class>> p = exact::integer::problem<mpz_class>(b, c);
+        if (!p) return filtered::detail::exact_answer(b, c);  // a turned frame: the parallelepiped test
+        return exact::integer::intersects(*p);
+    } else {
+        if (const std::optional<bool> r = exact::integer::answer_small(b, c)) return *r;
+        exact::integer::Problem<mpz_class> p = exact::integer::problem<mpz_class>(b, c);
+        return exact::integer::intersects(p);
+    }
+}
+void plain_integer_stage(benchmark::State& state, Set which) {
+    const std::vector<Case>& cases = set(which);
+    for (auto _ : state) {
+        long hits = 0;
+        for (const Case& c : cases)
+            hits += with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return plain_integer(b, cyl); });
         benchmark::DoNotOptimize(hits);
     }
     counters(state, cases.size());
@@ -132,7 +167,11 @@ BENCHMARK_CAPTURE(rational_exact_stage, touching_integer, Set::touching_integer)
 BENCHMARK_CAPTURE(exact_stage, touching_turned, Set::touching_turned);
 BENCHMARK_CAPTURE(rational_exact_stage, touching_turned, Set::touching_turned);
 BENCHMARK_CAPTURE(exact_stage, boundary_integer, Set::boundary_integer);
+BENCHMARK_CAPTURE(plain_integer_stage, boundary_integer, Set::boundary_integer);
 BENCHMARK_CAPTURE(rational_exact_stage, boundary_integer, Set::boundary_integer);
+BENCHMARK_CAPTURE(exact_stage, adversarial_integer, Set::adversarial_integer);
+BENCHMARK_CAPTURE(plain_integer_stage, adversarial_integer, Set::adversarial_integer);
+BENCHMARK_CAPTURE(rational_exact_stage, adversarial_integer, Set::adversarial_integer);
 BENCHMARK_CAPTURE(query, touching_default, QueryOptions{});
 BENCHMARK_CAPTURE(query, touching_float64, QueryOptions{Algorithm::inequalities, Arithmetic::float64});
 

@@ -5,7 +5,9 @@
 //    oblique axes), directly and through filtered::query;
 //  * the random, degenerate (2^±600) and extreme (2^±1000, subnormal) sets of the other tests;
 //  * hand-made touching cases with their exact answers, and one ulp off them;
-//  * its parts: the dyadic decomposition of doubles and the sign of a + b√d.
+//  * inputs of two scales (tiny axis components and lengths) through the EpsilonSeries run;
+//  * its parts: the dyadic decomposition of doubles, the sign of a + b√d, FixedInt and EpsilonSeries
+//    against exact references.
 // Failing cases print as pasteable C++ (support/cases.hpp's describe()).
 #include <gtest/gtest.h>
 
@@ -17,12 +19,15 @@
 #include <random>    // operands
 #include <string>    // labels
 #include <tuple>     // hand-made cases
+#include <type_traits>  // per box kind
+#include <vector>    // series programs
 
 #include "boxcyl/exact/integer_inequalities.hpp"
 #include "boxcyl/exact/integer_parallelepiped.hpp"
 #include "boxcyl/filtered.hpp"
 #include "boxcyl/number/qfield.hpp"
 #include "support/cases.hpp"
+#include "support/near_touching.hpp"
 #include "support/runner.hpp"
 #include "support/touching.hpp"
 
@@ -280,6 +285,143 @@ TEST(ExactStage, FixedIntMatchesMpz) {
     }
     EXPECT_GT(checked, 10000);
     EXPECT_GT(overflows, 100);
+}
+
+// EpsilonSeries against exact rationals: straight-line programs of sums, differences and products of
+// values c_0 + c_1·ε (ε = 2^−E) with coefficients of up to 150 bits, many of them equal at order 0 so
+// that differences cancel there. Every sign the series gives while its undecided flag stays down is the
+// exact sign; the flag rises when a sign hangs beyond the kept order (and on such a cancellation at
+// order 0 and 1 alike, which the programs make common).
+TEST(ExactStage, EpsilonSeriesSignsAreExact) {
+    using S = EpsilonSeries<FixedInt<16>, 2>;
+    std::mt19937_64 rng(2108);
+    auto random_int = [&](int bits) {
+        mpz_class z(0);
+        for (int b = 0; b < bits; b += 50) z = (z << 50) + static_cast<long>(rng() >> 14);
+        z >>= static_cast<unsigned>((bits + 49) / 50 * 50 - bits);
+        return (rng() & 1) ? mpz_class(-z) : z;
+    };
+    auto to_fixed = [](const mpz_class& z) {
+        FixedInt<16> f(0);
+        const mpz_class mag = abs(z);
+        const std::size_t words = mpz_sizeinbase(mag.get_mpz_t(), 2) / 62 + 1;
+        for (std::size_t w = words; w-- > 0;) {
+            f <<= 62u;
+            const mpz_class part = (mag >> static_cast<unsigned>(62 * w)) & ((mpz_class(1) << 62) - 1);
+            f = f + FixedInt<16>(static_cast<long>(part.get_ui()));
+        }
+        return sgn(z) < 0 ? FixedInt<16>(-f) : f;
+    };
+    long decided = 0, undecided = 0;
+    for (int program = 0; program < 400; ++program) {
+        const int E = 200 + static_cast<int>(rng() % 200);
+        const Rational eps(mpz_class(1), mpz_class(1) << static_cast<unsigned>(E));
+        SeriesContext& ctx = SeriesContext::get();
+        ctx.E = E;
+        ctx.order = 2;
+        std::vector<S> s;
+        std::vector<Rational> q;
+        const mpz_class base = random_int(100);
+        for (int i = 0; i < 6; ++i) {  // atoms: base or random at order 0, plus a tiny part
+            const mpz_class c0 = (i % 2 == 0) ? base : random_int(static_cast<int>(1 + rng() % 100));
+            const mpz_class c1 = (rng() % 3 == 0) ? mpz_class(0) : random_int(static_cast<int>(1 + rng() % 50));
+            s.push_back(S::term(to_fixed(c0), 0) + S::term(to_fixed(c1), 1));
+            q.push_back(Rational(c0) + Rational(c1) * eps);
+        }
+        for (int step = 0; step < 12; ++step) {
+            const std::size_t a = rng() % s.size(), b = rng() % s.size(), c = rng() % s.size();
+            const int op = static_cast<int>(rng() % 4);
+            FixedOverflow::flag() = false;
+            ctx.undecided = false;
+            // op 3: (a·b)·c − a·(b·c), exactly 0, with different dropped terms on each side.
+            const S r = op == 0   ? S(s[a] + s[b])
+                        : op == 1 ? S(s[a] - s[b])
+                        : op == 2 ? S(s[a] * s[b])
+                                  : S(S(s[a] * s[b]) * s[c] - s[a] * S(s[b] * s[c]));
+            const Rational rq = op == 0   ? Rational(q[a] + q[b])
+                                : op == 1 ? Rational(q[a] - q[b])
+                                : op == 2 ? Rational(q[a] * q[b])
+                                          : Rational(0);
+            if (FixedOverflow::flag()) break;  // coefficients past 16 limbs: the program ends
+            const int sign = sgn(r);
+            if (ctx.undecided) {
+                ++undecided;
+            } else {
+                ++decided;
+                ASSERT_EQ(sign, sgn(rq)) << "program " << program << " step " << step << " op " << op << " E " << E;
+            }
+            s.push_back(r);
+            q.push_back(rq);
+        }
+    }
+    std::printf("EpsilonSeries: %ld signs decided, %ld undecided\n", decided, undecided);
+    EXPECT_GT(decided, 3000);
+    EXPECT_GT(undecided, 300);
+}
+
+// Inputs of two scales (a tiny axis component beside the others, tiny lengths beside the others, both)
+// decided in EpsilonSeries: the answer agrees with the oracle, and nearly every such query is decided
+// there. The touching generator's cases get a tiny tilt (a zero axis component made 2^−k·m, k from 300
+// to 1074) and, in a third of them, a zero length made tiny; the adversarial set's subnormal tilts
+// come as generated.
+TEST(ExactStage, TwoScaleInputsAgreeWithOracle) {
+    const std::uint64_t seed = 2109;
+    TouchingGenerator gen(seed);
+    std::mt19937_64 rng(seed);
+    long tried = 0, decided = 0, wrong = 0;
+    auto check = [&](const Case& c, const std::string& where) {
+        const std::optional<bool> got = with_box(c, [](const auto& b, const Cylinder<double>& cyl) -> std::optional<bool> {
+            if constexpr (std::is_same_v<std::decay_t<decltype(b)>, OrientedBox<double>>) {
+                int perm[3], sign[3];
+                if (!exact::integer::signed_permutation(b.axes, perm, sign)) return std::nullopt;
+            }
+            return exact::integer::answer_two_scale(b, cyl);
+        });
+        ++tried;
+        if (!got) return;
+        ++decided;
+        const bool want = oracle_answer(c);
+        if (*got != want && ++wrong <= 10)
+            ADD_FAILURE() << where << ": EpsilonSeries stage answered " << *got << ", oracle " << want << "\n  "
+                          << describe(c);
+    };
+    const long n = scaled(1500);
+    for (long i = 0; i < n; ++i) {
+        Case c = gen.next();
+        if (c.kind == BoxKind::oriented) {
+            int perm[3], sign[3];
+            if (!exact::integer::signed_permutation(c.oriented.axes, perm, sign)) continue;
+        }
+        Vec3<double>& axis = c.cylinder.axis;
+        int zero = -1;
+        for (int k = 0; k < 3; ++k)
+            if (axis[k] == 0) zero = k;
+        if (zero < 0) continue;
+        const int k = 300 + static_cast<int>(rng() % 775);
+        const double tiny = std::ldexp(static_cast<double>(1 + rng() % 1000), -k);
+        axis[zero] = (rng() & 1) ? tiny : -tiny;
+        if (i % 3 == 0) {  // a zero centre coordinate made tiny too
+            for (int j = 0; j < 3; ++j)
+                if (c.cylinder.center[j] == 0) {
+                    c.cylinder.center[j] = std::ldexp(static_cast<double>(1 + rng() % 7), -1000 - static_cast<int>(rng() % 70));
+                    break;
+                }
+        }
+        check(c, "touching seed " + std::to_string(seed) + " case " + std::to_string(i) + " tilted");
+    }
+    std::mt19937_64 adv(0xb0c5c706);
+    for (int i = 0; i < 2048; ++i) {
+        const Case c = adversarial_case(adv);
+        if (c.kind == BoxKind::oriented) continue;
+        const Vec3<double>& a = c.cylinder.axis;
+        const bool subnormal = (a[0] != 0 && std::fabs(a[0]) < 0x1p-1022) || (a[1] != 0 && std::fabs(a[1]) < 0x1p-1022) ||
+                               (a[2] != 0 && std::fabs(a[2]) < 0x1p-1022);
+        if (subnormal) check(c, "adversarial seed 0xb0c5c706 case " + std::to_string(i));
+    }
+    std::printf("two scales: %ld queries, %ld decided in EpsilonSeries, %ld wrong\n", tried, decided, wrong);
+    EXPECT_EQ(wrong, 0);
+    EXPECT_GT(tried, 300);
+    EXPECT_GT(decided, tried * 9 / 10);
 }
 
 // The stage's two integer types give the same answers wherever the fixed one does not overflow.

@@ -24,11 +24,13 @@
 #include <cstdint>   // std::int64_t
 #include <initializer_list>  // narrow()'s lengths
 #include <optional>  // not a signed permutation
-#include <type_traits>  // std::is_same_v
+#include <tuple>        // std::tuple_size_v
+#include <type_traits>  // std::is_same_v, std::conditional_t
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/vec3.hpp"
+#include "boxcyl/number/epsilon_series.hpp"
 #include "boxcyl/number/fixed_integer.hpp"
 #include "boxcyl/number/quadratic_integer.hpp"
 #include "boxcyl/number/rational.hpp"  // mpz_class (gmpxx)
@@ -107,16 +109,116 @@ private:
     int emin_ = 0;
 };
 
+// ---- Inputs of two far-apart scales, for runs in EpsilonSeries ----
+
+// Doubles that fall into two groups hundreds of binary orders apart (an axis component of 1e-300
+// beside 1, a box of 1e-300 beside a cylinder of 1e300): the large ones as integers in the unit
+// 2^emin of the large group, the tiny ones as integers times ε = 2^−E in that unit
+// (number/epsilon_series.hpp). Lengths and the axis direction are scaled apart (only the direction of
+// the axis matters), so each group gets its own TwoScale; ε is common: E, set in SeriesContext by the
+// caller, is the smaller of their gaps, and a group whose gap is larger has its large values
+// multiplied by 2^(gap − E) (one more exact scaling) so that its tiny ones stay integers times ε.
+template <std::size_t K>
+class TwoScale {
+public:
+    static constexpr int kGroupBits = 192;  // a group spans at most this many bits
+    static constexpr int kMinGap = 256;     // between the tiny group's top and the large group's bottom
+
+    explicit TwoScale(const std::array<double, K>& xs) {
+        int max_top = 0;
+        bool any = false;
+        for (std::size_t i = 0; i < K; ++i) {
+            v_[i] = dyadic(xs[i]);
+            if (v_[i].m == 0) continue;
+            top_[i] = v_[i].e + static_cast<int>(std::bit_width(magnitude(v_[i])));
+            max_top = any ? std::max(max_top, top_[i]) : top_[i], any = true;
+        }
+        if (!any) return;  // all zero: one (empty) group
+        bool first_big = true, any_tiny = false;
+        int tiny_top = 0;
+        for (std::size_t i = 0; i < K; ++i) {
+            if (v_[i].m == 0) continue;
+            tiny_[i] = top_[i] < max_top - kGroupBits / 2;
+            if (!tiny_[i]) {
+                big_unit_ = first_big ? v_[i].e : std::min(big_unit_, v_[i].e), first_big = false;
+            } else {
+                tiny_unit_ = any_tiny ? std::min(tiny_unit_, v_[i].e) : v_[i].e;
+                tiny_top = any_tiny ? std::max(tiny_top, top_[i]) : top_[i];
+                any_tiny = true;
+            }
+        }
+        if (max_top - big_unit_ > kGroupBits) ok_ = false;
+        if (any_tiny) {
+            if (tiny_top - tiny_unit_ > kGroupBits || big_unit_ - tiny_top < kMinGap) ok_ = false;
+            gap_ = big_unit_ - tiny_unit_;
+        }
+    }
+
+    // Whether the values form one group, or two groups kMinGap apart, each spanning at most kGroupBits.
+    bool ok() const { return ok_; }
+    // E of this group's own split (−1: one group).
+    int gap() const { return gap_; }
+
+    // x_i in EpsilonSeries Z with SeriesContext's E (at most gap()).
+    template <class Z>
+    Z integer(std::size_t i) const {
+        const Dyadic& v = v_[i];
+        if (v.m == 0) return Z(0);
+        typename Z::Coefficient c(v.m);
+        if (tiny_[i]) {
+            c <<= static_cast<unsigned>(v.e - tiny_unit_);
+            return Z::term(c, 1);
+        }
+        const int widen = gap_ < 0 ? 0 : gap_ - SeriesContext::get().E;
+        c <<= static_cast<unsigned>(v.e - big_unit_ + widen);
+        return Z::term(c, 0);
+    }
+    template <class Z>
+    Vec3<Z> integers(std::size_t first) const {
+        return {integer<Z>(first), integer<Z>(first + 1), integer<Z>(first + 2)};
+    }
+
+private:
+    static std::uint64_t magnitude(const Dyadic& v) { return static_cast<std::uint64_t>(v.m < 0 ? -v.m : v.m); }
+
+    std::array<Dyadic, K> v_{};
+    std::array<int, K> top_{};
+    std::array<bool, K> tiny_{};
+    int big_unit_ = 0, tiny_unit_ = 0, gap_ = -1;
+    bool ok_ = true;
+};
+
+template <class Z>
+inline constexpr bool is_epsilon_series = false;
+template <class C, int M>
+inline constexpr bool is_epsilon_series<EpsilonSeries<C, M>> = true;
+
+// The scaling of K doubles to integers for the integer type Z.
+template <class Z, std::size_t K>
+using ScaleFor = std::conditional_t<is_epsilon_series<Z>, TwoScale<K>, Scale<K>>;
+
 // The direction D as integers with one common power of two removed (the smallest numbers for it).
 template <class Z>
 Vec3<Z> integer_direction(const Vec3<double>& axis) {
-    return Scale<3>({axis[0], axis[1], axis[2]}).integers<Z>(0);
+    return ScaleFor<Z, 3>({axis[0], axis[1], axis[2]}).template integers<Z>(0);
+}
+
+// The lengths of each problem, in the order problem() reads them.
+inline std::array<double, 11> lengths(const AlignedBox<double>& b, const Cylinder<double>& c) {
+    return {b.min[0], b.min[1], b.min[2], b.max[0], b.max[1], b.max[2], c.center[0], c.center[1], c.center[2],
+            c.radius, c.height};
+}
+inline std::array<double, 8> lengths(const CanonicalBox<double>& b, const Cylinder<double>& c) {
+    return {b.extents[0], b.extents[1], b.extents[2], c.center[0], c.center[1], c.center[2], c.radius, c.height};
+}
+inline std::array<double, 11> lengths(const OrientedBox<double>& b, const Cylinder<double>& c) {
+    return {b.center[0], b.center[1], b.center[2], b.extents[0], b.extents[1], b.extents[2], c.center[0],
+            c.center[1], c.center[2], c.radius, c.height};
 }
 
 template <class Z>
 Problem<Z> problem(const AlignedBox<double>& b, const Cylinder<double>& c) {
-    const Scale<11> s({b.min[0], b.min[1], b.min[2], b.max[0], b.max[1], b.max[2], c.center[0], c.center[1],
-                       c.center[2], c.radius, c.height});
+    const ScaleFor<Z, 11> s(lengths(b, c));
     Problem<Z> p;
     // Lengths ×2: E = max − min, C = 2·centre − (min + max), R = 2r, H = h.
     for (std::size_t i = 0; i < 3; ++i) {
@@ -132,8 +234,7 @@ Problem<Z> problem(const AlignedBox<double>& b, const Cylinder<double>& c) {
 
 template <class Z>
 Problem<Z> problem(const CanonicalBox<double>& b, const Cylinder<double>& c) {
-    const Scale<8> s({b.extents[0], b.extents[1], b.extents[2], c.center[0], c.center[1], c.center[2], c.radius,
-                      c.height});
+    const ScaleFor<Z, 8> s(lengths(b, c));
     Problem<Z> p;
     for (std::size_t i = 0; i < 3; ++i) {
         p.E[i] = Z(2) * s.template integer<Z>(i);
@@ -169,8 +270,7 @@ template <class Z>
 std::optional<Problem<Z>> problem(const OrientedBox<double>& b, const Cylinder<double>& c) {
     int perm[3], sign[3];
     if (!signed_permutation(b.axes, perm, sign)) return std::nullopt;
-    const Scale<11> s({b.center[0], b.center[1], b.center[2], b.extents[0], b.extents[1], b.extents[2],
-                       c.center[0], c.center[1], c.center[2], c.radius, c.height});
+    const ScaleFor<Z, 11> s(lengths(b, c));
     const Vec3<Z> D = integer_direction<Z>(c.axis);
     Problem<Z> p;
     for (std::size_t i = 0; i < 3; ++i) {
@@ -453,11 +553,10 @@ namespace boxcyl::exact::integer {
 inline constexpr int kFixedLimbs = 16;
 using Small = FixedInt<kFixedLimbs>;
 
-// The stage in FixedInt<Limbs>: the answer, or nullopt when a value outgrew it (or, for an oriented
-// box, when its frame is not a signed permutation).
-template <int Limbs, class Box>
-std::optional<bool> answer_fixed(const Box& b, const Cylinder<double>& c) {
-    using F = FixedInt<Limbs>;
+// The stage in the integer type F (FixedInt<N>, or EpsilonSeries over FixedInt): the answer, or
+// nullopt when a value outgrew F (or, for an oriented box, when its frame is not a signed permutation).
+template <class F, class Box>
+std::optional<bool> answer_in(const Box& b, const Cylinder<double>& c) {
     FixedOverflow::flag() = false;
     auto p = problem<F>(b, c);
     bool r = false;
@@ -473,7 +572,41 @@ std::optional<bool> answer_fixed(const Box& b, const Cylinder<double>& c) {
 }
 template <class Box>
 std::optional<bool> answer_small(const Box& b, const Cylinder<double>& c) {
-    return answer_fixed<kFixedLimbs>(b, c);
+    return answer_in<Small>(b, c);
+}
+
+// Inputs whose range is wide only because some values are tiny beside the others (TwoScale: the
+// lengths, the axis, or both, in two groups hundreds of binary orders apart): the stage in
+// EpsilonSeries over FixedInt — order 2, then order 4 when a sign hung on a higher power of the tiny
+// values, and both again with coefficients twice as wide when one outgrew 16 limbs. nullopt when none
+// decides (the caller runs plain mpz_class) or the inputs are not of two scales.
+template <int Limbs, int Order, class Box>
+std::optional<bool> answer_series(const Box& b, const Cylinder<double>& c, int E, bool& overflow) {
+    SeriesContext& ctx = SeriesContext::get();
+    ctx.E = E;
+    ctx.order = Order;
+    ctx.undecided = false;
+    const std::optional<bool> r = answer_in<EpsilonSeries<FixedInt<Limbs>, Order>>(b, c);
+    overflow = FixedOverflow::flag();
+    if (!r || overflow || ctx.undecided) return std::nullopt;
+    return r;
+}
+
+template <class Box>
+std::optional<bool> answer_two_scale(const Box& b, const Cylinder<double>& c) {
+    const TwoScale<std::tuple_size_v<decltype(lengths(b, c))>> L(lengths(b, c));
+    const TwoScale<3> D({c.axis[0], c.axis[1], c.axis[2]});
+    if (!L.ok() || !D.ok() || (L.gap() < 0 && D.gap() < 0)) return std::nullopt;
+    const int E = L.gap() < 0 ? D.gap() : D.gap() < 0 ? L.gap() : std::min(L.gap(), D.gap());
+    bool overflow = false;
+    if (const std::optional<bool> r = answer_series<16, 2>(b, c, E, overflow)) return r;
+    if (!overflow) {
+        if (const std::optional<bool> r = answer_series<16, 4>(b, c, E, overflow)) return r;
+        if (!overflow) return std::nullopt;
+    }
+    if (const std::optional<bool> r = answer_series<32, 2>(b, c, E, overflow)) return r;
+    if (overflow) return std::nullopt;
+    return answer_series<32, 4>(b, c, E, overflow);
 }
 
 // FixedInt first, mpz_class when a value outgrew it. (A second, wider FixedInt tier measured no
@@ -484,10 +617,12 @@ auto answer(const Box& b, const Cylinder<double>& c) {
     const std::optional<bool> fixed = answer_small(b, c);
     if constexpr (std::is_same_v<decltype(problem<mpz_class>(b, c)), Problem<mpz_class>>) {
         if (fixed) return *fixed;
+        if (const std::optional<bool> r = answer_two_scale(b, c)) return *r;
         Problem<mpz_class> big = problem<mpz_class>(b, c);
         return intersects(big);
     } else {
         if (fixed) return fixed;
+        if (const std::optional<bool> r = answer_two_scale(b, c)) return r;
         std::optional<Problem<mpz_class>> big = problem<mpz_class>(b, c);
         if (!big) return std::optional<bool>();
         return std::optional<bool>(intersects(*big));

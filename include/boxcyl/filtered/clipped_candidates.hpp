@@ -212,7 +212,8 @@ private:
         const int lo = s < s1 ? s : s1, hi = s ^ s1 ^ lo;
         const int m = (hi ^ lo) == 1 ? 0 : (hi ^ lo) == 2 ? 1 : 2;  // the edge runs along a_m from lo
         const int along = (lo & ((1 << m) - 1)) | ((lo >> (m + 1)) << m);  // lo's other two bits
-        const std::size_t slot = static_cast<std::size_t>((4 * m + along) * 2 + (sigma > 0 ? 1 : 0));
+        const int slot_index = (4 * m + along) * 2 + (sigma > 0 ? 1 : 0);  // < 24
+        const auto slot = static_cast<std::size_t>(slot_index);
         if (!(known_ >> slot & 1u)) {
             const std::size_t i = static_cast<std::size_t>(lo), j = static_cast<std::size_t>(hi);
             const N lambda = (N(sigma) * p_.H - T_[i]) / (T_[j] - T_[i]);

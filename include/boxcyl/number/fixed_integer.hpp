@@ -9,6 +9,7 @@
 #include <gmpxx.h>  // mpz_class, for to_mpz
 
 #include <algorithm>  // std::copy_n, std::copy_backward, std::fill_n
+#include <bit>        // std::bit_width
 #include <concepts>   // std::signed_integral
 #include <cstddef>    // std::size_t
 #include <cstdint>    // std::int64_t
@@ -89,6 +90,12 @@ public:
         if (r.limb_[n - 1] == 0) --n;
         r.size_ = negative ? -n : n;
         return r;
+    }
+
+    // Bits of |x| (0 for 0).
+    int bit_length() const {
+        const int n = abs_size();
+        return n == 0 ? 0 : (n - 1) * GMP_NUMB_BITS + static_cast<int>(std::bit_width(limb_[n - 1]));
     }
 
     // The value as an mpz_class (tests and messages).
