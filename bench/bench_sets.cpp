@@ -53,9 +53,10 @@ constexpr const char* kBuild = "with the middle stage";
 constexpr const char* kBuild = "without the middle stage (BOXCYL_MIDDLE_STAGE=0)";
 #endif
 
-enum Stage { s0, snarrow, s0b, s1b, smiddle, sdegenerate, sexact, kStages };
+enum Stage { s0, snarrow, s0b, s1b, stwoscale, smiddle, sdegenerate, sexact, kStages };
 constexpr const char* kStageName[kStages] = {"0 semi-static",          "exact, narrow inputs",
                                              "0b witness search",      "1 Bounded (not near touching)",
+                                             "exact, narrow two-scale inputs",
                                              "middle (double-double)", "degenerate-shape certificates",
                                              "exact"};
 
@@ -74,6 +75,7 @@ Stage deciding_stage(const Box& box, const Cylinder<double>& cyl) {
     if (exact::integer::answer_if_narrow(box, cyl)) return snarrow;
     if (in_range && f::witness_search::decide(p, box, cyl)) return s0b;
     if (!f::detail::looks_near_touching(box, cyl, p, in_range) && f::detail::filter<Bounded>(box, cyl)) return s1b;
+    if (exact::integer::answer_if_narrow_two_scale(box, cyl)) return stwoscale;
     if (f::detail::middle(box, cyl)) return smiddle;
     if (f::detail::degenerate(box, cyl)) {
         Vec3<double> a0;

@@ -124,17 +124,21 @@ was measured in):
    tests and the axis segment's distance from the box (`looks_near_touching` in filtered.hpp). Far from
    touching it decides nearly everything stage 0 leaves, at a third of the middle stage's cost (the
    table *the same on the queries stage 1's Bounded run decides*); near touching it would only fail.
-5. **The middle stage**, on double-double enclosures with a running error bound (about 2^-100 relative
+5. **The exact stage for narrow inputs of two scales**: a subnormal axis component beside 1, a box of
+   2^-1000 at a cylinder of 2^1000, when each group of values is narrow. Exact integers in powers of a
+   tiny ε (docs/robustness.md §11) answer these in about a µs; the middle stage would fail on most of
+   them first, since their answers hang on values no double-double enclosure resolves.
+6. **The middle stage**, on double-double enclosures with a running error bound (about 2^-100 relative
    per operation): §4 with its hit certificates for aligned, canonical and signed-permutation boxes;
    for rotated frames the clipped-candidates test (the axis segment through the box, or a box edge
    clipped to the cylinder's slab, or a face cut by a slab plane, within r of the axis: each test
    three-valued, on Bounded first and double-double only where Bounded could not tell), which stays
    decisive when the cylinder axis is parallel to a box edge or face. It decides every query that is
    not exactly touching unless its decision hangs on a subnormal quantity.
-6. **The exact stage**, in integers and Z[√d] after one power-of-two scaling (docs/robustness.md §11):
+7. **The exact stage**, in integers and Z[√d] after one power-of-two scaling (docs/robustness.md §11):
    §4 for aligned, canonical and signed-permutation boxes, the parallelepiped's clipped edges and face
    cuts for rotated frames; fixed-width stack integers (16 limbs, GMP's mpn) while the values fit,
-   mpz otherwise.
+   integers in powers of a tiny ε for inputs of two far-apart scales, mpz otherwise.
 
 Degenerate shapes (flat boxes, disks, segments) that the middle stage leaves get the thorough witness
 search (up to 3 × 256 projection steps) before the exact stage. In the other rounding modes the middle

@@ -424,6 +424,50 @@ TEST(ExactStage, TwoScaleInputsAgreeWithOracle) {
     EXPECT_GT(decided, tried * 9 / 10);
 }
 
+// Narrow inputs of two scales go to the series run before the middle stage: a cylinder lying on the
+// face y = 1 of the cube [−1, 1]³ (axis along x, radius ½ at height 1.5), its axis tilted by a few
+// subnormals either way, its radius and height moved by an ulp; and a cylinder of 2^−1000 on a box of
+// 2^1000.
+TEST(ExactStage, NarrowTwoScaleInputsAnswerBeforeTheMiddleStage) {
+    const double denorm = std::numeric_limits<double>::denorm_min();
+    long checked = 0;
+    for (int k = 1; k <= 3; ++k)
+        for (const double side : {-1.0, 1.0})
+            for (const double r : {0.5, std::nextafter(0.5, 0.0), std::nextafter(0.5, 1.0)})
+                for (const double h : {1.0, std::nextafter(1.0, 2.0)}) {
+                    Case c;
+                    c.kind = BoxKind::aligned;
+                    c.aligned = AlignedBox<double>{{-1, -1, -1}, {1, 1, 1}};
+                    c.cylinder = Cylinder<double>{{0, 1.5, 0}, {1, side * k * denorm, 0}, r, h};
+                    const bool want = oracle_answer(c);
+                    ASSERT_TRUE(exact::integer::narrow_two_scale(c.aligned, c.cylinder)) << describe(c);
+                    EXPECT_EQ(exact::integer::answer_if_narrow_two_scale(c.aligned, c.cylinder), std::optional<bool>(want))
+                        << describe(c);
+                    const filtered::Result got = filtered::query(c.aligned, c.cylinder);
+                    EXPECT_EQ(got.intersect, want) << describe(c);
+                    ++checked;
+                }
+    // A cylinder of 2^−1000 against the face x = 0 of a box of 2^1000: its side on the face (exactly
+    // touching, which only exact arithmetic decides), or an ulp of its radius off it either way.
+    const double s = 0x1p-1000, B = 0x1p+1000;
+    for (const double r : {s, std::nextafter(s, 0.0), std::nextafter(s, 1.0)}) {
+        Case c;
+        c.kind = BoxKind::aligned;
+        c.aligned = AlignedBox<double>{{0, 0, 0}, {B, B, B}};
+        c.cylinder = Cylinder<double>{{-s, s, s}, {0, 0, 1}, r, s};
+        const bool want = oracle_answer(c);
+        EXPECT_EQ(want, r >= s) << describe(c);
+        ASSERT_TRUE(exact::integer::narrow_two_scale(c.aligned, c.cylinder)) << describe(c);
+        EXPECT_EQ(exact::integer::answer_if_narrow_two_scale(c.aligned, c.cylinder), std::optional<bool>(want))
+            << describe(c);
+        const filtered::Result got = filtered::query(c.aligned, c.cylinder);
+        EXPECT_EQ(got.intersect, want) << describe(c);
+        if (r == s) EXPECT_TRUE(got.exact_used) << describe(c);
+        ++checked;
+    }
+    EXPECT_EQ(checked, 39);
+}
+
 // The stage's two integer types give the same answers wherever the fixed one does not overflow.
 TEST(ExactStage, FixedAndMpzStagesAgree) {
     TouchingGenerator gen(2107);

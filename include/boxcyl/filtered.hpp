@@ -11,6 +11,9 @@
 //   0's tests (and two-point forms of them) certify; ≈95% of the queries stage 0 leaves end here.
 //   The exact stage right after stage 0 for narrow inputs (integer or binary-fraction coordinates):
 //   there it costs less than any further filter (exact/integer_inequalities.hpp).
+//   The exact stage before the middle stage for narrow inputs of two scales (a subnormal axis
+//   component beside 1, a box of 2^-1000 at a cylinder of 2^1000, each group narrow): integers in
+//   powers of a tiny ε (number/epsilon_series.hpp) cost less there than the middle stage's failure.
 //   The middle stage (round to nearest): the canonical problem (the box's frame) built in double-double
 //   enclosures with a running error bound (number/double_double.hpp, ≈2^-100 relative per operation),
 //   and the generic linear-inequalities code, algo::linear_inequalities<N>, run on it inside an
@@ -28,7 +31,8 @@
 //   oriented boxes whose axes are not exactly orthonormal are widened by a proved bound η
 //   (docs/robustness.md §4); then a thorough witness search tries once more to certify a hit.
 //   Stage 2, the exact fallback (only when nothing before could decide): linear inequalities evaluated in integers and
-//   Z[√d] after scaling by a power of two (exact/integer_inequalities.hpp: no rationals) for aligned
+//   Z[√d] after scaling by a power of two (exact/integer_inequalities.hpp: no rationals; inputs of two
+//   far-apart scales in powers of ε) for aligned
 //   and canonical boxes and for exactly orthonormal frames (signed permutations: the only exactly
 //   orthonormal frames of doubles), the parallelepiped's clipped edges and face cuts in integers for
 //   other frames (exact/integer_parallelepiped.hpp), the convex-hull method in Q(√d) for flat oriented boxes
@@ -1083,6 +1087,9 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
             // axis components (2^-30, not 2^-200) some hits of segments and disks whose axis has
             // subnormal components.
             if (!looks_near_touching(box, cyl, p, in_range)) fast = filter<Bounded>(box, cyl);
+            if (!fast) {  // two-scale inputs whose groups are narrow: exact costs less than the middle stage
+                if (const std::optional<bool> e = exact::integer::answer_if_narrow_two_scale(box, cyl)) return {*e, true};
+            }
             if (!fast) fast = middle(box, cyl);
             if (!fast && degenerate(box, cyl)) {
                 Vec3<double> a0;
