@@ -120,10 +120,12 @@ was measured in):
 3. **Stage 0b**, the witness search: a few projection steps find a separating direction or a witness
    point that stage 0's tests certify; most of what stage 0 leaves on random data.
 4. **Stage 1's Bounded run** (§4 on a double with a running error bound, with the hit certificates),
-   only for queries that do not look near touching: a plain-double hint from stage 0's separating-axis
-   tests and the axis segment's distance from the box (`looks_near_touching` in filtered.hpp). Far from
-   touching it decides nearly everything stage 0 leaves, at a third of the middle stage's cost (the
-   table *the same on the queries stage 1's Bounded run decides*); near touching it would only fail.
+   only for queries that do not look near touching (`looks_near_touching` in filtered.hpp: a
+   plain-double hint from stage 0's separating-axis tests, the axis segment's distance from the box,
+   and whether a rounded answer changes when the cylinder grows or shrinks by 2^-30 of the scale), and
+   not for turned frames, whose middle stage runs on Bounded first anyway. Far from touching it
+   decides nearly everything stage 0 leaves, at a third of the middle stage's cost (the table *the
+   same on the queries stage 1's Bounded run decides*); near touching it would only fail.
 5. **The exact stage for narrow inputs of two scales**: a subnormal axis component beside 1, a box of
    2^-1000 at a cylinder of 2^1000, when each group of values is narrow. Exact integers in powers of a
    tiny ε (docs/robustness.md §11) answer these in about a µs; the middle stage would fail on most of

@@ -282,7 +282,7 @@ TEST(ClippedCandidates, RandomAndBoundaryQueriesAgreeWithOracle) {
 bool hint(const AlignedBox<double>& b, const Cylinder<double>& c) {
     filtered::semi_static::Problem p;
     EXPECT_TRUE(filtered::semi_static::problem(b, c, p));
-    return filtered::witness_search::near_touching(p, b);
+    return filtered::detail::looks_near_touching(b, c, p, true);
 }
 
 TEST(NearTouchingHint, ContactsAreNearFarQueriesAreNot) {
@@ -305,6 +305,42 @@ TEST(NearTouchingHint, ContactsAreNearFarQueriesAreNot) {
         {{4, 0, 0}, {0, 1, 1}, 2, 1},
     };
     for (const Cylinder<double>& c : far) EXPECT_FALSE(hint(box, c)) << filtered::detail::describe(c);
+    // Near, but shown by no separating axis and not by the axis segment's distance: one-ulp boundary
+    // pairs (radius, then height bisected over adjacent doubles) of oblique cylinders against random
+    // boxes. The rounded answer changes when the cylinder grows or shrinks by 2^-30 of the scale.
+    struct Pair {
+        AlignedBox<double> box;
+        Cylinder<double> miss, hit;
+    };
+    const Pair pairs[] = {
+        {{{-0x1.0ce9b6ef54438p-2, 0x1.63b1d3777b41ep-2, -0x1.49e3034b4b11ap+0},
+          {0x1.c2ff61ffbdf28p-1, 0x1.83d5757564bf8p+0, 0x1.20b5f7cd0bb98p-4}},
+         {{-0x1.a0357fdcbabe4p-1, -0x1.e27ef13498603p+0, 0x1.bdbe2bc749c3p-1},
+          {-0x1.9f3c36fd30789p-1, 0x1.29a25dd304bd1p-1, 0x1.0dd2d075ada96p-4}, 0x1.539fb43d5534bp+1, 0x1.072d9f5b3023bp-1},
+         {{-0x1.a0357fdcbabe4p-1, -0x1.e27ef13498603p+0, 0x1.bdbe2bc749c3p-1},
+          {-0x1.9f3c36fd30789p-1, 0x1.29a25dd304bd1p-1, 0x1.0dd2d075ada96p-4}, 0x1.539fb43d5534cp+1, 0x1.072d9f5b3023bp-1}},
+        {{{-0x1.c69e268b29d93p+0, -0x1.8d5e636a4470cp+0, -0x1.aa99449209723p-2},
+          {-0x1.7fa9460cc1b6p-5, 0x1.18b57afdd1682p-2, 0x1.ed32093977f3ep-3}},
+         {{-0x1.28083ba462dap-3, -0x1.774bf573d4142p+0, -0x1.5178875d5f264p-1},
+          {0x1.9e60aac0a28dap-2, 0x1.5968981333d42p-2, 0x1.b3308cc86a12bp-1}, 0x1.c84d68a853c4bp-2, 0x1.e1592685d8e7p-5},
+         {{-0x1.28083ba462dap-3, -0x1.774bf573d4142p+0, -0x1.5178875d5f264p-1},
+          {0x1.9e60aac0a28dap-2, 0x1.5968981333d42p-2, 0x1.b3308cc86a12bp-1}, 0x1.c84d68a853c4bp-2, 0x1.e1592685d8e71p-5}},
+    };
+    for (const Pair& pair : pairs)
+        for (const Cylinder<double>& c : {pair.miss, pair.hit}) {
+            filtered::semi_static::Problem p;
+            ASSERT_TRUE(filtered::semi_static::problem(pair.box, c, p));
+            EXPECT_FALSE(filtered::witness_search::near_touching(p, pair.box)) << filtered::detail::describe(c);
+            EXPECT_TRUE(filtered::detail::answer_moves(pair.box, c)) << filtered::detail::describe(c);
+            EXPECT_TRUE(hint(pair.box, c)) << filtered::detail::describe(c);
+            Case k;
+            k.kind = BoxKind::aligned;
+            k.aligned = pair.box;
+            k.cylinder = c;
+            EXPECT_EQ(filtered::intersects(pair.box, c), oracle_answer(k)) << describe(k);
+        }
+    EXPECT_FALSE(filtered::intersects(pairs[0].box, pairs[0].miss));
+    EXPECT_TRUE(filtered::intersects(pairs[0].box, pairs[0].hit));
 }
 
 // ---- The default query on the near-touching sets ----
