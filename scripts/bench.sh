@@ -118,7 +118,8 @@ was measured in):
 2. **The exact stage for narrow inputs**: integer or binary-fraction coordinates (voxel and block-model
    grids, CAD) go straight to exact integer arithmetic, which costs less there than any further filter.
 3. **Stage 0b**, the witness search: a few projection steps find a separating direction or a witness
-   point that stage 0's tests certify; most of what stage 0 leaves on random data.
+   point that stage 0's tests certify; most of what stage 0 leaves on random data. Skipped near
+   touching (both plain-double hints of `looks_near_touching` below), where it can only fail.
 4. **Stage 1's Bounded run** (§4 on a double with a running error bound, with the hit certificates),
    only for queries that do not look near touching (`looks_near_touching` in filtered.hpp: a
    plain-double hint from stage 0's separating-axis tests, the axis segment's distance from the box,

@@ -1113,7 +1113,13 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
     if (!fast) {  // narrow inputs: the exact stage costs less than stages 0b and 1 (exact/integer_inequalities.hpp)
         if (const std::optional<bool> e = exact::integer::answer_if_narrow(box, cyl)) return {*e, true};
     }
-    if (!fast && in_range) fast = witness_search::decide(p, box, cyl);  // stage 0b
+    // Stage 0b, except near touching in round to nearest: its searched certificates need a margin
+    // there, and fail at most of a µs before the middle stage decides. Near means both plain-double
+    // hints: a separating-axis test or the axis distance near its bound, and a rounded answer that
+    // changes when the cylinder grows or shrinks by 2^-30 of the scale — degenerate shapes (a flat box,
+    // a segment) meet the first alone at a margin that stage 0b certifies.
+    const bool near = !fast && in_range && middle_runs() && witness_search::near_touching(p, box) && answer_moves(box, cyl);
+    if (!fast && in_range && !near) fast = witness_search::decide(p, box, cyl);  // stage 0b
     if (!fast) {
         if (middle_runs()) {
             // In round to nearest the middle stage decides everything stage 1 would, and more. Near
@@ -1127,7 +1133,7 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
             // problem (a flat box crossed by a thick disk), and stage 1's coarser zeroing of tiny
             // axis components (2^-30, not 2^-200) some hits of segments and disks whose axis has
             // subnormal components.
-            if (bounded_first(box, cyl, p, in_range)) fast = filter<Bounded>(box, cyl);
+            if (!near && bounded_first(box, cyl, p, in_range)) fast = filter<Bounded>(box, cyl);
             if (!fast) {  // two-scale inputs whose groups are narrow: exact costs less than the middle stage
                 if (const std::optional<bool> e = exact::integer::answer_if_narrow_two_scale(box, cyl)) return {*e, true};
             }
