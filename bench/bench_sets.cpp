@@ -10,6 +10,9 @@
 //   degenerate   4096 random queries of CaseGenerator's degenerate profile (seed 0xb0c5c707: scales
 //                2^±600, zero sizes, sizes 2^±40 apart), where stage 0 leaves many queries far from
 //                touching to stage 1
+//   uniform      4096 random queries of CaseGenerator's uniform profile (seed 0xb0c5c708: plain data,
+//                no zero sizes or tiny components), and 512 one-ulp boundary pairs of it (seed
+//                0xb0c5c709): a second generator's mix, for the ratios not to rest on one
 // Columns per set: the default query (`intersects(box, cyl)`), the same pipeline without the middle
 // stage (stage 1's undecided queries go straight to the exact stage, as before the middle stage
 // existed: "without middle"), and plain double §4 (`{Algorithm::inequalities, Arithmetic::float64}`).
@@ -349,13 +352,15 @@ int main(int argc, char** argv) {
     if (benchmark::ReportUnrecognizedArguments(cargc, cargs.data())) return 1;
 
     std::fprintf(stderr, "generating the sets (the boundary pairs are found by bisection with the oracle: about a minute)...\n");
-    std::vector<Set> sets(6);
+    std::vector<Set> sets(8);
     sets[0].name = "random", sets[0].title = "random (seed 0xb0c5c701)";
     sets[1].name = "boundary", sets[1].title = "one-ulp boundary pairs (seed 0xb0c5c702)";
     sets[2].name = "touching", sets[2].title = "exactly touching and one-ulp neighbours (seed 0xb0c5c705)";
     sets[3].name = "adversarial", sets[3].title = "adversarial near-touching mix (seed 0xb0c5c706)";
     sets[4].name = "voxels", sets[4].title = "voxels touching a cylinder (radius 8, unit cells)";
     sets[5].name = "degenerate", sets[5].title = "random, degenerate profile (seed 0xb0c5c707)";
+    sets[6].name = "uniform", sets[6].title = "random, uniform profile (seed 0xb0c5c708)";
+    sets[7].name = "uniform_boundary", sets[7].title = "one-ulp boundary pairs, uniform profile (seed 0xb0c5c709)";
     {
         boxcyl::testing::CaseGenerator gen(0xb0c5c701);
         for (int i = 0; i < 4096; ++i) sets[0].cases.push_back(gen.next());
@@ -382,6 +387,20 @@ int main(int argc, char** argv) {
     {
         boxcyl::testing::CaseGenerator gen(0xb0c5c707, boxcyl::testing::Profile::degenerate);
         for (int i = 0; i < 4096; ++i) sets[5].cases.push_back(gen.next());
+    }
+    {
+        boxcyl::testing::CaseGenerator gen(0xb0c5c708, boxcyl::testing::Profile::uniform);
+        for (int i = 0; i < 4096; ++i) sets[6].cases.push_back(gen.next());
+    }
+    {
+        boxcyl::testing::CaseGenerator gen(0xb0c5c709, boxcyl::testing::Profile::uniform);
+        while (sets[7].cases.size() < 1024) {
+            Case a, b;
+            boxcyl::testing::Parameter p;
+            if (!boxcyl::testing::boundary_pair(gen, a, b, p)) continue;
+            sets[7].cases.push_back(a);
+            sets[7].cases.push_back(b);
+        }
     }
     for (Set& s : sets) {
         for (const Case& c : s.cases) {

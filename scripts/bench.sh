@@ -87,7 +87,11 @@ The sets:
   the grid node 0 (axis z): its caps and side touch cell faces exactly;
 - **degenerate**: 4096 random queries of the generator's degenerate profile (scales 2^±600, zero sizes,
   sizes 2^±40 apart within a query): random data where stage 0 leaves many queries, far from
-  touching, to the later stages.
+  touching, to the later stages;
+- **uniform** and **uniform boundary**: 4096 random queries of the generator's uniform profile (plain
+  data: scales 2^±4, box extents in [0.05, 2], radius and height in [0.1, 3], axis components uniform
+  in [−1, 1], no zero sizes or tiny components), and 512 one-ulp boundary pairs of it: a second mix, so
+  that no ratio rests on one generator's choices.
 
 Columns: *default* is \`boxcyl::intersects(box, cyl)\`; *without middle* is the same pipeline with the
 middle stage left out (stage 1's undecided queries go on to stage 1's Interval run, the thorough witness

@@ -7,11 +7,13 @@
 //    products of doubles stay exact; overflow and NaN are undecided, never wrong; comparisons decide
 //    differences far below double's ulp.
 //  * The default query equals the oracle on the exactly touching shapes and their one-ulp neighbours,
-//    on the adversarial near-touching mix and on one-ulp boundary pairs, in all four rounding modes
+//    on the adversarial near-touching mix and on one-ulp boundary pairs (of the mixed and of the
+//    uniform profile), in all four rounding modes
 //    (the middle stage declines outside round-to-nearest; the answers must not change). Built a second
 //    time with FMA contraction forced on (tests/CMakeLists.txt: test_middle_fma).
 //  * The hint that orders the middle stage before stage 1's Bounded run near touching
-//    (witness_search::near_touching) on contacts and on queries far from touching.
+//    (looks_near_touching: witness_search::near_touching, then answer_moves) on contacts, on boundary
+//    pairs only the second shows, and on queries far from touching.
 //  * The clipped-candidates test alone (filtered/clipped_candidates.hpp, the middle stage's method for
 //    rotated frames): every answer it gives equals the oracle, on rotated boxes whose face, edge or vertex
 //    a cylinder touches up to a few ulps (axis parallel to a box edge, to a face, or oblique; solid, flat
@@ -381,6 +383,18 @@ const std::vector<Set>& sets() {
                 b.cases.push_back(y);
             }
             r.push_back(std::move(b));
+        }
+        {
+            Set u{"uniform-bnd", {}, {}};  // boundary pairs of plain data (the generator's uniform profile)
+            CaseGenerator gen(7204, Profile::uniform);
+            while (u.cases.size() < static_cast<std::size_t>(2 * scaled(100))) {
+                Case x, y;
+                Parameter p;
+                if (!boundary_pair(gen, x, y, p)) continue;
+                u.cases.push_back(x);
+                u.cases.push_back(y);
+            }
+            r.push_back(std::move(u));
         }
         for (Set& set : r)
             for (const Case& c : set.cases) set.want.push_back(oracle_answer(c));

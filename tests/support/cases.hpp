@@ -96,8 +96,10 @@ inline std::array<Vec3<double>, 3> random_signed_permutation(std::mt19937_64& rn
 }
 
 // Profiles: `mixed` is the standard set; `degenerate` stresses magnitudes (scales 2^-600…2^600,
-// sizes that are zero or differ by 2^±40 within a case) on top of the mixed choices.
-enum class Profile { mixed, degenerate };
+// sizes that are zero or differ by 2^±40 within a case) on top of the mixed choices; `uniform` is
+// plain data, unlike the mixed set's choices: scales 2^±4, box extents uniform in [0.05, 2], radius
+// and height in [0.1, 3], axis components uniform in [−1, 1] (no zero sizes, no tiny components).
+enum class Profile { mixed, degenerate, uniform };
 
 class CaseGenerator {
 public:
@@ -107,7 +109,7 @@ public:
 
     Case next() {
         Case c;
-        const int range = profile_ == Profile::degenerate ? 600 : 20;
+        const int range = profile_ == Profile::degenerate ? 600 : profile_ == Profile::uniform ? 4 : 20;
         const double scale = std::ldexp(1.0, static_cast<int>(uniform(-range, range)));  // 2^±20 ≈ 1e-6 … 1e6
         const int kind = static_cast<int>(uniform(0, 3));
         c.kind = kind == 0 ? BoxKind::aligned : kind == 1 ? BoxKind::oriented : BoxKind::canonical;
@@ -149,6 +151,7 @@ public:
 
 private:
     double extent_factor() {
+        if (profile_ == Profile::uniform) return uniform(0.05, 2.0);
         if (profile_ == Profile::degenerate && uniform(0, 1) < 0.3) return std::ldexp(uniform(0.5, 1.0), uniform(0, 1) < 0.5 ? -40 : 40);
         switch (static_cast<int>(uniform(0, 10))) {
             case 0: return 0.0;                       // flat
@@ -157,6 +160,7 @@ private:
         }
     }
     double length_factor() {
+        if (profile_ == Profile::uniform) return uniform(0.1, 3.0);
         if (profile_ == Profile::degenerate && uniform(0, 1) < 0.3) return std::ldexp(uniform(0.5, 1.0), uniform(0, 1) < 0.5 ? -40 : 40);
         switch (static_cast<int>(uniform(0, 12))) {
             case 0: return 0.0;                       // segment / disk
@@ -166,6 +170,7 @@ private:
         }
     }
     double component() {
+        if (profile_ == Profile::uniform) return uniform(-1.0, 1.0);
         switch (static_cast<int>(uniform(0, 16))) {
             case 0: case 1: return 0.0;
             case 2: return 1e-12 * sign();

@@ -35,6 +35,7 @@ public:
     template <std::signed_integral I>
         requires(sizeof(I) <= sizeof(std::int64_t))
     FixedInt(I v) {  // NOLINT(google-explicit-constructor): integers embed, as in mpz_class
+        limb_[1] = 0;  // never read while size_ ≤ 1; stored so that GCC sees no uninitialised copy
         if (v == 0) return;
         const std::uint64_t mag = v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
         limb_[0] = static_cast<mp_limb_t>(mag);
