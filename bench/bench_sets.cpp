@@ -76,7 +76,7 @@ Stage deciding_stage(const Box& box, const Cylinder<double>& cyl) {
     }
     if (in_range && f::semi_static::decide(p, box, cyl)) return s0;
     if (exact::integer::answer_if_narrow(box, cyl)) return snarrow;
-    const bool near = in_range && f::witness_search::near_touching(p, box) && f::detail::answer_moves(box, cyl);
+    const bool near = in_range && f::semi_static::near_touching(p, box) && f::detail::answer_moves(box, cyl);
     if (in_range && !near && f::witness_search::decide(p, box, cyl)) return s0b;
     if (!near && f::detail::bounded_first(box, cyl, p, in_range) && f::detail::filter<Bounded>(box, cyl)) return s1b;
     if (exact::integer::answer_if_narrow_two_scale(box, cyl)) return stwoscale;

@@ -123,7 +123,8 @@ was measured in):
    grids, CAD) go straight to exact integer arithmetic, which costs less there than any further filter.
 3. **Stage 0b**, the witness search: a few projection steps find a separating direction or a witness
    point that stage 0's tests certify; most of what stage 0 leaves on random data. Skipped near
-   touching (both plain-double hints of `looks_near_touching` below), where it can only fail.
+   touching (a separating-axis test of stage 0 near its bound, and the rounded answer moving under a
+   2^-30 growth or shrinking of the cylinder), where it can only fail.
 4. **Stage 1's Bounded run** (§4 on a double with a running error bound, with the hit certificates),
    only for queries that do not look near touching (`looks_near_touching` in filtered.hpp: a
    plain-double hint from stage 0's separating-axis tests, the axis segment's distance from the box,

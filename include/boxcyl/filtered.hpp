@@ -1114,11 +1114,13 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
         if (const std::optional<bool> e = exact::integer::answer_if_narrow(box, cyl)) return {*e, true};
     }
     // Stage 0b, except near touching in round to nearest: its searched certificates need a margin
-    // there, and fail at most of a µs before the middle stage decides. Near means both plain-double
-    // hints: a separating-axis test or the axis distance near its bound, and a rounded answer that
-    // changes when the cylinder grows or shrinks by 2^-30 of the scale — degenerate shapes (a flat box,
-    // a segment) meet the first alone at a margin that stage 0b certifies.
-    const bool near = !fast && in_range && middle_runs() && witness_search::near_touching(p, box) && answer_moves(box, cyl);
+    // there, and fail at most of a µs before the middle stage decides. Near means two plain-double
+    // hints: one of stage 0's separating-axis tests near its bound (semi_static::near_touching, a few
+    // tens of ns: most of what stage 0 leaves is decided by 0b, which must not pay more), and a rounded
+    // answer that changes when the cylinder grows or shrinks by 2^-30 of the scale — degenerate shapes
+    // (a flat box, a segment) meet the first alone at a margin that stage 0b certifies.
+    const bool near =
+        !fast && in_range && middle_runs() && semi_static::near_touching(p, box) && answer_moves(box, cyl);
     if (!fast && in_range && !near) fast = witness_search::decide(p, box, cyl);  // stage 0b
     if (!fast) {
         if (middle_runs()) {
