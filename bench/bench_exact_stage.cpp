@@ -90,41 +90,37 @@ void counters(benchmark::State& state, std::size_t per_pass) {
     state.counters["queries"] = static_cast<double>(per_pass);
 }
 
-// The exact stage as it is now.
-void exact_stage(benchmark::State& state, Set which) {
+// A stage over one set: every query answered in order, hits counted.
+template <class Stage>
+void over(benchmark::State& state, Set which, Stage&& stage) {
     const std::vector<Case>& cases = set(which);
     for (auto _ : state) {
         long hits = 0;
-        for (const Case& c : cases)
-            hits += with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::detail::exact_answer(b, cyl); });
+        for (const Case& c : cases) hits += with_box(c, stage);
         benchmark::DoNotOptimize(hits);
     }
     counters(state, cases.size());
 }
 
+// The exact stage as it is now.
+void exact_stage(benchmark::State& state, Set which) {
+    over(state, which, [](const auto& b, const Cylinder<double>& cyl) { return filtered::detail::exact_answer(b, cyl); });
+}
+
 // The exact stage in integers without EpsilonSeries: FixedInt, then mpz_class.
 template <class Box>
 bool plain_integer(const Box& b, const Cylinder<double>& c) {
+    if (const std::optional<bool> r = exact::integer::answer_small(b, c)) return *r;
+    auto p = exact::integer::problem<mpz_class>(b, c);
     if constexpr (std::is_same_v<Box, OrientedBox<double>>) {
-        if (const std::optional<bool> r = exact::integer::answer_small(b, c)) return *r;
-        std::optional<exact::integer::Problem<mpz_class>> p = exact::integer::problem<mpz_class>(b, c);
         if (!p) return filtered::detail::exact_answer(b, c);  // a turned frame: the parallelepiped test
         return exact::integer::intersects(*p);
     } else {
-        if (const std::optional<bool> r = exact::integer::answer_small(b, c)) return *r;
-        exact::integer::Problem<mpz_class> p = exact::integer::problem<mpz_class>(b, c);
         return exact::integer::intersects(p);
     }
 }
 void plain_integer_stage(benchmark::State& state, Set which) {
-    const std::vector<Case>& cases = set(which);
-    for (auto _ : state) {
-        long hits = 0;
-        for (const Case& c : cases)
-            hits += with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return plain_integer(b, cyl); });
-        benchmark::DoNotOptimize(hits);
-    }
-    counters(state, cases.size());
+    over(state, which, [](const auto& b, const Cylinder<double>& cyl) { return plain_integer(b, cyl); });
 }
 
 // The exact stage it replaced: §4 in Q(√d) where the canonical frame is exact, §3 in Q(√d) otherwise.
@@ -139,14 +135,7 @@ bool rational_stage(const Box& b, const Cylinder<double>& c) {
     }
 }
 void rational_exact_stage(benchmark::State& state, Set which) {
-    const std::vector<Case>& cases = set(which);
-    for (auto _ : state) {
-        long hits = 0;
-        for (const Case& c : cases)
-            hits += with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return rational_stage(b, cyl); });
-        benchmark::DoNotOptimize(hits);
-    }
-    counters(state, cases.size());
+    over(state, which, [](const auto& b, const Cylinder<double>& cyl) { return rational_stage(b, cyl); });
 }
 
 void query(benchmark::State& state, QueryOptions opt) {

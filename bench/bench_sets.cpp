@@ -367,13 +367,7 @@ int main(int argc, char** argv) {
     }
     {
         boxcyl::testing::CaseGenerator gen(0xb0c5c702);
-        while (sets[1].cases.size() < 1024) {
-            Case a, b;
-            boxcyl::testing::Parameter p;
-            if (!boxcyl::testing::boundary_pair(gen, a, b, p)) continue;
-            sets[1].cases.push_back(a);
-            sets[1].cases.push_back(b);
-        }
+        sets[1].cases = boxcyl::testing::boundary_pairs(gen, 512);
     }
     {
         std::mt19937_64 rng(0xb0c5c705);
@@ -394,13 +388,7 @@ int main(int argc, char** argv) {
     }
     {
         boxcyl::testing::CaseGenerator gen(0xb0c5c709, boxcyl::testing::Profile::uniform);
-        while (sets[7].cases.size() < 1024) {
-            Case a, b;
-            boxcyl::testing::Parameter p;
-            if (!boxcyl::testing::boundary_pair(gen, a, b, p)) continue;
-            sets[7].cases.push_back(a);
-            sets[7].cases.push_back(b);
-        }
+        sets[7].cases = boxcyl::testing::boundary_pairs(gen, 512);
     }
     for (Set& s : sets) {
         for (const Case& c : s.cases) {

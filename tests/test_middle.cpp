@@ -373,28 +373,12 @@ const std::vector<Set>& sets() {
             r.push_back(std::move(a));
         }
         {
-            Set b{"boundary", {}, {}};
             CaseGenerator gen(7203);
-            while (b.cases.size() < static_cast<std::size_t>(2 * scaled(100))) {
-                Case x, y;
-                Parameter p;
-                if (!boundary_pair(gen, x, y, p)) continue;
-                b.cases.push_back(x);
-                b.cases.push_back(y);
-            }
-            r.push_back(std::move(b));
+            r.push_back(Set{"boundary", boundary_pairs(gen, static_cast<std::size_t>(scaled(100))), {}});
         }
         {
-            Set u{"uniform-bnd", {}, {}};  // boundary pairs of plain data (the generator's uniform profile)
-            CaseGenerator gen(7204, Profile::uniform);
-            while (u.cases.size() < static_cast<std::size_t>(2 * scaled(100))) {
-                Case x, y;
-                Parameter p;
-                if (!boundary_pair(gen, x, y, p)) continue;
-                u.cases.push_back(x);
-                u.cases.push_back(y);
-            }
-            r.push_back(std::move(u));
+            CaseGenerator gen(7204, Profile::uniform);  // boundary pairs of plain data
+            r.push_back(Set{"uniform-bnd", boundary_pairs(gen, static_cast<std::size_t>(scaled(100))), {}});
         }
         for (Set& set : r)
             for (const Case& c : set.cases) set.want.push_back(oracle_answer(c));

@@ -4,6 +4,7 @@
 
 #include <algorithm> // std::max
 #include <cmath>     // std::ldexp, std::nextafter, std::cos, std::sin, std::ilogb, std::scalbn
+#include <cstddef>   // std::size_t
 #include <cstdint>   // std::uint64_t
 #include <cstdio>    // std::snprintf
 #include <cstring>   // std::memcpy
@@ -11,6 +12,7 @@
 #include <random>    // std::mt19937_64 and distributions
 #include <string>    // describe()
 #include <utility>   // std::pair
+#include <vector>    // boundary_pairs()
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
@@ -334,6 +336,20 @@ inline bool boundary_pair(CaseGenerator& gen, Case& first, Case& second, Paramet
     first = with_parameter(c, which, x, axis0);
     second = with_parameter(c, which, y, axis0);
     return true;
+}
+
+// `pairs` boundary pairs of the generator's cases, both members of each in turn.
+inline std::vector<Case> boundary_pairs(CaseGenerator& gen, std::size_t pairs) {
+    std::vector<Case> cases;
+    cases.reserve(2 * pairs);
+    while (cases.size() < 2 * pairs) {
+        Case a, b;
+        Parameter which{};
+        if (!boundary_pair(gen, a, b, which)) continue;
+        cases.push_back(a);
+        cases.push_back(b);
+    }
+    return cases;
 }
 
 }  // namespace boxcyl::testing
