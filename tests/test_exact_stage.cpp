@@ -232,8 +232,9 @@ TEST(ExactStage, QuadraticIntegerSignMatchesQField) {
 namespace boxcyl {
 namespace {
 
-// FixedInt against mpz_class on random operands of 0–5 limbs: every result equals mpz's while the
-// overflow flag stays down, and the flag rises exactly when a result needs more limbs than it has.
+// FixedInt against mpz_class on random operands of 0–5 limbs (sums and differences also in place, and
+// onto the operand itself): every result equals mpz's while the overflow flag stays down, and the flag
+// rises exactly when a result needs more limbs than it has.
 TEST(ExactStage, FixedIntMatchesMpz) {
     using F = FixedInt<6>;
     std::mt19937_64 rng(2106);
@@ -251,18 +252,23 @@ TEST(ExactStage, FixedIntMatchesMpz) {
         return std::pair<F, mpz_class>{f, z};
     };
     long checked = 0, overflows = 0;
-    for (int i = 0; i < 20000; ++i) {
+    for (int i = 0; i < 30000; ++i) {
         FixedOverflow::flag() = false;
         auto [a, za] = random_pair();
         auto [b, zb] = random_pair();
         ASSERT_FALSE(FixedOverflow::flag());
-        const int op = static_cast<int>(rng() % 4);
+        // 4–7: in place, also onto the operand itself (x += x, x −= x).
+        const int op = static_cast<int>(rng() % 8);
         F r;
         mpz_class zr;
         switch (op) {
             case 0: r = a + b, zr = za + zb; break;
             case 1: r = a - b, zr = za - zb; break;
             case 2: r = a * b, zr = za * zb; break;
+            case 4: r = a, r += b, zr = za + zb; break;
+            case 5: r = a, r -= b, zr = za - zb; break;
+            case 6: r = a, r += r, zr = za + za; break;
+            case 7: r = a, r -= r, zr = 0; break;
             default: {
                 const unsigned k = static_cast<unsigned>(rng() % 200);
                 r = a, zr = za;
@@ -283,7 +289,7 @@ TEST(ExactStage, FixedIntMatchesMpz) {
         EXPECT_EQ(sgn(r), sgn(zr));
         EXPECT_EQ(cmp(r, a), cmp(zr, za));
     }
-    EXPECT_GT(checked, 10000);
+    EXPECT_GT(checked, 15000);
     EXPECT_GT(overflows, 100);
 }
 
@@ -462,7 +468,9 @@ TEST(ExactStage, NarrowTwoScaleInputsAnswerBeforeTheMiddleStage) {
             << describe(c);
         const filtered::Result got = filtered::query(c.aligned, c.cylinder);
         EXPECT_EQ(got.intersect, want) << describe(c);
-        if (r == s) EXPECT_TRUE(got.exact_used) << describe(c);
+        if (r == s) {
+            EXPECT_TRUE(got.exact_used) << describe(c);
+        }
         ++checked;
     }
     EXPECT_EQ(checked, 39);

@@ -452,7 +452,10 @@ private:
     Q lift(const Z& x) const { return {x, Z(0)}; }
     Vec3<Q> vertex_scaled(int v, const Z& k) const {
         Vec3<Q> p;
-        for (int n = 0; n < 3; ++n) p[n] = lift((v >> n & 1) ? Z(k * p_.E[n]) : Z(-k * p_.E[n]));
+        for (int n = 0; n < 3; ++n) {
+            p[n] = {Z(k * p_.E[n]), Z(0)};
+            if (!(v >> n & 1)) p[n].a = -p[n].a;
+        }
         return p;
     }
     Vec3<Q> center_scaled(const Z& k) const {

@@ -48,6 +48,15 @@ inline int bit_length(const mpz_class& x) {
     return sgn(x) == 0 ? 0 : static_cast<int>(mpz_sizeinbase(x.get_mpz_t(), 2));
 }
 
+// r = x·y into an existing coefficient (r is neither operand): no temporary to copy.
+template <int N>
+void multiply_into(FixedInt<N>& r, const FixedInt<N>& x, const FixedInt<N>& y) {
+    FixedInt<N>::multiply(r, x, y);
+}
+inline void multiply_into(mpz_class& r, const mpz_class& x, const mpz_class& y) {
+    mpz_mul(r.get_mpz_t(), x.get_mpz_t(), y.get_mpz_t());
+}
+
 // C: the coefficients' integer type (FixedInt<N> or mpz_class). M: the highest order a run may ask.
 template <class C, int M>
 class EpsilonSeries {
@@ -98,10 +107,24 @@ public:
         for (int k = 0; k <= r.top_; ++k) r.c_[idx(k)] = -r.c_[idx(k)];
         return r;
     }
-    friend EpsilonSeries operator+(const EpsilonSeries& x, const EpsilonSeries& y) { return add(x, y, false); }
-    friend EpsilonSeries operator-(const EpsilonSeries& x, const EpsilonSeries& y) { return add(x, y, true); }
-    EpsilonSeries& operator+=(const EpsilonSeries& y) { return *this = add(*this, y, false); }
-    EpsilonSeries& operator-=(const EpsilonSeries& y) { return *this = add(*this, y, true); }
+    friend EpsilonSeries operator+(const EpsilonSeries& x, const EpsilonSeries& y) {
+        EpsilonSeries r(x);
+        r.accumulate(y, false);
+        return r;
+    }
+    friend EpsilonSeries operator-(const EpsilonSeries& x, const EpsilonSeries& y) {
+        EpsilonSeries r(x);
+        r.accumulate(y, true);
+        return r;
+    }
+    EpsilonSeries& operator+=(const EpsilonSeries& y) {
+        accumulate(y, false);
+        return *this;
+    }
+    EpsilonSeries& operator-=(const EpsilonSeries& y) {
+        accumulate(y, true);
+        return *this;
+    }
 
     // Terms of order above m are dropped into the remainder: Σ_{i+j>m} |a_i b_j| ε^(i+j) plus the
     // remainders' products are at most ε^(m+1)·(|A|₁ + 2^rem_a)(|B|₁ + 2^rem_b) (ε < 1).
@@ -125,10 +148,12 @@ public:
                 }
                 if (i + j > r.top_) {
                     for (int k = r.top_ + 1; k < i + j; ++k) r.c_[idx(k)] = C(0);
-                    r.c_[idx(i + j)] = x.c_[idx(i)] * y.c_[idx(j)];
+                    multiply_into(r.c_[idx(i + j)], x.c_[idx(i)], y.c_[idx(j)]);
                     r.top_ = i + j;
                 } else {
-                    r.c_[idx(i + j)] += x.c_[idx(i)] * y.c_[idx(j)];
+                    C product;
+                    multiply_into(product, x.c_[idx(i)], y.c_[idx(j)]);
+                    r.c_[idx(i + j)] += product;
                 }
             }
         }
@@ -154,23 +179,31 @@ private:
             if (sgn(c_[idx(k)]) != 0) bits = std::max(bits, bit_length(c_[idx(k)])), ++terms;
         return bits + static_cast<int>(std::bit_width(static_cast<unsigned>(terms)));
     }
-    static EpsilonSeries add(const EpsilonSeries& x, const EpsilonSeries& y, bool negate_y) {
-        EpsilonSeries r;
-        if (x.plain() && y.plain()) {
-            r.c_[0] = negate_y ? C(x.c_[0] - y.c_[0]) : C(x.c_[0] + y.c_[0]);
-            if (sgn(r.c_[0]) != 0) r.top_ = 0;
-            return r;
+    // *this ± y, coefficient by coefficient in place.
+    void accumulate(const EpsilonSeries& y, bool negate_y) {
+        if (plain() && y.plain()) {
+            if (y.top_ < 0) return;
+            if (top_ < 0) {
+                c_[0] = negate_y ? C(-y.c_[0]) : y.c_[0];
+                top_ = 0;
+                return;
+            }
+            if (negate_y) c_[0] -= y.c_[0];
+            else c_[0] += y.c_[0];
+            if (sgn(c_[0]) == 0) top_ = -1;
+            return;
         }
-        r.top_ = std::max(x.top_, y.top_);
-        for (int k = 0; k <= r.top_; ++k) {
-            const bool in_x = k <= x.top_, in_y = k <= y.top_;
-            if (in_x && in_y) r.c_[idx(k)] = negate_y ? C(x.c_[idx(k)] - y.c_[idx(k)]) : C(x.c_[idx(k)] + y.c_[idx(k)]);
-            else if (in_x) r.c_[idx(k)] = x.c_[idx(k)];
-            else r.c_[idx(k)] = negate_y ? C(-y.c_[idx(k)]) : y.c_[idx(k)];
+        for (int k = 0; k <= y.top_; ++k) {
+            if (k <= top_) {
+                if (negate_y) c_[idx(k)] -= y.c_[idx(k)];
+                else c_[idx(k)] += y.c_[idx(k)];
+            } else {
+                c_[idx(k)] = negate_y ? C(-y.c_[idx(k)]) : y.c_[idx(k)];
+            }
         }
-        while (r.top_ >= 0 && sgn(r.c_[idx(r.top_)]) == 0) --r.top_;
-        if (x.rem_ >= 0 || y.rem_ >= 0) r.rem_ = std::max(x.rem_, y.rem_) + 1;
-        return r;
+        top_ = std::max(top_, y.top_);
+        while (top_ >= 0 && sgn(c_[idx(top_)]) == 0) --top_;
+        if (rem_ >= 0 || y.rem_ >= 0) rem_ = std::max(rem_, y.rem_) + 1;
     }
 
     std::array<C, M + 1> c_;  // c_[0..top_] in use; the others are not read

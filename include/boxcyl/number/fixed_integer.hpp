@@ -64,15 +64,40 @@ public:
         r.size_ = -r.size_;
         return r;
     }
-    friend FixedInt operator+(const FixedInt& x, const FixedInt& y) { return add(x, y, false); }
-    friend FixedInt operator-(const FixedInt& x, const FixedInt& y) { return add(x, y, true); }
-    FixedInt& operator+=(const FixedInt& y) { return *this = add(*this, y, false); }
-    FixedInt& operator-=(const FixedInt& y) { return *this = add(*this, y, true); }
+    friend FixedInt operator+(const FixedInt& x, const FixedInt& y) {
+        FixedInt r;
+        add(r, x, y, false);
+        return r;
+    }
+    friend FixedInt operator-(const FixedInt& x, const FixedInt& y) {
+        FixedInt r;
+        add(r, x, y, true);
+        return r;
+    }
+    // In place: GMP's mpn_add and mpn_sub accept the result over their first operand, so no copy of
+    // the limbs (the series arithmetic of the exact stage is mostly these).
+    FixedInt& operator+=(const FixedInt& y) {
+        add(*this, *this, y, false);
+        return *this;
+    }
+    FixedInt& operator-=(const FixedInt& y) {
+        add(*this, *this, y, true);
+        return *this;
+    }
 
     friend FixedInt operator*(const FixedInt& x, const FixedInt& y) {
         FixedInt r;
+        multiply(r, x, y);
+        return r;
+    }
+    // r = x·y written in place (r must not be x or y): the series arithmetic accumulates products
+    // into its coefficients without a temporary.
+    static void multiply(FixedInt& r, const FixedInt& x, const FixedInt& y) {
         int nx = x.abs_size(), ny = y.abs_size();
-        if (nx == 0 || ny == 0) return r;
+        if (nx == 0 || ny == 0) {
+            r.size_ = 0;
+            return;
+        }
         const bool negative = (x.size_ < 0) != (y.size_ < 0);
         if (nx == 1 && ny == 1) {  // the common case, without a call
             const u128 prod = static_cast<u128>(x.limb_[0]) * y.limb_[0];
@@ -80,9 +105,12 @@ public:
             r.limb_[1] = static_cast<mp_limb_t>(prod >> 64);
             const int n = r.limb_[1] != 0 ? 2 : 1;
             r.size_ = negative ? -n : n;
-            return r;
+            return;
         }
-        if (nx + ny > N) return overflowed();
+        if (nx + ny > N) {
+            r = overflowed();
+            return;
+        }
         const FixedInt* a = &x;
         const FixedInt* b = &y;
         if (nx < ny) std::swap(a, b), std::swap(nx, ny);
@@ -90,7 +118,6 @@ public:
         int n = nx + ny;
         if (r.limb_[n - 1] == 0) --n;
         r.size_ = negative ? -n : n;
-        return r;
     }
 
     // Bits of |x| (0 for 0).
@@ -154,21 +181,25 @@ private:
         if (nx == 0) return 0;
         return mpn_cmp(x.limb_, y.limb_, nx);
     }
-    // x + y, or x − y when negate_y.
-    static FixedInt add(const FixedInt& x, const FixedInt& y, bool negate_y) {
+    // r = x + y, or x − y when negate_y. r may be x or y: GMP's mpn_add_n/mpn_sub_n, which mpn_add and
+    // mpn_sub use, allow the result to coincide with an operand, and everything read from x and y is
+    // read before r is written where they alias otherwise.
+    static void add(FixedInt& r, const FixedInt& x, const FixedInt& y, bool negate_y) {
         const int sy = negate_y ? -y.size_ : y.size_;
-        if (y.size_ == 0) return x;
+        if (y.size_ == 0) {
+            if (&r != &x) r = x;
+            return;
+        }
         if (x.size_ == 0) {
-            FixedInt r(y);
+            if (&r != &y) r = y;
             r.size_ = sy;
-            return r;
+            return;
         }
         const FixedInt* a = &x;
         const FixedInt* b = &y;
         int sa = x.size_, sb = sy;
         if (compare_magnitude(x, y) < 0) std::swap(a, b), std::swap(sa, sb);  // |a| ≥ |b|
         const int na = a->abs_size(), nb = b->abs_size();
-        FixedInt r;
         if (na == 1) {  // one limb each (|a| ≥ |b| > 0), without a call
             const mp_limb_t u = a->limb_[0], v = b->limb_[0];
             if ((sa < 0) == (sb < 0)) {
@@ -181,13 +212,17 @@ private:
                 const int n = r.limb_[0] != 0 ? 1 : 0;
                 r.size_ = sa < 0 ? -n : n;
             }
-            return r;
+            return;
         }
         if ((sa < 0) == (sb < 0)) {
+            // The carry limb is written after the sum; r may alias b, whose limbs the sum has read.
             const mp_limb_t carry = mpn_add(r.limb_, a->limb_, na, b->limb_, nb);
             int n = na;
             if (carry != 0) {
-                if (n + 1 > N) return overflowed();
+                if (n + 1 > N) {
+                    r = overflowed();
+                    return;
+                }
                 r.limb_[n++] = carry;
             }
             r.size_ = sa < 0 ? -n : n;
@@ -197,7 +232,6 @@ private:
             while (n > 0 && r.limb_[n - 1] == 0) --n;
             r.size_ = sa < 0 ? -n : n;
         }
-        return r;
     }
 
     int size_ = 0;  // ±(limbs in use), the sign of the number (as mpz)

@@ -37,16 +37,26 @@ public:
     explicit QuadraticRing(Z d) : d_(std::move(d)) {}
     const Z& d() const { return d_; }
 
+    // Sums accumulate in place (+=): for the wide integer types a temporary costs a copy of its limbs.
     QuadInt<Z> mul(const QuadInt<Z>& x, const QuadInt<Z>& y) const {
-        return {Z(x.a * y.a + Z(x.b * y.b) * d_), Z(x.a * y.b + x.b * y.a)};
+        QuadInt<Z> r{Z(x.a * y.a), Z(x.a * y.b)};
+        r.a += Z(x.b * y.b) * d_;
+        r.b += x.b * y.a;
+        return r;
     }
     QuadInt<Z> square(const QuadInt<Z>& x) const {
-        return {Z(x.a * x.a + Z(x.b * x.b) * d_), Z(Z(2) * x.a * x.b)};
+        QuadInt<Z> r{Z(x.a * x.a), Z(Z(2) * x.a * x.b)};
+        r.a += Z(x.b * x.b) * d_;
+        return r;
     }
     QuadInt<Z> dot(const Vec3<QuadInt<Z>>& x, const Vec3<QuadInt<Z>>& y) const {
         QuadInt<Z> s = mul(x[0], y[0]);
-        s = s + mul(x[1], y[1]);
-        return s + mul(x[2], y[2]);
+        for (int n = 1; n < 3; ++n) {
+            const QuadInt<Z> t = mul(x[n], y[n]);
+            s.a += t.a;
+            s.b += t.b;
+        }
+        return s;
     }
     Vec3<QuadInt<Z>> cross(const Vec3<QuadInt<Z>>& x, const Vec3<QuadInt<Z>>& y) const {
         return {mul(x[1], y[2]) - mul(x[2], y[1]), mul(x[2], y[0]) - mul(x[0], y[2]),
