@@ -293,6 +293,16 @@ std::optional<Problem<Z>> problem(const OrientedBox<double>& b, const Cylinder<d
 
 namespace detail {
 
+// Whether this thread's run in Z can no longer give an answer — a FixedInt value overflowed, or a
+// series sign hung beyond the kept order — so that its caller will discard it: the candidates left
+// are not worth computing (a series run that fails at order 2 is repeated at order 4).
+template <class Z>
+bool abandoned() {
+    if constexpr (std::is_same_v<Z, mpz_class>) return false;
+    else if constexpr (is_epsilon_series<Z>) return FixedOverflow::flag() || SeriesContext::get().undecided;
+    else return FixedOverflow::flag();
+}
+
 template <class Z>
 Z abs_of(const Z& x) {
     return sgn(x) < 0 ? Z(-x) : x;
@@ -477,12 +487,14 @@ private:
             }
             T_[v] = t;
         }
-        if (sgn(p_.H) == 0)  // a disk: the face cuts contain every clipped box edge (algo/linear_inequalities.hpp)
-            return face_cut(0, true) || face_cut(0, false) || face_cut(1, true) || face_cut(1, false) ||
-                   face_cut(2, true) || face_cut(2, false);
-        return box_edge(0, 2) || box_edge(1, 2) || box_edge(0, 1) || box_edge(2, 1) || box_edge(1, 0) ||
-               box_edge(2, 0) || face_cut(0, true) || face_cut(0, false) || face_cut(1, true) ||
-               face_cut(1, false) || face_cut(2, true) || face_cut(2, false);
+        // Six box edges, then the six face cuts; a disk has the face cuts only (they contain every
+        // clipped box edge: algo/linear_inequalities.hpp). A run that can no longer answer stops.
+        static constexpr int kEdge[6][2] = {{0, 2}, {1, 2}, {0, 1}, {2, 1}, {1, 0}, {2, 0}};
+        for (int n = sgn(p_.H) == 0 ? 6 : 0; n < 12; ++n) {
+            if (n < 6 ? box_edge(kEdge[n][0], kEdge[n][1]) : face_cut((n - 6) / 2, n % 2 == 0)) return true;
+            if (abandoned<Z>()) return false;
+        }
+        return false;
     }
 
     // The box edge x_i = +e_i, x_j = −e_j along x_k from vertex a to b, clipped to |t| ≤ H. Scaled by
