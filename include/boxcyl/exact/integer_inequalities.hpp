@@ -597,8 +597,12 @@ std::optional<bool> answer_small(const Box& b, const Cylinder<double>& c) {
 // Inputs whose range is wide only because some values are tiny beside the others (TwoScale: the
 // lengths, the axis, or both, in two groups hundreds of binary orders apart): the stage in
 // EpsilonSeries over FixedInt — order 2, then order 4 when a sign hung on a higher power of the tiny
-// values, and both again with coefficients twice as wide when one outgrew 16 limbs. nullopt when none
-// decides (the caller runs plain mpz_class) or the inputs are not of two scales.
+// values. nullopt when neither decides (the caller runs plain mpz_class) or the inputs are not of two
+// scales. The coefficients get kSeriesLimbs limbs: full-precision mantissas make them about 1000 bits
+// long, beyond 16 limbs on some queries, and FixedInt's arithmetic costs what the limbs in use cost, so
+// a narrower first run only risks a wasted one.
+inline constexpr int kSeriesLimbs = 32;
+
 template <int Limbs, int Order, class Box>
 std::optional<bool> answer_series(const Box& b, const Cylinder<double>& c, int E, bool& overflow) {
     SeriesContext& ctx = SeriesContext::get();
@@ -618,14 +622,9 @@ std::optional<bool> answer_two_scale(const Box& b, const Cylinder<double>& c) {
     if (!L.ok() || !D.ok() || (L.gap() < 0 && D.gap() < 0)) return std::nullopt;
     const int E = L.gap() < 0 ? D.gap() : D.gap() < 0 ? L.gap() : std::min(L.gap(), D.gap());
     bool overflow = false;
-    if (const std::optional<bool> r = answer_series<16, 2>(b, c, E, overflow)) return r;
-    if (!overflow) {
-        if (const std::optional<bool> r = answer_series<16, 4>(b, c, E, overflow)) return r;
-        if (!overflow) return std::nullopt;
-    }
-    if (const std::optional<bool> r = answer_series<32, 2>(b, c, E, overflow)) return r;
+    if (const std::optional<bool> r = answer_series<kSeriesLimbs, 2>(b, c, E, overflow)) return r;
     if (overflow) return std::nullopt;
-    return answer_series<32, 4>(b, c, E, overflow);
+    return answer_series<kSeriesLimbs, 4>(b, c, E, overflow);
 }
 
 // FixedInt first, mpz_class when a value outgrew it. (A second, wider FixedInt tier measured no
