@@ -226,6 +226,31 @@ TEST(ExactStage, QuadraticIntegerSignMatchesQField) {
     }
 }
 
+// The ring's dot product, squared norm and square (each with one product by d) against Q(√d).
+TEST(ExactStage, QuadraticRingProductsMatchQField) {
+    std::mt19937_64 rng(2108);
+    std::uniform_int_distribution<long> small(-1000, 1000);
+    for (int i = 0; i < 2000; ++i) {
+        const long d = std::abs(small(rng));
+        const QuadraticRing<mpz_class> ring{mpz_class(d)};
+        const QuadraticField<Rational> field{Rational(d)};
+        Vec3<QuadInt<mpz_class>> x, y;
+        QFRational dot_ref(Rational(0), Rational(0), field), norm_ref = dot_ref;
+        for (std::size_t n = 0; n < 3; ++n) {
+            x[n] = {mpz_class(small(rng)), mpz_class(small(rng))};
+            y[n] = {mpz_class(small(rng)), mpz_class(small(rng))};
+            const QFRational xn(Rational(x[n].a), Rational(x[n].b), field), yn(Rational(y[n].a), Rational(y[n].b), field);
+            dot_ref += xn * yn;
+            norm_ref += xn * xn;
+        }
+        auto in_field = [&field](const QuadInt<mpz_class>& q) { return QFRational(Rational(q.a), Rational(q.b), field); };
+        const QFRational x0(Rational(x[0].a), Rational(x[0].b), field);
+        EXPECT_TRUE(in_field(ring.dot(x, y)) == dot_ref) << "d = " << d << ", case " << i;
+        EXPECT_TRUE(in_field(ring.norm2(x)) == norm_ref) << "d = " << d << ", case " << i;
+        EXPECT_TRUE(in_field(ring.square(x[0])) == x0 * x0) << "d = " << d << ", case " << i;
+    }
+}
+
 }  // namespace
 }  // namespace boxcyl
 

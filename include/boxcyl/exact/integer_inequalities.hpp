@@ -315,16 +315,17 @@ Z abs_of(const Z& x) {
 template <class Z>
 bool segment_within(const QuadraticRing<Z>& ring, const Vec3<Z>& D, const Vec3<QuadInt<Z>>& y0,
                     const Vec3<QuadInt<Z>>& y1, const Z& r2) {
+    // Two identities save products: D × y0 = D × y1 − D × δ, and D·(y0 × δ) = (D × y0)·δ.
     using Q = QuadInt<Z>;
     const Vec3<Q> delta = y1 - y0;
     const Vec3<Q> w = cross(D, delta);
     const Vec3<Q> q1 = cross(D, y1);
     const Z r2d = r2 * ring.d();
-    if (!(ring.sign(ring.dot(q1, w)) > 0)) return ring.sign(ring.dot(q1, q1) - Q{r2d, Z(0)}) <= 0;
-    const Vec3<Q> q0 = cross(D, y0);
-    if (!(ring.sign(ring.dot(q0, w)) < 0)) return ring.sign(ring.dot(q0, q0) - Q{r2d, Z(0)}) <= 0;
-    const Q n = dot(D, ring.cross(y0, delta));
-    const Q ww = ring.dot(w, w);
+    if (!(ring.sign(ring.dot(q1, w)) > 0)) return ring.sign(ring.norm2(q1) - Q{r2d, Z(0)}) <= 0;
+    const Vec3<Q> q0 = q1 - w;
+    if (!(ring.sign(ring.dot(q0, w)) < 0)) return ring.sign(ring.norm2(q0) - Q{r2d, Z(0)}) <= 0;
+    const Q n = ring.dot(q0, delta);
+    const Q ww = ring.norm2(w);
     return ring.sign(ring.square(n) - r2 * ww) <= 0;
 }
 

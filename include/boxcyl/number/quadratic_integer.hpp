@@ -38,29 +38,37 @@ public:
     const Z& d() const { return d_; }
 
     // Sums accumulate in place (+=): for the wide integer types a temporary costs a copy of its limbs.
-    QuadInt<Z> mul(const QuadInt<Z>& x, const QuadInt<Z>& y) const {
-        QuadInt<Z> r{Z(x.a * y.a), Z(x.a * y.b)};
-        r.a += Z(x.b * y.b) * d_;
-        r.b += x.b * y.a;
-        return r;
-    }
     QuadInt<Z> square(const QuadInt<Z>& x) const {
         QuadInt<Z> r{Z(x.a * x.a), Z(Z(2) * x.a * x.b)};
         r.a += Z(x.b * x.b) * d_;
         return r;
     }
+    // x·y = Σa_x·a_y + d·Σb_x·b_y + Σ(a_x·b_y + b_x·a_y)·√d: one product by d, not three.
     QuadInt<Z> dot(const Vec3<QuadInt<Z>>& x, const Vec3<QuadInt<Z>>& y) const {
-        QuadInt<Z> s = mul(x[0], y[0]);
+        QuadInt<Z> r{Z(x[0].a * y[0].a), Z(x[0].a * y[0].b)};
+        r.b += x[0].b * y[0].a;
+        Z bb = x[0].b * y[0].b;
         for (int n = 1; n < 3; ++n) {
-            const QuadInt<Z> t = mul(x[n], y[n]);
-            s.a += t.a;
-            s.b += t.b;
+            r.a += x[n].a * y[n].a;
+            r.b += x[n].a * y[n].b;
+            r.b += x[n].b * y[n].a;
+            bb += x[n].b * y[n].b;
         }
-        return s;
+        r.a += bb * d_;
+        return r;
     }
-    Vec3<QuadInt<Z>> cross(const Vec3<QuadInt<Z>>& x, const Vec3<QuadInt<Z>>& y) const {
-        return {mul(x[1], y[2]) - mul(x[2], y[1]), mul(x[2], y[0]) - mul(x[0], y[2]),
-                mul(x[0], y[1]) - mul(x[1], y[0])};
+    // x·x likewise, with Σ2ab for the √d part.
+    QuadInt<Z> norm2(const Vec3<QuadInt<Z>>& x) const {
+        QuadInt<Z> r{Z(x[0].a * x[0].a), Z(x[0].a * x[0].b)};
+        Z bb = x[0].b * x[0].b;
+        for (int n = 1; n < 3; ++n) {
+            r.a += x[n].a * x[n].a;
+            r.b += x[n].a * x[n].b;
+            bb += x[n].b * x[n].b;
+        }
+        r.a += bb * d_;
+        r.b += r.b;
+        return r;
     }
 
     // The exact sign of a + b√d: equal signs decide at once, otherwise a² is compared with b²·d.
