@@ -6,8 +6,8 @@
 //                   signed-permutation frames: §4 in integers) and turned (frames orthonormal only up
 //                   to rounding: the parallelepiped test in integers)
 //   boundary:       one-ulp boundary pairs of the random generator (support/cases.hpp, seed 0xb0c5c702,
-//                   both members), those that reach stage 2, integer frames (wide dyadic ranges: the
-//                   values outgrow FixedInt and the stage runs in mpz_class)
+//                   1024 pairs as in bench_sets, both members), those that reach exact arithmetic,
+//                   integer frames (subnormal axis components beside full 53-bit mantissas)
 // and, for the ratio the goals are stated in, the default query and plain double §4
 // ({Algorithm::inequalities, Arithmetic::float64}) on the whole touching set.
 // Counter ns_per_query: CPU time per query (Google Benchmark prints it in seconds: "2.1us" is 2.1 µs).
@@ -54,7 +54,7 @@ const Sets& sets() {
             (integer_frame(c) ? r.touching_integer : r.touching_turned).push_back(c);
         }
         boxcyl::testing::CaseGenerator bgen(0xb0c5c702);
-        for (int found = 0; found < 300;) {
+        for (int found = 0; found < 1024;) {
             Case a, b;
             boxcyl::testing::Parameter which{};
             if (!boxcyl::testing::boundary_pair(bgen, a, b, which)) continue;
