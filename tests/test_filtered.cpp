@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>  // std::max
+#include <bit>        // std::bit_cast: random doubles
 #include <cfenv>      // rounding modes
 #include <cmath>      // std::ldexp, std::fabs
 #include <cstdio>     // std::printf
@@ -541,6 +542,39 @@ TEST(Filtered, ExtremeMagnitudesAgreeWithOracle) {
     }
     f.print("filtered extreme magnitudes (2^±1000)");
     EXPECT_EQ(f.t.disagreements, 0);
+}
+
+// The power-of-two scaling of queries out of stage 0's range: random doubles over the whole range
+// (subnormals too) times 2^k, |k| ≤ 2044, in every rounding mode. Where std::ldexp is exact (its
+// round trip gives x back), times_two_to gives the same double; where it is not, times_two_to's round
+// trip does not give x back either — rescaled_exactly relies on exactly that.
+TEST(Filtered, PowerOfTwoScalingIsExactOrRejected) {
+    std::mt19937_64 rng(4702);
+    const int modes[] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    long exact = 0, rejected = 0;
+    for (const int mode : modes) {
+        ASSERT_EQ(std::fesetround(mode), 0);
+        for (int i = 0; i < 20000; ++i) {
+            const double x = std::bit_cast<double>(rng() & 0x7fffffffffffffffULL) * ((rng() & 1) != 0 ? 1 : -1);
+            if (!std::isfinite(x)) continue;
+            const int k = static_cast<int>(rng() % 4089) - 2044;
+            const double reference = std::ldexp(x, k);
+            const bool ldexp_exact = std::isfinite(reference) && std::ldexp(reference, -k) == x;
+            const double y = filtered::detail::times_two_to(x, k);
+            const bool round_trip = filtered::detail::times_two_to(y, -k) == x;
+            if (ldexp_exact) {
+                ++exact;
+                EXPECT_EQ(y, reference) << std::hexfloat << x << " * 2^" << k << ", rounding mode " << mode;
+                EXPECT_TRUE(round_trip) << std::hexfloat << x << " * 2^" << k << ", rounding mode " << mode;
+            } else {
+                ++rejected;
+                EXPECT_FALSE(round_trip && std::isfinite(y)) << std::hexfloat << x << " * 2^" << k << ", rounding mode " << mode;
+            }
+        }
+    }
+    std::fesetround(FE_TONEAREST);
+    EXPECT_GT(exact, 5000);
+    EXPECT_GT(rejected, 5000);
 }
 
 // Hand-picked huge, tiny and subnormal inputs.
