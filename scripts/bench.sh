@@ -146,7 +146,8 @@ was measured in):
 7. **The exact stage**, in integers and Z[√d] after one power-of-two scaling (docs/robustness.md §11):
    §4 for aligned, canonical and signed-permutation boxes, the parallelepiped's clipped edges and face
    cuts for rotated frames; fixed-width stack integers (16 limbs, GMP's mpn) while the values fit,
-   integers in powers of a tiny ε for inputs of two far-apart scales, mpz otherwise.
+   integers in powers of a tiny ε (32-limb coefficients) for inputs of two far-apart scales, mpz
+   otherwise.
 
 Degenerate shapes (flat boxes, disks, segments) that the middle stage leaves get the thorough witness
 search (up to 3 × 256 projection steps) before the exact stage. In the other rounding modes the middle
