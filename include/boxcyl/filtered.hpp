@@ -925,8 +925,6 @@ std::optional<bool> middle(const Box& box, const Cylinder<double>& cyl) {
     return middle_clipped(box, cyl);
 }
 
-// Every length times 2^k, the axis kept: the query at another scale (exact unless a value underflows;
-// used only for the hint below).
 // x·2^k rounded as any product is (so exact unless it leaves the normal range), for |k| ≤ 2044: by
 // one or two products with normal powers of two, not a libm call (std::ldexp was two fifths of the
 // time of random queries at extreme scales, which all come through rescaled_exactly).
@@ -937,6 +935,8 @@ inline double times_two_to(double x, int k) {
     return x * power(half) * power(k - half);
 }
 
+// Every length times 2^k, the axis kept: the query at another scale (exact unless a value underflows;
+// used only for the hint below).
 inline AlignedBox<double> times_power_of_two(const AlignedBox<double>& b, int k) {
     AlignedBox<double> r = b;
     for (int i = 0; i < 3; ++i) r.min[i] = times_two_to(b.min[i], k), r.max[i] = times_two_to(b.max[i], k);
