@@ -361,18 +361,23 @@ TEST(ExactStage, EpsilonSeriesSignsAreExact) {
         }
         for (int step = 0; step < 12; ++step) {
             const std::size_t a = rng() % s.size(), b = rng() % s.size(), c = rng() % s.size();
-            const int op = static_cast<int>(rng() % 4);
+            const int op = static_cast<int>(rng() % 5);
             FixedOverflow::flag() = false;
             ctx.undecided = false;
-            // op 3: (a·b)·c − a·(b·c), exactly 0, with different dropped terms on each side.
+            // op 3: (a·b)·c − a·(b·c), exactly 0, with different dropped terms on each side. op 4: an
+            // integer times a series (its own product path), on either side.
+            const mpz_class k = random_int(static_cast<int>(1 + rng() % 60));
             const S r = op == 0   ? S(s[a] + s[b])
                         : op == 1 ? S(s[a] - s[b])
                         : op == 2 ? S(s[a] * s[b])
-                                  : S(S(s[a] * s[b]) * s[c] - s[a] * S(s[b] * s[c]));
+                        : op == 3 ? S(S(s[a] * s[b]) * s[c] - s[a] * S(s[b] * s[c]))
+                        : (step % 2 == 0) ? S(S::term(to_fixed(k), 0) * s[a])
+                                          : S(s[a] * S::term(to_fixed(k), 0));
             const Rational rq = op == 0   ? Rational(q[a] + q[b])
                                 : op == 1 ? Rational(q[a] - q[b])
                                 : op == 2 ? Rational(q[a] * q[b])
-                                          : Rational(0);
+                                : op == 3 ? Rational(0)
+                                          : Rational(Rational(k) * q[a]);
             if (FixedOverflow::flag()) break;  // coefficients past 16 limbs: the program ends
             const int sign = sgn(r);
             if (ctx.undecided) {

@@ -66,6 +66,17 @@ public:
     using Coefficient = C;
 
     EpsilonSeries() = default;
+    // Copies only the coefficients in use: a FixedInt coefficient is hundreds of bytes.
+    EpsilonSeries(const EpsilonSeries& o) : top_(o.top_), rem_(o.rem_) {
+        for (int k = 0; k <= top_; ++k) c_[idx(k)] = o.c_[idx(k)];
+    }
+    EpsilonSeries& operator=(const EpsilonSeries& o) {
+        if (this == &o) return *this;
+        top_ = o.top_;
+        rem_ = o.rem_;
+        for (int k = 0; k <= top_; ++k) c_[idx(k)] = o.c_[idx(k)];
+        return *this;
+    }
     template <std::signed_integral I>
         requires(sizeof(I) <= sizeof(std::int64_t))
     EpsilonSeries(I v) : top_(v != 0 ? 0 : -1) {  // NOLINT(google-explicit-constructor): integers embed
@@ -103,8 +114,10 @@ public:
     friend bool operator==(const EpsilonSeries& x, const EpsilonSeries& y) { return cmp(x, y) == 0; }
 
     friend EpsilonSeries operator-(const EpsilonSeries& x) {
-        EpsilonSeries r(x);
-        for (int k = 0; k <= r.top_; ++k) r.c_[idx(k)] = -r.c_[idx(k)];
+        EpsilonSeries r;
+        r.top_ = x.top_;
+        r.rem_ = x.rem_;
+        for (int k = 0; k <= r.top_; ++k) r.c_[idx(k)] = -x.c_[idx(k)];
         return r;
     }
     friend EpsilonSeries operator+(const EpsilonSeries& x, const EpsilonSeries& y) {
@@ -137,6 +150,14 @@ public:
             return r;
         }
         const int m = SeriesContext::get().order;
+        if ((x.plain() || y.plain()) && std::max(x.top_, y.top_) <= m) {  // an integer times a series
+            const EpsilonSeries& s = x.plain() ? y : x;
+            const C& f = x.plain() ? x.c_[0] : y.c_[0];
+            for (int k = 0; k <= s.top_; ++k) multiply_into(r.c_[idx(k)], f, s.c_[idx(k)]);
+            r.top_ = s.top_;
+            if (s.rem_ >= 0) r.rem_ = s.rem_ + bit_length(f);  // |f·ρ| ≤ 2^(rem + bits of f)·ε^(m+1)
+            return r;
+        }
         bool dropped = x.rem_ >= 0 || y.rem_ >= 0;
         for (int i = 0; i <= x.top_; ++i) {
             if (sgn(x.c_[idx(i)]) == 0) continue;

@@ -198,9 +198,11 @@ private:
         const FixedInt* a = &x;
         const FixedInt* b = &y;
         int sa = x.size_, sb = sy;
-        if (compare_magnitude(x, y) < 0) std::swap(a, b), std::swap(sa, sb);  // |a| ≥ |b|
+        // A sum needs a with at least b's limbs; a difference |a| ≥ |b| (mpn_cmp only then).
+        const bool swap = (sa < 0) == (sb < 0) ? x.abs_size() < y.abs_size() : compare_magnitude(x, y) < 0;
+        if (swap) std::swap(a, b), std::swap(sa, sb);
         const int na = a->abs_size(), nb = b->abs_size();
-        if (na == 1) {  // one limb each (|a| ≥ |b| > 0), without a call
+        if (na == 1) {  // one limb each (for a difference |a| ≥ |b| > 0), without a call
             const mp_limb_t u = a->limb_[0], v = b->limb_[0];
             if ((sa < 0) == (sb < 0)) {
                 r.limb_[0] = u + v;
