@@ -514,45 +514,65 @@ TEST(ExactStage, NarrowTwoScaleInputsAnswerBeforeTheMiddleStage) {
 // The stage's two integer types give the same answers wherever the fixed one does not overflow.
 // The stack the exact stage needs, on its deepest path: a two-scale query whose signs hang beyond the
 // series' orders 2 and 4 (two tiny axis components 76 binary orders apart), so that it runs both series
-// runs and then mpz_class. It runs on a thread whose stack is painted first; the high-water mark is
-// the bytes no longer holding the paint. A thread with a smaller stack crashes (musl's default is
-// 128 KB): README.md states the figure this prints.
+// runs and then mpz_class. Threads run on stacks allocated and painted here; the high-water mark is
+// the bytes no longer holding the paint.
+struct DeepestQuery {
+    CanonicalBox<double> box{{0x1.fa89297890ebp+11, 0x1.d83988dbd9d84p+12, 0x1.b26fc1ea95783p+11}};
+    Cylinder<double> cyl{{-0x1.595a8af34a9ap+12, 0x1.dad3adbb57ef9p+12, -0x1.5418c807f4ddfp+9},
+                         {0x1.f84ffeaf2fffp-3, -0x0.0000000000006p-1022, -0x1.56e1fc2f8f359p-996},
+                         0x1.e8af257bd4dabp+8,
+                         0x1.7057d8dc0892p+11};
+    bool series_undecided = false, answer = false, room_known = false;
+
+    static void* run(void* self) {
+        auto& q = *static_cast<DeepestQuery*>(self);
+        q.room_known = exact::stack_room() != std::numeric_limits<std::size_t>::max();
+        q.series_undecided = !exact::integer::answer_two_scale(q.box, q.cyl).has_value();
+        q.answer = filtered::intersects(q.box, q.cyl);
+        return nullptr;
+    }
+    // Runs on a thread with a stack of `bytes`; returns the bytes of it used.
+    std::size_t on_stack_of(std::size_t bytes) {
+        constexpr unsigned char kPaint = 0xa5;
+        void* memory = nullptr;
+        EXPECT_EQ(posix_memalign(&memory, 1 << 16, bytes), 0);
+        std::memset(memory, kPaint, bytes);
+        pthread_attr_t attr;
+        EXPECT_EQ(pthread_attr_init(&attr), 0);
+        EXPECT_EQ(pthread_attr_setstack(&attr, memory, bytes), 0);
+        pthread_t thread;
+        EXPECT_EQ(pthread_create(&thread, &attr, &DeepestQuery::run, this), 0);
+        EXPECT_EQ(pthread_join(thread, nullptr), 0);
+        pthread_attr_destroy(&attr);
+        const auto* painted = static_cast<const unsigned char*>(memory);
+        std::size_t untouched = 0;
+        while (untouched < bytes && painted[untouched] == kPaint) ++untouched;
+        std::free(memory);
+        return bytes - untouched;
+    }
+};
+
 TEST(ExactStage, StackHighWaterMark) {
-    constexpr std::size_t kStack = std::size_t{8} << 20;
-    constexpr unsigned char kPaint = 0xa5;
-    void* memory = nullptr;
-    ASSERT_EQ(posix_memalign(&memory, 1 << 16, kStack), 0);
-    std::memset(memory, kPaint, kStack);
-    struct Run {
-        static void* query(void* out) {
-            const CanonicalBox<double> b{{0x1.fa89297890ebp+11, 0x1.d83988dbd9d84p+12, 0x1.b26fc1ea95783p+11}};
-            const Cylinder<double> c{{-0x1.595a8af34a9ap+12, 0x1.dad3adbb57ef9p+12, -0x1.5418c807f4ddfp+9},
-                                     {0x1.f84ffeaf2fffp-3, -0x0.0000000000006p-1022, -0x1.56e1fc2f8f359p-996},
-                                     0x1.e8af257bd4dabp+8,
-                                     0x1.7057d8dc0892p+11};
-            auto& r = *static_cast<std::pair<bool, bool>*>(out);
-            r.first = !exact::integer::answer_two_scale(b, c).has_value();  // no series run decides it
-            r.second = filtered::intersects(b, c);
-            return nullptr;
-        }
-    };
-    std::pair<bool, bool> result{false, false};
-    pthread_attr_t attr;
-    ASSERT_EQ(pthread_attr_init(&attr), 0);
-    ASSERT_EQ(pthread_attr_setstack(&attr, memory, kStack), 0);
-    pthread_t thread;
-    ASSERT_EQ(pthread_create(&thread, &attr, &Run::query, &result), 0);
-    ASSERT_EQ(pthread_join(thread, nullptr), 0);
-    pthread_attr_destroy(&attr);
-    const auto* bytes = static_cast<const unsigned char*>(memory);
-    std::size_t untouched = 0;
-    while (untouched < kStack && bytes[untouched] == kPaint) ++untouched;
-    std::free(memory);
-    const std::size_t used = kStack - untouched;
+    DeepestQuery q;
+    const std::size_t used = q.on_stack_of(std::size_t{8} << 20);
     std::printf("exact stage, deepest path: %zu KB of stack\n", used >> 10);
-    EXPECT_TRUE(result.first);
-    EXPECT_TRUE(result.second);  // the oracle's answer
+    EXPECT_TRUE(q.room_known);
+    EXPECT_TRUE(q.series_undecided);
+    EXPECT_TRUE(q.answer);  // the oracle's answer
+    EXPECT_GT(used, std::size_t{128} << 10);  // the series runs ran
     EXPECT_LT(used, std::size_t{2} << 20);
+}
+
+// With less stack left than the series runs need, the stage skips them: a 128 KB stack (musl's
+// default) answers the deepest query, in mpz_class.
+TEST(ExactStage, SmallStackSkipsTheSeriesRuns) {
+    DeepestQuery q;
+    const std::size_t used = q.on_stack_of(std::size_t{128} << 10);
+    std::printf("exact stage on a 128 KB stack: %zu KB used\n", used >> 10);
+    EXPECT_TRUE(q.room_known);
+    EXPECT_TRUE(q.series_undecided);
+    EXPECT_TRUE(q.answer);
+    EXPECT_LT(used, std::size_t{64} << 10);  // not the series runs' hundreds of KB
 }
 
 TEST(ExactStage, FixedAndMpzStagesAgree) {

@@ -27,6 +27,7 @@
 #include <tuple>        // std::tuple_size_v
 #include <type_traits>  // std::is_same_v, std::conditional_t
 
+#include "boxcyl/exact/stack_room.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/vec3.hpp"
@@ -603,6 +604,10 @@ std::optional<bool> answer_small(const Box& b, const Cylinder<double>& c) {
 // long, beyond 16 limbs on some queries, and FixedInt's arithmetic costs what the limbs in use cost, so
 // a narrower first run only risks a wasted one.
 inline constexpr int kSeriesLimbs = 32;
+// The series runs keep every value on the stack, M + 1 coefficients of kSeriesLimbs limbs each: about
+// 190 KB at -O2 on the order-4 run's deepest path. With less room than this left on the thread's
+// stack they are skipped, and the stage answers in mpz_class.
+inline constexpr std::size_t kSeriesStackRoom = std::size_t{512} << 10;
 
 template <int Limbs, int Order, class Box>
 std::optional<bool> answer_series(const Box& b, const Cylinder<double>& c, int E, bool& overflow) {
@@ -621,6 +626,7 @@ std::optional<bool> answer_two_scale(const Box& b, const Cylinder<double>& c) {
     const TwoScale<std::tuple_size_v<decltype(lengths(b, c))>> L(lengths(b, c));
     const TwoScale<3> D({c.axis[0], c.axis[1], c.axis[2]});
     if (!L.ok() || !D.ok() || (L.gap() < 0 && D.gap() < 0)) return std::nullopt;
+    if (stack_room() < kSeriesStackRoom) return std::nullopt;
     const int E = L.gap() < 0 ? D.gap() : D.gap() < 0 ? L.gap() : std::min(L.gap(), D.gap());
     bool overflow = false;
     if (const std::optional<bool> r = answer_series<kSeriesLimbs, 2>(b, c, E, overflow)) return r;
