@@ -604,9 +604,10 @@ std::optional<bool> answer_small(const Box& b, const Cylinder<double>& c) {
 // long, beyond 16 limbs on some queries, and FixedInt's arithmetic costs what the limbs in use cost, so
 // a narrower first run only risks a wasted one.
 inline constexpr int kSeriesLimbs = 32;
-// The series runs keep every value on the stack, M + 1 coefficients of kSeriesLimbs limbs each: about
-// 190 KB at -O2 on the order-4 run's deepest path. With less room than this left on the thread's
-// stack they are skipped, and the stage answers in mpz_class.
+// The series runs keep every value on the stack, M + 1 coefficients of kSeriesLimbs limbs each: the
+// query's deepest path, through the order-4 run, takes about 230 KB at -O2 (test
+// ExactStage.StackHighWaterMark). With less room than this left on the thread's stack they are
+// skipped, and the stage answers in mpz_class.
 inline constexpr std::size_t kSeriesStackRoom = std::size_t{512} << 10;
 
 template <int Limbs, int Order, class Box>
