@@ -300,10 +300,11 @@ void add_method(const DataSet& s, Method m) {
     }
 }
 
-#ifdef BOXCYL_BENCH_PEERS
 // "Small" queries, where the peers' absolute tolerances (FCL's default gjk_tolerance 1e-6, …) are
 // no longer small: every length of the query (box sides, cylinder diameter and height) is below this.
 constexpr double kSmallSize = 0.01;
+
+#ifdef BOXCYL_BENCH_PEERS
 
 double query_size(const Case& c) {
     double m = std::max(2 * c.cylinder.radius, c.cylinder.height);

@@ -324,8 +324,9 @@ TEST(ExactStage, FixedIntMatchesMpz) {
 }
 
 // EpsilonSeries against exact rationals: straight-line programs of sums, differences and products of
-// values c_0 + c_1·ε (ε = 2^−E) with coefficients of up to 150 bits, many of them equal at order 0 so
-// that differences cancel there. Every sign the series gives while its undecided flag stays down is the
+// values c_0 + c_1·ε and c_1·ε + c_2·ε² (ε = 2^−E) with coefficients of up to 150 bits, many of them
+// equal at order 0 so that differences cancel there, and products of the small ones of order ε² and
+// beyond. Every sign the series gives while its undecided flag stays down is the
 // exact sign; the flag rises when a sign hangs beyond the kept order (and on such a cancellation at
 // order 0 and 1 alike, which the programs make common).
 TEST(ExactStage, EpsilonSeriesSignsAreExact) {
@@ -358,7 +359,14 @@ TEST(ExactStage, EpsilonSeriesSignsAreExact) {
         std::vector<S> s;
         std::vector<Rational> q;
         const mpz_class base = random_int(100);
-        for (int i = 0; i < 6; ++i) {  // atoms: base or random at order 0, plus a tiny part
+        for (int i = 0; i < 8; ++i) {  // atoms: base or random at order 0, plus a tiny part
+            if (i >= 6) {  // or of order ε alone (a tiny axis component), with an ε² part
+                const mpz_class c1 = random_int(static_cast<int>(1 + rng() % 60));
+                const mpz_class c2 = (rng() % 2 == 0) ? mpz_class(0) : random_int(static_cast<int>(1 + rng() % 60));
+                s.push_back(S::term(to_fixed(c1), 1) + S::term(to_fixed(c2), 2));
+                q.push_back(Rational(c1) * eps + Rational(c2) * eps * eps);
+                continue;
+            }
             const mpz_class c0 = (i % 2 == 0) ? base : random_int(static_cast<int>(1 + rng() % 100));
             const mpz_class c1 = (rng() % 3 == 0) ? mpz_class(0) : random_int(static_cast<int>(1 + rng() % 50));
             s.push_back(S::term(to_fixed(c0), 0) + S::term(to_fixed(c1), 1));
@@ -511,25 +519,31 @@ TEST(ExactStage, NarrowTwoScaleInputsAnswerBeforeTheMiddleStage) {
     EXPECT_EQ(checked, 39);
 }
 
-// The stage's two integer types give the same answers wherever the fixed one does not overflow.
 // The stack the exact stage needs, on its deepest path: a two-scale query whose signs hang beyond the
-// series' orders 2 and 4 (two tiny axis components 76 binary orders apart), so that it runs both series
-// runs and then mpz_class. Threads run on stacks allocated and painted here; the high-water mark is
-// the bytes no longer holding the paint.
+// series' order 2 (two equal tiny axis components beside a large one, a cylinder in a corner of the
+// box), so that it runs both series runs, the order-4 one deciding. Threads run on stacks allocated and
+// painted here; the high-water mark is the bytes no longer holding the paint.
 struct DeepestQuery {
-    CanonicalBox<double> box{{0x1.fa89297890ebp+11, 0x1.d83988dbd9d84p+12, 0x1.b26fc1ea95783p+11}};
-    Cylinder<double> cyl{{-0x1.595a8af34a9ap+12, 0x1.dad3adbb57ef9p+12, -0x1.5418c807f4ddfp+9},
-                         {0x1.f84ffeaf2fffp-3, -0x0.0000000000006p-1022, -0x1.56e1fc2f8f359p-996},
-                         0x1.e8af257bd4dabp+8,
-                         0x1.7057d8dc0892p+11};
-    bool series_undecided = false, answer = false, room_known = false;
+    CanonicalBox<double> box{{0x1.f4aa802273717p-19, 0x1.7d958de85e3bcp-18, 0x1.4914f9f91a9f7p-18}};
+    Cylinder<double> cyl{{-0x1.65c52229730b3p-18, 0x1.94dd29bb1dbbap-20, 0x1.a80dd86b8b0bp-19},
+                         {-0x1.0c0cf465f4bfap+1, 0x1.56e1fc2f8f359p-994, -0x1.56e1fc2f8f359p-994},
+                         0x1.33580e6515fcbp-19,
+                         0x1.adbf8860e549ep-19};
+    bool series_answered = false, answer = false, room_known = false;
 
     static void* run(void* self) {
         auto& q = *static_cast<DeepestQuery*>(self);
         q.room_known = exact::stack_room() != std::numeric_limits<std::size_t>::max();
-        q.series_undecided = !exact::integer::answer_two_scale(q.box, q.cyl).has_value();
+        q.series_answered = exact::integer::answer_two_scale(q.box, q.cyl).has_value();
         q.answer = filtered::intersects(q.box, q.cyl);
         return nullptr;
+    }
+    bool oracle() const {
+        Case c;
+        c.kind = BoxKind::canonical;
+        c.canonical = box;
+        c.cylinder = cyl;
+        return oracle_answer(c);
     }
     // Runs on a thread with a stack of `bytes`; returns the bytes of it used.
     std::size_t on_stack_of(std::size_t bytes) {
@@ -556,9 +570,16 @@ TEST(ExactStage, StackHighWaterMark) {
     DeepestQuery q;
     const std::size_t used = q.on_stack_of(std::size_t{8} << 20);
     std::printf("exact stage, deepest path: %zu KB of stack\n", used >> 10);
+    // The path: the order-2 run hangs, the order-4 run answers.
+    const exact::integer::TwoScale<8> L(exact::integer::lengths(q.box, q.cyl));
+    const exact::integer::TwoScale<3> D({q.cyl.axis[0], q.cyl.axis[1], q.cyl.axis[2]});
+    ASSERT_LT(L.gap(), 0);
+    bool overflow = false;
+    EXPECT_FALSE((exact::integer::answer_series<exact::integer::kSeriesLimbs, 2>(q.box, q.cyl, D.gap(), overflow)));
+    EXPECT_FALSE(overflow);
     EXPECT_TRUE(q.room_known);
-    EXPECT_TRUE(q.series_undecided);
-    EXPECT_TRUE(q.answer);  // the oracle's answer
+    EXPECT_TRUE(q.series_answered);
+    EXPECT_EQ(q.answer, q.oracle());
     EXPECT_GT(used, std::size_t{128} << 10);  // the series runs ran
     EXPECT_LT(used, std::size_t{2} << 20);
 }
@@ -570,11 +591,12 @@ TEST(ExactStage, SmallStackSkipsTheSeriesRuns) {
     const std::size_t used = q.on_stack_of(std::size_t{128} << 10);
     std::printf("exact stage on a 128 KB stack: %zu KB used\n", used >> 10);
     EXPECT_TRUE(q.room_known);
-    EXPECT_TRUE(q.series_undecided);
-    EXPECT_TRUE(q.answer);
+    EXPECT_FALSE(q.series_answered);
+    EXPECT_EQ(q.answer, q.oracle());
     EXPECT_LT(used, std::size_t{64} << 10);  // not the series runs' hundreds of KB
 }
 
+// The stage's two integer types give the same answers wherever the fixed one does not overflow.
 TEST(ExactStage, FixedAndMpzStagesAgree) {
     TouchingGenerator gen(2107);
     long compared = 0;

@@ -599,8 +599,8 @@ std::optional<bool> answer_small(const Box& b, const Cylinder<double>& c) {
 // Inputs whose range is wide only because some values are tiny beside the others (TwoScale: the
 // lengths, the axis, or both, in two groups hundreds of binary orders apart): the stage in
 // EpsilonSeries over FixedInt — order 2, then order 4 when a sign hung on a higher power of the tiny
-// values. nullopt when neither decides (the caller runs plain mpz_class) or the inputs are not of two
-// scales. The coefficients get kSeriesLimbs limbs: full-precision mantissas make them about 1000 bits
+// values (the orders count from each value's own lowest power of ε). nullopt when neither decides (the
+// caller runs plain mpz_class) or the inputs are not of two scales. The coefficients get kSeriesLimbs limbs: full-precision mantissas make them about 1000 bits
 // long, beyond 16 limbs on some queries, and FixedInt's arithmetic costs what the limbs in use cost, so
 // a narrower first run only risks a wasted one.
 inline constexpr int kSeriesLimbs = 32;
