@@ -231,6 +231,78 @@ TEST(ExactStage, QuadraticIntegerSignMatchesQField) {
     }
 }
 
+// The sign of a + b√d for wide a, b, d, where it compares approximations of a² and b²·d before the
+// exact squares: a = ⌊b·√d⌋ + k for small k (a² − b²·d of either sign, tiny beside a²), and a moved
+// from there by 2^−s of itself (s up to 70, around the approximations' 2^−40 threshold), in mpz_class,
+// FixedInt and EpsilonSeries (a, b, d each c·ε^v, of different orders v), against exact integers.
+TEST(ExactStage, QuadraticSignOfWideValuesIsExact) {
+    std::mt19937_64 rng(2110);
+    auto random_int = [&](int bits) -> mpz_class {  // not auto: z + 1 would refer to z after return
+        mpz_class z(0);
+        for (int b = 0; b < bits; b += 50) z = (z << 50) + static_cast<long>(rng() >> 14);
+        z >>= static_cast<unsigned>((bits + 49) / 50 * 50 - bits);
+        return z + 1;
+    };
+    using F = FixedInt<32>;
+    using S = EpsilonSeries<F, 2>;
+    auto to_fixed = [](const mpz_class& z) {
+        F f(0);
+        const std::size_t words = mpz_sizeinbase(z.get_mpz_t(), 2) / 62 + 1;
+        for (std::size_t w = words; w-- > 0;) {
+            f <<= 62u;
+            const mpz_class part = (z >> static_cast<unsigned>(62 * w)) & ((mpz_class(1) << 62) - 1);
+            f = f + F(static_cast<long>(part.get_ui()));
+        }
+        return f;
+    };
+    const int E = 400;
+    SeriesContext& ctx = SeriesContext::get();
+    ctx.E = E;
+    ctx.order = 2;
+    long checked = 0, close = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const mpz_class d = random_int(1 + static_cast<int>(rng() % 200));
+        const mpz_class b = random_int(1 + static_cast<int>(rng() % 500));
+        const mpz_class bbd = b * b * d;
+        mpz_class a = sqrt(bbd);  // not of a temporary: gmpxx's sqrt() would keep a reference to it
+        if (i % 2 == 0) {
+            a += static_cast<long>(rng() % 5) - 2;
+        } else {
+            const auto shift = static_cast<unsigned>(rng() % 70);
+            const mpz_class step = a >> shift;
+            a += (rng() & 1) ? step : mpz_class(-step);
+        }
+        if (sgn(a) <= 0) continue;
+        const mpz_class diff = a * a - bbd;
+        const int want = sgn(diff);  // the sign of a − b√d
+        close += abs(diff) * (mpz_class(1) << 40) < a * a;
+        // a − b√d and −a + b√d, in each type.
+        const QuadraticRing<mpz_class> zring{d};
+        EXPECT_EQ(zring.sign(a, mpz_class(-b)), want) << a << " - " << b << "*sqrt(" << d << ")";
+        EXPECT_EQ(zring.sign(mpz_class(-a), b), -want) << a << " - " << b << "*sqrt(" << d << ")";
+        if (mpz_sizeinbase(a.get_mpz_t(), 2) < 32 * 64 - 64) {
+            FixedOverflow::flag() = false;
+            const QuadraticRing<F> fring{to_fixed(d)};
+            const int got = fring.sign(to_fixed(a), F(-to_fixed(b)));
+            if (!FixedOverflow::flag()) {
+                EXPECT_EQ(got, want) << a << " - " << b << "*sqrt(" << d << ")";
+            }
+            // The same values at powers of ε: a·ε^(va), b·ε^(vb), d·ε^(2(va − vb)), so that the
+            // orders match and only the coefficients decide.
+            const int vb = static_cast<int>(rng() % 2), va = vb + static_cast<int>(rng() % 2);
+            ctx.undecided = false;
+            const QuadraticRing<S> sring{S::term(to_fixed(d), 2 * (va - vb))};
+            const int sgot = sring.sign(S::term(to_fixed(a), va), S::term(F(-to_fixed(b)), vb));
+            if (!FixedOverflow::flag() && !ctx.undecided) {
+                EXPECT_EQ(sgot, want) << a << " - " << b << "*sqrt(" << d << ") at orders " << va << ", " << vb;
+            }
+        }
+        ++checked;
+    }
+    EXPECT_GT(checked, 3500);
+    EXPECT_GT(close, 2000);  // where the approximations cannot decide
+}
+
 // The ring's dot product, squared norm and square (each with one product by d) against Q(√d).
 TEST(ExactStage, QuadraticRingProductsMatchQField) {
     std::mt19937_64 rng(2108);

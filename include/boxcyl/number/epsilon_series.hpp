@@ -117,6 +117,22 @@ public:
             SeriesContext::get().undecided = true;
         return s;
     }
+    // |x| ≈ m·2^e as its leading term's approximation, when the rest is below 2^−60 of that term:
+    // ε^(v+1)·2^tail against at least 2^(b−1)·ε^v. The relative error stays below 2^−50.9.
+    friend bool approximate(const EpsilonSeries& x, double& m, int& e) {
+        if (x.top_ < 0) return false;
+        const int E = SeriesContext::get().E;
+        if (x.top_ > 0 || x.rem_ >= 0) {
+            int bits = x.rem_, terms = x.rem_ >= 0 ? 1 : 0;
+            for (int k = 1; k <= x.top_; ++k)
+                if (sgn(x.c_[idx(k)]) != 0) bits = std::max(bits, bit_length(x.c_[idx(k)])), ++terms;
+            const int tail = bits + static_cast<int>(std::bit_width(static_cast<unsigned>(terms)));
+            if (tail > E + bit_length(x.c_[0]) - 61) return false;
+        }
+        if (!approximate(x.c_[0], m, e)) return false;
+        e -= E * x.v_;
+        return true;
+    }
     friend int cmp(const EpsilonSeries& x, const EpsilonSeries& y) { return sgn(x - y); }
     friend bool operator<(const EpsilonSeries& x, const EpsilonSeries& y) { return cmp(x, y) < 0; }
     friend bool operator<=(const EpsilonSeries& x, const EpsilonSeries& y) { return cmp(x, y) <= 0; }

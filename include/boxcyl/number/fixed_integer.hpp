@@ -9,7 +9,8 @@
 #include <gmpxx.h>  // mpz_class, for to_mpz
 
 #include <algorithm>  // std::copy_n, std::copy_backward, std::fill_n
-#include <bit>        // std::bit_width
+#include <bit>        // std::bit_width, std::countl_zero
+#include <cmath>      // std::fabs
 #include <concepts>   // std::signed_integral
 #include <cstddef>    // std::size_t
 #include <cstdint>    // std::int64_t
@@ -126,6 +127,23 @@ public:
         return n == 0 ? 0 : (n - 1) * GMP_NUMB_BITS + static_cast<int>(std::bit_width(limb_[n - 1]));
     }
 
+    // Limbs in use.
+    int limbs() const { return abs_size(); }
+
+    // |x| ≈ m·2^e with m in [0.5, 1] and a relative error below 2^−51: the top 64 bits (truncation:
+    // below 2^−63), converted to a double once (below 2^−52 in any rounding mode). false for 0.
+    bool approximate(double& m, int& e) const {
+        const int n = abs_size();
+        if (n == 0) return false;
+        const mp_limb_t hi = limb_[n - 1];
+        const int lz = std::countl_zero(hi);
+        std::uint64_t top = hi << lz;
+        if (lz != 0 && n >= 2) top |= limb_[n - 2] >> (GMP_NUMB_BITS - lz);
+        m = static_cast<double>(top) * 0x1p-64;
+        e = n * GMP_NUMB_BITS - lz;
+        return true;
+    }
+
     // The value as an mpz_class (tests and messages).
     mpz_class to_mpz() const {
         mpz_class z;
@@ -239,5 +257,18 @@ private:
     int size_ = 0;  // ±(limbs in use), the sign of the number (as mpz)
     mp_limb_t limb_[N];
 };
+
+template <int N>
+bool approximate(const FixedInt<N>& x, double& m, int& e) {
+    return x.approximate(m, e);
+}
+// |x| ≈ m·2^e likewise for mpz_class (GMP truncates to 53 bits: below 2^−52).
+inline bool approximate(const mpz_class& x, double& m, int& e) {
+    if (sgn(x) == 0) return false;
+    long exponent = 0;
+    m = std::fabs(mpz_get_d_2exp(&exponent, x.get_mpz_t()));
+    e = static_cast<int>(exponent);
+    return true;
+}
 
 }  // namespace boxcyl

@@ -4,7 +4,10 @@
 // (exact/integer_inequalities.hpp) needs after it has scaled its problem to integers.
 #pragma once
 
+#include <cmath>  // std::ldexp
+
 #include "boxcyl/geometry/vec3.hpp"
+#include "boxcyl/number/fixed_integer.hpp"  // approximate() for FixedInt and mpz_class
 
 namespace boxcyl {
 
@@ -71,11 +74,13 @@ public:
         return r;
     }
 
-    // The exact sign of a + b√d: equal signs decide at once, otherwise a² is compared with b²·d.
+    // The exact sign of a + b√d: equal signs decide at once, otherwise a² is compared with b²·d —
+    // first on approximations of |a|, |b| and d, exactly only when those cannot tell.
     int sign(const Z& a, const Z& b) const {
         const int sa = sgn(a), sb = sgn(b);
         if (sb == 0 || sgn(d_) == 0) return sa;  // √0 = 0
         if (sa == 0 || sa == sb) return sb;
+        if (const int c = compare_squares_roughly(a, b); c != 0) return c > 0 ? sa : sb;
         const Z aa = a * a;
         const Z bbd = Z(b * b) * d_;
         const int c = cmp(aa, bbd);
@@ -84,6 +89,29 @@ public:
     int sign(const QuadInt<Z>& x) const { return sign(x.a, x.b); }
 
 private:
+    // The sign of a² − b²·d where approximations of |a|, |b|, d (m·2^e, m in [0.5, 1], each within a
+    // relative 2^−50.9 of the value: approximate()) decide it, else 0. With Δ = 2e_a − 2e_b − e_d the
+    // ratio a²/(b²d) is (m_a²/(m_b²·m_d))·2^Δ·(1 ± 2^−48), its mantissa part within [1/4, 8]: Δ ≥ 3
+    // puts it above 1, Δ ≤ −4 below; in between the ratio is computed in five roundings of at most
+    // 2^−52 each, and a distance of 2^−40 from 1 is far beyond all those errors together.
+    int compare_squares_roughly(const Z& a, const Z& b) const {
+        if constexpr (requires { a.limbs(); }) {  // FixedInt: exact squares of two limbs cost less
+            if (a.limbs() < 3 && b.limbs() < 3) return 0;
+        }
+        if constexpr (requires(double& m, int& e) { approximate(a, m, e); }) {
+            double ma = 0, mb = 0, md = 0;
+            int ea = 0, eb = 0, ed = 0;
+            if (!approximate(a, ma, ea) || !approximate(b, mb, eb) || !approximate(d_, md, ed)) return 0;
+            const long delta = 2L * ea - 2L * eb - ed;
+            if (delta >= 3) return 1;
+            if (delta <= -4) return -1;
+            const double r = ma * ma * std::ldexp(1.0, static_cast<int>(delta)) / (mb * mb * md);
+            if (r > 1 + 0x1p-40) return 1;
+            if (r < 1 - 0x1p-40) return -1;
+        }
+        return 0;
+    }
+
     Z d_;
 };
 
