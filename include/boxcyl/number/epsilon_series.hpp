@@ -316,7 +316,7 @@ private:
     int v_ = 0;               // the order of c_[0]
     int top_ = -1;            // highest index in use (−1: no coefficient)
     int rem_ = -1;            // remainder bound 2^rem_·ε^p_ (−1: none, the value is exact)
-    int p_ = 0;
+    int p_ = 0;               // the remainder's order (read only while rem_ ≥ 0)
 };
 
 }  // namespace boxcyl
