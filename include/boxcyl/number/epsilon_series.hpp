@@ -109,12 +109,8 @@ public:
         }
         const int s = sgn(x.c_[0]);
         if (x.top_ == 0 && x.rem_ < 0) return s;
-        int bits = x.rem_, terms = x.rem_ >= 0 ? 1 : 0;
-        for (int k = 1; k <= x.top_; ++k)
-            if (sgn(x.c_[idx(k)]) != 0) bits = std::max(bits, bit_length(x.c_[idx(k)])), ++terms;
-        const int tail = bits + static_cast<int>(std::bit_width(static_cast<unsigned>(terms)));
-        if (terms != 0 && tail >= SeriesContext::get().E + bit_length(x.c_[0]) - 1)
-            SeriesContext::get().undecided = true;
+        const int tail = x.tail_bits();
+        if (tail >= 0 && tail >= SeriesContext::get().E + bit_length(x.c_[0]) - 1) SeriesContext::get().undecided = true;
         return s;
     }
     // |x| ≈ m·2^e as its leading term's approximation, when the rest is below 2^−60 of that term:
@@ -122,13 +118,8 @@ public:
     friend bool approximate(const EpsilonSeries& x, double& m, int& e) {
         if (x.top_ < 0) return false;
         const int E = SeriesContext::get().E;
-        if (x.top_ > 0 || x.rem_ >= 0) {
-            int bits = x.rem_, terms = x.rem_ >= 0 ? 1 : 0;
-            for (int k = 1; k <= x.top_; ++k)
-                if (sgn(x.c_[idx(k)]) != 0) bits = std::max(bits, bit_length(x.c_[idx(k)])), ++terms;
-            const int tail = bits + static_cast<int>(std::bit_width(static_cast<unsigned>(terms)));
-            if (tail > E + bit_length(x.c_[0]) - 61) return false;
-        }
+        const int tail = x.tail_bits();
+        if (tail >= 0 && tail > E + bit_length(x.c_[0]) - 61) return false;
         if (!approximate(x.c_[0], m, e)) return false;
         e -= E * x.v_;
         return true;
@@ -232,6 +223,13 @@ private:
     bool monomial() const { return top_ == 0 && rem_ < 0; }  // c_0·ε^v alone, exact
     // The lowest order of the value: v, or the remainder's when no coefficient is left.
     int low() const { return top_ >= 0 ? v_ : p_; }
+    // An upper bound on log2(Σ_{k≥1}|c_k| + 2^rem), the terms after the leading one (−1: none).
+    int tail_bits() const {
+        int bits = rem_, terms = rem_ >= 0 ? 1 : 0;
+        for (int k = 1; k <= top_; ++k)
+            if (sgn(c_[idx(k)]) != 0) bits = std::max(bits, bit_length(c_[idx(k)])), ++terms;
+        return terms == 0 ? -1 : bits + static_cast<int>(std::bit_width(static_cast<unsigned>(terms)));
+    }
     // An upper bound on log2(Σ|c_k| + 2^rem).
     int norm_bits() const {
         int bits = rem_, terms = rem_ >= 0 ? 1 : 0;
