@@ -10,8 +10,11 @@
 // integer): a projection t = u·y is T/√d with T = D·y; a point where a box edge along x_k crosses a
 // slab plane t = ±H has x_k = (integer ± H√d)/D_k. Each sign test of §4 is multiplied through by those
 // positive denominators (√d, D_k, d) and becomes the sign of a + b√d with integers a, b, decided by
-// comparing a² with b²d. No division, no gcd, no rounding: the answer is the exact §4 answer, branch by
-// branch the same decisions as §4 in Q(√d) (exact_paths.hpp), which the oracle judges.
+// comparing a² with b²d. No division, no gcd, no rounding: the answer is the exact §4 answer, which the
+// oracle judges. The decisions are §4's (exact_paths.hpp), except within §4.3's candidate segments:
+// each is asked first whether its line comes within r of the axis (for a box edge a test in integers),
+// which rejects most of them at a fraction of the segment's cost, and the segment's distance is then
+// the line's or an end's (box_edge, face_cut).
 //
 // Z is the integer type: mpz_class always works; number/fixed_integer.hpp's FixedInt (stack limbs, no
 // allocation) while the values fit, the caller repeating the run in mpz_class after an overflow.
@@ -457,11 +460,6 @@ private:
         return sgn(rest) >= 0;
     }
 
-    bool segment_within(const Vec3<Q>& P0, const Vec3<Q>& P1, const Vec3<Q>& C, const Z& r2) const {
-        return detail::segment_within(ring_, p_.D, Vec3<Q>(P0 - C), Vec3<Q>(P1 - C), r2);
-    }
-
-    Q lift(const Z& x) const { return {x, Z(0)}; }
     Vec3<Q> vertex_scaled(int v, const Z& k) const {
         Vec3<Q> p;
         for (int n = 0; n < 3; ++n) {
@@ -469,9 +467,6 @@ private:
             if (!(v >> n & 1)) p[n].a = -p[n].a;
         }
         return p;
-    }
-    Vec3<Q> center_scaled(const Z& k) const {
-        return {lift(Z(k * p_.C[0])), lift(Z(k * p_.C[1])), lift(Z(k * p_.C[2]))};
     }
 
     // §4.3 (every D_i > 0). T_v = D·(V_v − C), the vertex projections times √d.
@@ -499,17 +494,62 @@ private:
         return false;
     }
 
-    // The box edge x_i = +e_i, x_j = −e_j along x_k from vertex a to b, clipped to |t| ≤ H. Scaled by
-    // D_k: a clipped end has D_k·x_k = ∓E_k·D_k − T_end ∓ H√d.
+    // The box edge x_i = +e_i, x_j = −e_j along x_k from vertex a to b, clipped to |t| ≤ H; in D_k·x_k
+    // its ends are L0 = −E_k·D_k, or −E_k·D_k − T_a − H√d where t_a < −H, and L1 = E_k·D_k, or
+    // E_k·D_k − T_b + H√d where t_b > H. Its distance to the axis line is the distance of its line
+    // where the line's nearest point lies between the ends, else the nearer end's: the line's test is
+    // in integers (the edge runs along a box axis) and decides most edges alone.
     bool box_edge(int i, int k) const {
         const int a = 1 << i, b = a | (1 << k);
         const Z& H = p_.H;
         if (ring_.sign(T_[a], Z(-H)) > 0 || ring_.sign(T_[b], H) < 0) return false;  // t_a > H or t_b < −H
-        const Z& Dk = p_.D[k];
-        Vec3<Q> P0 = vertex_scaled(a, Dk), P1 = vertex_scaled(b, Dk);
-        if (ring_.sign(T_[a], H) < 0) P0[k] = {Z(-p_.E[k] * Dk - T_[a]), Z(-H)};       // t_a < −H
-        if (ring_.sign(T_[b], Z(-H)) > 0) P1[k] = {Z(p_.E[k] * Dk - T_[b]), H};         // t_b > H
-        return segment_within(P0, P1, center_scaled(Dk), Z(Dk * Dk * Z(p_.R * p_.R)));
+        const int j = 3 - i - k;
+        const Vec3<Z>& D = p_.D;
+        const Z& Dk = D[k];
+        // y = (the edge's point) − C in x_i, x_j. The line is within r of the axis line iff
+        // (D_i·y_j − D_j·y_i)² ≤ R²·g, g = |D × e_k|² = D_i² + D_j².
+        const Z yi = Z(p_.E[i] - p_.C[i]), yj = Z(-p_.E[j] - p_.C[j]);
+        const Z n = Z(D[i] * yj - D[j] * yi);
+        const Z g = Z(D[i] * D[i] + D[j] * D[j]);
+        if (sgn(Z(n * n - Z(p_.R * p_.R) * g)) > 0) return false;
+        // The line's nearest point has D_k·x_k = K/g, K = D_k·(C_k·g + D_k·(D_i·y_i + D_j·y_j)).
+        const Z K = Z(Dk * Z(p_.C[k] * g + Dk * Z(D[i] * yi + D[j] * yj)));
+        const Z EkDk = Z(p_.E[k] * Dk);
+        const Q L0 = ring_.sign(T_[a], H) < 0 ? Q{Z(-EkDk - T_[a]), Z(-H)} : Q{Z(-EkDk), Z(0)};
+        if (ring_.sign(Z(K - g * L0.a), Z(-g * L0.b)) < 0) return end_within(i, j, k, yi, yj, g, L0);
+        const Q L1 = ring_.sign(T_[b], Z(-H)) > 0 ? Q{Z(EkDk - T_[b]), H} : Q{EkDk, Z(0)};
+        if (ring_.sign(Z(g * L1.a - K), Z(g * L1.b)) < 0) return end_within(i, j, k, yi, yj, g, L1);
+        return true;
+    }
+
+    // Whether the edge's end with D_k·x_k = L = α' + β√d (and y_i, y_j as above) is within r of the
+    // axis line: with Y = D_k·(end − C), Y_k = α + β√d, d·|Y|² − (D·Y)² ≤ R²·d·D_k², where
+    // D·Y = γ + D_k·β√d and d − D_k² = g.
+    bool end_within(int i, int j, int k, const Z& yi, const Z& yj, const Z& g, const Q& L) const {
+        const Vec3<Z>& D = p_.D;
+        const Z& Dk = D[k];
+        const Z& d = ring_.d();
+        const Z Yi = Z(Dk * yi), Yj = Z(Dk * yj);
+        const Z alpha = Z(L.a - Dk * p_.C[k]);
+        const Z& beta = L.b;
+        const Z gamma = Z(D[i] * Yi + D[j] * Yj + Dk * alpha);
+        const Z a = Z(d * Z(Yi * Yi + Yj * Yj + alpha * alpha - Z(p_.R * p_.R) * Z(Dk * Dk)) + Z(beta * beta) * Z(d * g) -
+                      gamma * gamma);
+        const Z b = Z(Z(2) * beta * Z(d * alpha - gamma * Dk));
+        return ring_.sign(a, b) <= 0;
+    }
+
+    // Whether the line where the face x_i = s (s = ±E_i) meets the slab plane t = τ (τ = ±H) is farther
+    // than r from the axis point A = C + τu of that plane. Within the plane, the face's normal has length
+    // √(1 − u_i²) and A lies (s − A_i) from the face along e_i, so the distance is
+    // |s − A_i|/√(1 − u_i²); times √d, with g = s − C_i: (g·√d − τ·D_i)² > R²·(d − D_i²).
+    bool cut_line_far(int i, const Z& s, const Z& tau) const {
+        const Z g = Z(s - p_.C[i]);
+        const Z& Di = p_.D[i];
+        const Z DiDi = Di * Di;
+        const Z a = Z(g * g * ring_.d() + tau * tau * DiDi - Z(p_.R * p_.R) * Z(ring_.d() - DiDi));
+        const Z b = Z(Z(-2) * g * tau * Di);
+        return ring_.sign(a, b) > 0;
     }
 
     // Where t = τ = σH crosses the path m → mid = m + 2e_j·U_j → M: a point times its denominator
@@ -528,7 +568,12 @@ private:
         }
     }
 
-    // The face x_i = ±e_i cut by the slab plane t = ∓H.
+    // The face x_i = s = ±e_i cut by the slab plane t = τ = ∓H: the segment from P0 (on the path
+    // m → m + 2e_j·U_j → M) to P1 (the path through m + 2e_k·U_k). Both lie on the line L where the two
+    // planes meet; in the slab plane a point's distance to the axis line is its distance to
+    // A = C + τu, so the segment is within r iff L is (cut_line_far) and A's foot on L lies between the
+    // ends, or else the nearer end is. Along L, σ(x) = D_k·x_j − D_j·x_k grows from P1 to P0, and
+    // σ(A) = D_k·C_j − D_j·C_k (u's part cancels), an integer.
     bool face_cut(int i, bool plus_face) const {
         const int m = plus_face ? (1 << i) : 0;
         const int M = plus_face ? 7 : (7 & ~(1 << i));
@@ -536,17 +581,29 @@ private:
         const Z sH = sigma > 0 ? p_.H : Z(-p_.H);
         // τ < t_m ⇔ T_m − τ√d > 0; t_M < τ ⇔ T_M − τ√d < 0.
         if (ring_.sign(T_[m], Z(-sH)) > 0 || ring_.sign(T_[M], Z(-sH)) < 0) return false;
+        if (cut_line_far(i, plus_face ? p_.E[i] : Z(-p_.E[i]), sH)) return false;
         const int j = (i + 1) % 3, k = (i + 2) % 3;
-        Vec3<Q> P0, P1;
-        Z k0, k1;
-        cut_point(m, j, k, sigma, P0, k0);
-        cut_point(m, k, j, sigma, P1, k1);
-        for (int n = 0; n < 3; ++n) {
-            P0[n] = k1 * P0[n];
-            P1[n] = k0 * P1[n];
-        }
-        const Z k01 = k0 * k1;
-        return segment_within(P0, P1, center_scaled(k01), Z(k01 * k01 * Z(p_.R * p_.R)));
+        const Vec3<Z>& D = p_.D;
+        const Z sigma_A = Z(D[k] * p_.C[j] - D[j] * p_.C[k]);
+        Vec3<Q> P;
+        Z den;
+        // σ(P0)·k0 as a + b√d (P = P0·k0 has one coordinate in Z[√d]).
+        cut_point(m, j, k, sigma, P, den);
+        if (ring_.sign(Z(sigma_A * den - D[k] * P[j].a + D[j] * P[k].a), Z(D[j] * P[k].b - D[k] * P[j].b)) > 0)
+            return cut_end_within(P, den, sH);  // A's foot beyond P0
+        cut_point(m, k, j, sigma, P, den);
+        if (ring_.sign(Z(sigma_A * den - D[k] * P[j].a + D[j] * P[k].a), Z(D[j] * P[k].b - D[k] * P[j].b)) < 0)
+            return cut_end_within(P, den, sH);  // beyond P1
+        return true;
+    }
+
+    // Whether the cut point P/den (in the slab plane t = τ) is within r of the axis line:
+    // |P/den − C|² − τ² ≤ r², i.e. |P − den·C|² ≤ den²·(R² + τ²).
+    bool cut_end_within(const Vec3<Q>& P, const Z& den, const Z& tau) const {
+        Vec3<Q> y = P;
+        for (int n = 0; n < 3; ++n) y[n].a -= den * p_.C[n];
+        const Q n2 = ring_.norm2(y);
+        return ring_.sign(Z(n2.a - Z(den * den) * Z(p_.R * p_.R + tau * tau)), n2.b) <= 0;
     }
 
     Problem<Z>& p_;
@@ -567,10 +624,10 @@ bool intersects(Problem<Z>& p) {
 namespace boxcyl::exact::integer {
 
 // The integer types tried in turn: FixedInt (stack limbs) while every value fits, else mpz_class.
-// §4's largest values (the sign test of an interior segment distance squares numbers of Z[√d]) have
-// about 8·L + 32·M + 64 bits for lengths below 2^L and axis components below 2^M (after the scalings),
-// so kFixedLimbs·64 bits hold them for integer and binary-fraction coordinates with small integer
-// axis directions; wider inputs overflow it and the stage reruns in mpz.
+// §4's largest values (the sign tests of a clipped end's distance and of §4.2's extremes square
+// numbers of Z[√d]) have about 4·L + 8·M + 64 bits for lengths below 2^L and axis components below 2^M
+// (after the scalings), so kFixedLimbs·64 bits hold them for integer and binary-fraction coordinates,
+// also with full-precision axis directions; wider inputs overflow it and the stage reruns in mpz.
 inline constexpr int kFixedLimbs = 16;
 using Small = FixedInt<kFixedLimbs>;
 
@@ -600,12 +657,13 @@ std::optional<bool> answer_small(const Box& b, const Cylinder<double>& c) {
 // lengths, the axis, or both, in two groups hundreds of binary orders apart): the stage in
 // EpsilonSeries over FixedInt — order 2, then order 4 when a sign hung on a higher power of the tiny
 // values (the orders count from each value's own lowest power of ε). nullopt when neither decides (the
-// caller runs plain mpz_class) or the inputs are not of two scales. The coefficients get kSeriesLimbs limbs: full-precision mantissas make them about 1000 bits
-// long, beyond 16 limbs on some queries, and FixedInt's arithmetic costs what the limbs in use cost, so
-// a narrower first run only risks a wasted one.
+// caller runs plain mpz_class) or the inputs are not of two scales. The coefficients get kSeriesLimbs
+// limbs: a group may span 192 bits, and the widest values (about 4·L + 8·M + 64 bits, as for
+// kFixedLimbs above) then outgrow 16 limbs; FixedInt's arithmetic costs what the limbs in use cost,
+// so the wider type costs little where the values are narrower.
 inline constexpr int kSeriesLimbs = 32;
 // The series runs keep every value on the stack, M + 1 coefficients of kSeriesLimbs limbs each: the
-// query's deepest path, through the order-4 run, takes about 230 KB at -O2 (test
+// query's deepest path, through the order-4 run, takes about 115 KB at -O2 (test
 // ExactStage.StackHighWaterMark). With less room than this left on the thread's stack they are
 // skipped, and the stage answers in mpz_class.
 inline constexpr std::size_t kSeriesStackRoom = std::size_t{512} << 10;
@@ -657,10 +715,10 @@ auto answer(const Box& b, const Cylinder<double>& c) {
 
 // Narrow inputs — every length an integer below 2^kNarrowLengthBits times one power of two, the axis
 // likewise below 2^kNarrowAxisBits: integer and binary-fraction coordinates, axes along box axes or
-// with small integer directions — keep every value of §4 within FixedInt (its largest, the sign test
-// of an interior segment distance, has about 8·(length bits) + 32·(axis bits) + 64 bits), so the exact
-// stage costs less than the searched certificates and the certified filter; for those inputs the
-// filtered query asks it right after stage 0. An overflow all the same only gives nullopt. The axis is
+// with small integer directions — keep every value of §4 within FixedInt (its largest has about
+// 4·(length bits) + 8·(axis bits) + 64 bits), so the exact stage costs less than the searched
+// certificates and the certified filter; for those inputs the filtered query asks it right after
+// stage 0. An overflow all the same only gives nullopt. The axis is
 // checked first: on random data it is almost never narrow, and the check then costs three doubles.
 inline constexpr int kNarrowLengthBits = 48;
 inline constexpr int kNarrowAxisBits = 16;

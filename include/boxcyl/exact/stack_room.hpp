@@ -1,6 +1,6 @@
 // How much of this thread's stack is left below the caller's frame. The exact stage's two-scale runs
 // (exact/integer_inequalities.hpp) keep their wide integers on the stack: the query's deepest path
-// takes about 230 KB at -O2 (test ExactStage.StackHighWaterMark prints it). A thread with a small
+// takes about 115 KB at -O2 (test ExactStage.StackHighWaterMark prints it). A thread with a small
 // stack (musl's default is 128 KB) would overflow there, so with too little room the stage answers in
 // mpz_class instead: tens of KB of stack, slower, as exact.
 #pragma once
