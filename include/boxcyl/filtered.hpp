@@ -1148,7 +1148,8 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
             // segments), where the thorough witness search still certifies deep hits with no inner
             // problem (a flat box crossed by a thick disk), and stage 1's coarser zeroing of tiny
             // axis components (2^-30, not 2^-200) some hits of segments and disks whose axis has
-            // subnormal components.
+            // subnormal components — after the exact stage's series run where the axis is of two
+            // scales, which costs less than that filter's failure.
             if (!near && bounded_first(box, cyl, p, in_range)) fast = filter<Bounded>(box, cyl);
             if (!fast) {  // two-scale inputs whose groups are narrow: exact costs less than the middle stage
                 if (const std::optional<bool> e = exact::integer::answer_if_narrow_two_scale(box, cyl)) return {*e, true};
@@ -1156,7 +1157,10 @@ Result run(const Box& box, const Cylinder<double>& cyl) {
             if (!fast) fast = middle(box, cyl);
             if (!fast && degenerate(box, cyl)) {
                 Vec3<double> a0;
-                if (tiny_components_zeroed(cyl.axis, a0, -200)) fast = filter(box, cyl);
+                if (tiny_components_zeroed(cyl.axis, a0, -200)) {
+                    if (const std::optional<bool> e = exact::integer::answer_two_scale(box, cyl)) return {*e, true};
+                    fast = filter(box, cyl);
+                }
                 if (!fast && in_range && witness_search::certain_hit(p, box, cyl)) fast = true;
             }
         } else {
