@@ -167,6 +167,37 @@ TEST_P(BoundedEnclosure, LongChainsAreEnclosed) {
     }
 }
 
+// An overflow is not always ±∞: rounding toward zero, up or down turns it into ±DBL_MAX on one side.
+// Such a result, scaled back into range by a tiny factor, must still enclose the exact value or be
+// undecided (a parallelepiped's separating direction with components of 1e±150 once certified a wrong
+// miss this way under FE_DOWNWARD).
+TEST_P(BoundedEnclosure, OverflowScaledBackIsEnclosedOrUndecided) {
+    const int mode = GetParam();
+    const RoundingMode guard(mode);
+    const double bigs[] = {dmax, 1e300, 1e200, 1.5e154, -1e300, -dmax};
+    const double tinies[] = {1e-300, 1e-200, 4e-320, -1e-250};
+    for (double x : bigs)
+        for (double y : bigs)
+            for (double t : tinies) {
+                const Bounded a(x), b(y), s(t);
+                const Bounded sums[] = {(a + b) * s, (a - b) * s, (a * b) * s, (a / Bounded(t)) * s,
+                                        (a * b + a) * s * s, sqrt(Bounded(std::fabs(x)) * Bounded(std::fabs(y))) * s};
+                const Rational exact[] = {(q(x) + q(y)) * q(t), (q(x) - q(y)) * q(t), q(x) * q(y) * q(t),
+                                          q(x) / q(t) * q(t), (q(x) * q(y) + q(x)) * q(t) * q(t)};
+                for (int k = 0; k < 5; ++k)
+                    EXPECT_TRUE(encloses(sums[k], exact[k]))
+                        << mode_name(mode) << " op " << k << " of " << hex(x) << ", " << hex(y) << ", " << hex(t) << ": "
+                        << show(sums[k]);
+                // The root of an overflowed product: enclosed means its square's bounds hold x·y·t².
+                const Bounded& r = sums[5];
+                if (std::isfinite(r.value()) && std::isfinite(r.error()) && r.lo() > 0) {
+                    const Rational square = q(std::fabs(x)) * q(std::fabs(y)) * q(t) * q(t);
+                    EXPECT_TRUE(q(r.lo()) * q(r.lo()) <= square && square <= q(r.hi()) * q(r.hi()))
+                        << mode_name(mode) << " sqrt of " << hex(x) << " * " << hex(y) << ": " << show(r);
+                }
+            }
+}
+
 INSTANTIATE_TEST_SUITE_P(RoundingModes, BoundedEnclosure,
                          ::testing::Values(FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO),
                          [](const auto& info) { return std::string(mode_name(info.param)); });

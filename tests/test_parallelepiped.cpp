@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cfenv>
 #include <cmath>
 #include <cstdio>
 #include <cstdint>
@@ -12,11 +13,13 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "boxcyl/batch.hpp"
 #include "boxcyl/boxcyl.hpp"
 #include "boxcyl/filtered/parallelepiped.hpp"
 #include "boxcyl/oracle/oracle.hpp"
+#include "support/fp.hpp"
 
 namespace boxcyl {
 namespace {
@@ -251,6 +254,37 @@ TEST(ParallelepipedRandom, ExtremeMagnitudesAgainstOracle) {
     }
     EXPECT_GT(check.cases, 300);
     std::printf("extreme magnitudes: %d cases, %d answered by the exact stage\n", check.cases, check.exact);
+}
+
+// Cases a miss certificate once answered wrongly under FE_DOWNWARD and FE_TOWARDZERO (a direction
+// with components of 1e±150: a product overflowed to DBL_MAX, not ∞, and its bound stayed finite).
+// Each touches or overlaps; checked in all four rounding modes.
+TEST(ParallelepipedRounding, OverflowingDirectionsInEveryMode) {
+    const std::pair<P, C> cases[] = {
+        {P{{0, -4.9406564584124654e-324, 4.9406564584124654e-324},
+           {Vec3<double>{-0.68227875108545266, 0.72091449881347014, -0.12156476141463826},
+            Vec3<double>{-0.47260296877030877, -0.56177374899954369, -0.67901155280634817},
+            Vec3<double>{-0.55780116504608113, -0.40582328707889681, 0.7239926242288065}},
+           {3.6089003384982234e-301, 9.0762124284405636e+299, 1.6112416652099546e-308}},
+         C{{2.0233407193507405e+298, -7.188936880858356e+298, -8.5405110461029434e+298},
+           {0, 0, -1.1214514137522989e-150}, 7.9686236068831041e+298, 1.4889937858051201e+150}},
+        {P{{0.024839784160300252, -0.0047518628500305962, -0.00042219540060848171},
+           {Vec3<double>{-0.20037956890320052, 0.25902284278879173, 0.94485723539579269},
+            Vec3<double>{-0.94154905003272349, 0.21565870035516627, -0.25879859223650431},
+            Vec3<double>{-0.27080143047746885, -0.94148738274855992, 0.2006691141571697}},
+           {0.049189536902308414, 0.0090369985841786647, 0.022195153142456698}},
+         C{{0.0036118793205844844, 0.0040194735049174828, -0.05164410799292396},
+           {2.8118211215894977e-40, -8.435369454295869e-160, -2.8118211215894977e+160}, 0.01423872717594162,
+           0.095396628490688362}},
+    };
+    for (const auto& [b, c] : cases) {
+        ASSERT_TRUE(oracle_answer(b, c)) << describe(b, c);
+        for (int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+            const testing::RoundingMode guard(mode);
+            EXPECT_TRUE(filtered::query(b, c).intersect) << "mode " << mode << ": " << describe(b, c);
+            EXPECT_TRUE(intersects(b, c)) << "mode " << mode << ": " << describe(b, c);
+        }
+    }
 }
 
 // The oracle's entry for flat solids against exact §3 (two independent exact methods).

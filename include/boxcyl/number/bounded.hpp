@@ -19,7 +19,10 @@
 //  * An operand that is an exact zero (v = 0, e = 0) gives an exact zero product and quotient, and
 //    exact operands that sum to 0 give an exact 0: the exact zeros of degenerate inputs (flat boxes,
 //    axis-aligned directions, zero-length clipped edges) stay exactly zero and decidable.
-//  * Overflow gives v = ±∞ with e = ∞ (or NaN); every comparison that involves them is undecided.
+//  * Overflow: in round to nearest it gives v = ±∞, but rounding toward zero, up or down can turn it
+//    into ±DBL_MAX, a finite value that no bound relates to the exact one, and the bound itself can
+//    stop at DBL_MAX the same way. So every result whose |v| + e reaches DBL_MAX gets e = ∞ (a
+//    result that large is useless anyway): every comparison that involves it is undecided.
 //  * FMA contraction can only remove roundings, and every bound holds for the contracted evaluation
 //    too (docs/robustness.md §3b).
 //
@@ -29,6 +32,7 @@
 
 #include <algorithm>  // std::max, std::min
 #include <cmath>      // std::sqrt, std::fabs
+#include <limits>     // DBL_MAX, infinity
 
 #include "boxcyl/number/interval.hpp"  // UncertaintyScope, the uncertainty flag, the fp checks
 #include "boxcyl/number/traits.hpp"
@@ -70,18 +74,18 @@ public:
 
     BOXCYL_BOUNDED_INLINE friend Bounded operator+(const Bounded& a, const Bounded& b) {
         const double v = a.v_ + b.v_;
-        return {v, a.e_ + b.e_ + u * std::fabs(v)};
+        return checked(v, a.e_ + b.e_ + u * std::fabs(v));
     }
     BOXCYL_BOUNDED_INLINE friend Bounded operator-(const Bounded& a, const Bounded& b) {
         const double v = a.v_ - b.v_;
-        return {v, a.e_ + b.e_ + u * std::fabs(v)};
+        return checked(v, a.e_ + b.e_ + u * std::fabs(v));
     }
     BOXCYL_BOUNDED_INLINE friend Bounded operator-(const Bounded& a) { return {-a.v_, a.e_}; }
     // |AB − ab| ≤ |a|·e_b + |b|·e_a + e_a·e_b for |A − a| ≤ e_a, |B − b| ≤ e_b.
     BOXCYL_BOUNDED_INLINE friend Bounded operator*(const Bounded& a, const Bounded& b) {
         const double v = a.v_ * b.v_;
         const double e = std::fabs(a.v_) * b.e_ + std::fabs(b.v_) * a.e_ + a.e_ * b.e_ + u * std::fabs(v) + tiny;
-        return {v, (a.exact_zero() || b.exact_zero()) ? 0.0 : e};
+        return checked(v, (a.exact_zero() || b.exact_zero()) ? 0.0 : e);
     }
     // |A/B − a/b| ≤ (e_a + |a/b|·e_b)/(|b| − e_b); the divisor is taken as |b| − 2e_b (a lower bound
     // of |b| − e_b whatever the rounding of e_b) and must be positive, else the result is undecided.
@@ -96,7 +100,7 @@ public:
         // covers (the first covers the rounding of v itself).
         const double av = std::fabs(v);
         const double e = a.e_ / den + av * (b.e_ / den) + 2 * u * av + tiny;
-        return {v, a.exact_zero() ? 0.0 : e};
+        return checked(v, a.exact_zero() ? 0.0 : e);
     }
     Bounded& operator+=(const Bounded& b) { return *this = *this + b; }
     Bounded& operator-=(const Bounded& b) { return *this = *this - b; }
@@ -109,7 +113,7 @@ public:
         if (!(a.v_ > 0)) [[unlikely]]
             return undecided();
         const double s = std::sqrt(a.v_);
-        return {s, a.e_ / s + u * s + tiny};
+        return checked(s, a.e_ / s + u * s + tiny);
     }
 
     // B − A lies in [d − b, d + b] for d = b.v − a.v rounded and b = (e_a + e_b + u|d|)·M.
@@ -148,6 +152,11 @@ public:
     }
 
 private:
+    // A result that may have overflowed (see the header comment): |v| + e rounds to at least DBL_MAX
+    // in every rounding mode when |v| or e is at DBL_MAX, and is ∞ or NaN when either is.
+    BOXCYL_BOUNDED_INLINE static Bounded checked(double v, double e) {
+        return {v, std::fabs(v) + e < std::numeric_limits<double>::max() ? e : std::numeric_limits<double>::infinity()};
+    }
     BOXCYL_BOUNDED_INLINE static bool certainly_less(const Bounded& a, const Bounded& b) {  // a < b decided true; no flag
         const double d = b.v_ - a.v_;
         return d - (a.e_ + b.e_ + u * std::fabs(d)) * margin > 0;
