@@ -1,6 +1,6 @@
-// The default query's exact stage alone (filtered.hpp's exact_answer), on the queries that reach
+// The default query's exact stage alone (exact/answer.hpp), on the queries that reach
 // exact arithmetic, beside the exact stage it replaced (§4, or §3 for turned frames, generically on
-// GMP rationals in Q(√d): exact_paths.hpp) on the same queries (docs/robustness.md §11). Sets:
+// GMP rationals in Q(√d): exact/paths.hpp) on the same queries (docs/robustness.md §11). Sets:
 //   touching:       support/touching.hpp's exactly touching queries (seed 0x21e7, 4096 of them), those
 //                   that reach exact arithmetic — split into integer (aligned, canonical,
 //                   signed-permutation frames: §4 in integers) and turned (frames orthonormal only up
@@ -36,7 +36,7 @@ bool reaches_exact_stage(const Case& c) {
     return with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::query(b, cyl).exact_used; });
 }
 bool integer_frame(const Case& c) {
-    return c.kind != BoxKind::oriented || exact::integer::intersects(c.oriented, c.cylinder).has_value();
+    return c.kind != BoxKind::oriented || signed_permutation(c.oriented.axes).has_value();
 }
 
 struct Sets {
@@ -104,7 +104,7 @@ void over(benchmark::State& state, Set which, Stage&& stage) {
 
 // The exact stage as it is now.
 void exact_stage(benchmark::State& state, Set which) {
-    over(state, which, [](const auto& b, const Cylinder<double>& cyl) { return filtered::detail::exact_answer(b, cyl); });
+    over(state, which, [](const auto& b, const Cylinder<double>& cyl) { return *exact::answer(b, cyl); });
 }
 
 // The exact stage in integers without EpsilonSeries: FixedInt, then mpz_class.
@@ -113,7 +113,7 @@ bool plain_integer(const Box& b, const Cylinder<double>& c) {
     if (const std::optional<bool> r = exact::integer::answer_small(b, c)) return *r;
     auto p = exact::integer::problem<mpz_class>(b, c);
     if constexpr (std::is_same_v<Box, OrientedBox<double>>) {
-        if (!p) return filtered::detail::exact_answer(b, c);  // a turned frame: the parallelepiped test
+        if (!p) return *exact::answer(b, c);  // a turned frame: the parallelepiped test
         return exact::integer::intersects(*p);
     } else {
         return exact::integer::intersects(p);

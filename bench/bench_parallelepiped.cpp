@@ -1,4 +1,4 @@
-// Time per query of the default exact query on boxcyl::Parallelepiped (filtered/parallelepiped.hpp),
+// Time per query of the default exact query on boxcyl::Parallelepiped (filtered.hpp),
 // beside plain double §3 on the same parallelepipeds, the exact stage alone, and the oriented-box
 // default query on the same solids where they are oriented boxes; and the fraction of queries that
 // reach the exact stage. Data sets (fixed seeds, generated before timing, answers checked against the
@@ -20,7 +20,8 @@
 #include <string>   // names
 #include <vector>   // data sets
 
-#include "boxcyl/filtered/parallelepiped.hpp"
+#include "boxcyl/exact/answer.hpp"
+#include "boxcyl/filtered.hpp"
 #include "boxcyl/oracle/oracle.hpp"
 #include "boxcyl/query.hpp"
 
@@ -107,7 +108,7 @@ void exact_stage(benchmark::State& st, const std::string& kind) {
     const Set& s = set_of(kind);
     for (auto _ : st)
         for (std::size_t i = 0; i < kSlow; ++i)
-            benchmark::DoNotOptimize(filtered::parallelepiped_detail::exact_answer(s.boxes[i], s.cylinders[i]));
+            benchmark::DoNotOptimize(*exact::answer(s.boxes[i], s.cylinders[i]));
     st.SetItemsProcessed(st.iterations() * static_cast<std::int64_t>(kSlow));
 }
 void as_oriented_box(benchmark::State& st) {

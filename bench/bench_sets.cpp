@@ -1,5 +1,5 @@
-// The default exact query against plain double §4 on four sets, side by side in one run, and where its
-// time goes by deciding stage (docs/performance.md; scripts/bench.sh runs it):
+// The default exact query against plain double §4 on eight sets, side by side in one run, and where
+// its time goes by pipeline row (docs/performance.md; scripts/bench.sh runs it):
 //   random       4096 mixed queries (CaseGenerator, seed 0xb0c5c701, bench_query's random set)
 //   boundary     512 pairs one ulp apart with opposite exact answers (seed 0xb0c5c702)
 //   touching     2048 exactly touching shapes and one-ulp neighbours (touching_case, seed 0xb0c5c705)
@@ -9,21 +9,14 @@
 //                queries, the batch API and the grid query over the same cells)
 //   degenerate   4096 random queries of CaseGenerator's degenerate profile (seed 0xb0c5c707: scales
 //                2^±600, zero sizes, sizes 2^±40 apart), where stage 0 leaves many queries far from
-//                touching to stage 1
+//                touching to the later rows
 //   uniform      4096 random queries of CaseGenerator's uniform profile (seed 0xb0c5c708: plain data,
 //                no zero sizes or tiny components), and 512 one-ulp boundary pairs of it (seed
 //                0xb0c5c709): a second generator's mix, for the ratios not to rest on one
-// Columns per set: the default query (`intersects(box, cyl)`), the same pipeline without the middle
-// stage (stage 1's undecided queries go straight to the exact stage, as before the middle stage
-// existed: "without middle"), and plain double §4 (`{Algorithm::inequalities, Arithmetic::float64}`).
-// Per stage: how many queries of the set each stage decides, in the order they run (0: semi-static;
-// the exact stage straight after it for narrow inputs, integer or binary-fraction coordinates; 0b:
-// witness search; 1 Bounded, for queries not near touching; middle: double-double enclosures; the
-// certificates kept for degenerate shapes; exact), and the default query's mean time on that subset,
-// timed on its own.
-// Built a second time as bench_sets_before with BOXCYL_MIDDLE_STAGE=0 (the library without the middle
-// stage), so that the batch API and the grid query, which call the library's scalar query, can be
-// compared too (two runs: those ratios are across processes).
+// Columns per set: the default query (`intersects(box, cyl)`) and plain double §4
+// (`{Algorithm::inequalities, Arithmetic::float64}`). Per row of the pipeline (filtered/schedule.hpp):
+// the queries it decides and its statistics, read from the library (filtered::Stats), and the default
+// query's mean time on the queries each row decides, timed on their own without statistics.
 //
 // Usage: bench_sets [--markdown=FILE] [--quick] [benchmark flags...]
 #include <benchmark/benchmark.h>
@@ -50,95 +43,35 @@ using namespace boxcyl;
 using boxcyl::testing::Case;
 using boxcyl::testing::with_box;
 
-#if !defined(BOXCYL_MIDDLE_STAGE) || BOXCYL_MIDDLE_STAGE
-constexpr const char* kBuild = "with the middle stage";
-#else
-constexpr const char* kBuild = "without the middle stage (BOXCYL_MIDDLE_STAGE=0)";
-#endif
-
-enum Stage { s0, snarrow, s0b, s1b, stwoscale, smiddle, sdegenerate, sexact, kStages };
-constexpr const char* kStageName[kStages] = {"0 semi-static",          "exact, narrow inputs",
-                                             "0b witness search",      "1 Bounded (not near touching)",
-                                             "exact, narrow two-scale inputs",
-                                             "middle (double-double)", "degenerate-shape certificates",
-                                             "exact"};
-
-// The stage that decides the query, replaying filtered::detail::run's order in round to nearest.
-template <class Box>
-Stage deciding_stage(const Box& box, const Cylinder<double>& cyl) {
-    namespace f = filtered;
-    f::semi_static::Problem p;
-    const bool in_range = f::semi_static::problem(box, cyl, p);
-    if (!in_range) {  // answered as the same query at scale 1 when that is exact
-        Box b;
-        Cylinder<double> c;
-        if (f::detail::rescaled_exactly(box, cyl, b, c)) return deciding_stage(b, c);
-    }
-    if (in_range && f::semi_static::decide(p, box, cyl)) return s0;
-    if (exact::integer::answer_if_narrow(box, cyl)) return snarrow;
-    const bool near = in_range && f::semi_static::near_touching(p, box) && f::detail::answer_moves(box, cyl);
-    if (in_range && !near && f::witness_search::decide(p, box, cyl)) return s0b;
-    if (!near && f::detail::bounded_first(box, cyl, p, in_range) && f::detail::filter<Bounded>(box, cyl)) return s1b;
-    if (exact::integer::answer_if_narrow_two_scale(box, cyl)) return stwoscale;
-    if (f::detail::middle(box, cyl)) return smiddle;
-    if (f::detail::degenerate(box, cyl)) {
-        Vec3<double> a0;
-        if (f::detail::tiny_components_zeroed(cyl.axis, a0, -200) && f::detail::filter(box, cyl)) return sdegenerate;
-        if (in_range && f::witness_search::certain_hit(p, box, cyl)) return sdegenerate;
-    }
-    return sexact;
-}
-// The default pipeline without the middle stage (what the library did before it: stage 1 is Bounded
-// then Interval, then the thorough witness search, then exact).
-template <class Box>
-bool without_middle(const Box& box, const Cylinder<double>& cyl) {
-    namespace f = filtered;
-    f::semi_static::Problem p;
-    const bool in_range = f::semi_static::problem(box, cyl, p);
-    std::optional<bool> fast;
-    if (in_range) {
-        fast = f::semi_static::decide(p, box, cyl);
-        if (!fast) fast = f::witness_search::decide(p, box, cyl);
-    }
-    if (!fast) fast = f::detail::filter(box, cyl);
-    if (!fast && in_range && f::witness_search::certain_hit(p, box, cyl)) fast = true;
-    if (!fast) return f::detail::exact_answer(box, cyl);
-    return *fast;
-}
-
-// The methods timed: the three queries, then the stages alone (stage 1's two enclosures, the
-// thorough witness search, the middle stage) on the queries that reach the middle stage.
-enum class Method { default_query, without_middle, double_s4, bounded, interval, thorough, middle, kCount };
-constexpr const char* kMethodKey[] = {"default", "without_middle", "double_s4", "alone_bounded", "alone_interval",
-                                      "alone_thorough_search", "alone_middle"};
+// The methods timed: the default query and plain double §4.
+enum class Method { default_query, double_s4 };
+constexpr const char* kMethodKey[] = {"default", "double_s4"};
 
 template <Method M>
 bool answer(const Case& c) {
     return with_box(c, [](const auto& b, const Cylinder<double>& cyl) {
-        namespace f = filtered;
-        if constexpr (M == Method::default_query) {
+        if constexpr (M == Method::default_query)
             return intersects(b, cyl);
-        } else if constexpr (M == Method::without_middle) {
-            return without_middle(b, cyl);
-        } else if constexpr (M == Method::double_s4) {
+        else
             return intersects(b, cyl, {Algorithm::inequalities, Arithmetic::float64});
-        } else if constexpr (M == Method::bounded) {
-            return f::detail::filter<Bounded>(b, cyl).value_or(false);
-        } else if constexpr (M == Method::interval) {
-            return f::detail::filter<Interval>(b, cyl).value_or(false);
-        } else if constexpr (M == Method::thorough) {
-            f::semi_static::Problem p;
-            return f::semi_static::problem(b, cyl, p) && f::witness_search::certain_hit(p, b, cyl);
-        } else {
-            return f::detail::middle(b, cyl).value_or(false);
-        }
     });
+}
+
+// The row that decided a query, from the library's statistics of that one query.
+filtered::RowId deciding_row(const Case& c, filtered::Stats& total) {
+    filtered::Stats one;
+    with_box(c, [&one](const auto& b, const Cylinder<double>& cyl) { return filtered::query(b, cyl, one).intersect; });
+    total += one;
+    for (std::size_t i = 0; i < filtered::row_count; ++i)
+        if (one.rows[i].hits + one.rows[i].misses > 0) return static_cast<filtered::RowId>(i);
+    return filtered::RowId::exact;
 }
 
 struct Set {
     std::string name, title;
     std::vector<Case> cases;
-    std::array<std::vector<Case>, kStages> by_stage;
+    std::array<std::vector<Case>, filtered::row_count> by_row;
+    filtered::Stats stats;  // one pass of the default query with statistics
     long wrong_default = 0;
 };
 
@@ -157,16 +90,10 @@ void timed(benchmark::State& state, const std::vector<Case>* cases) {
 
 void add(const std::string& name, Method m, const std::vector<Case>* cases) {
     if (cases->empty()) return;
-    switch (m) {
-        case Method::default_query: benchmark::RegisterBenchmark(name.c_str(), timed<Method::default_query>, cases); break;
-        case Method::without_middle: benchmark::RegisterBenchmark(name.c_str(), timed<Method::without_middle>, cases); break;
-        case Method::double_s4: benchmark::RegisterBenchmark(name.c_str(), timed<Method::double_s4>, cases); break;
-        case Method::bounded: benchmark::RegisterBenchmark(name.c_str(), timed<Method::bounded>, cases); break;
-        case Method::interval: benchmark::RegisterBenchmark(name.c_str(), timed<Method::interval>, cases); break;
-        case Method::thorough: benchmark::RegisterBenchmark(name.c_str(), timed<Method::thorough>, cases); break;
-        case Method::middle: benchmark::RegisterBenchmark(name.c_str(), timed<Method::middle>, cases); break;
-        case Method::kCount: break;
-    }
+    if (m == Method::default_query)
+        benchmark::RegisterBenchmark(name.c_str(), timed<Method::default_query>, cases);
+    else
+        benchmark::RegisterBenchmark(name.c_str(), timed<Method::double_s4>, cases);
 }
 
 // ---- the voxel workload: per-box cost through the three interfaces ----
@@ -265,64 +192,43 @@ double ns(const std::string& name) {
 }
 
 void summary(std::FILE* out, const std::vector<Set>& sets) {
-    std::fprintf(out, "\n**The sets** (%s; time per query, median of the repetitions; ratios from this run)\n\n", kBuild);
-    std::fprintf(out, "| set | queries | default | without middle | double §4 | default / double §4 | without middle / double §4 | wrong (default vs oracle) |\n");
-    std::fprintf(out, "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
-    for (const Set& s : sets) {
-        const double d = ns(s.name + "/default"), w = ns(s.name + "/without_middle"), b = ns(s.name + "/double_s4");
-        std::fprintf(out, "| %s | %zu | %s | %s | %s | %s | %s | %ld |\n", s.title.c_str(), s.cases.size(), ns_text(d).c_str(),
-                     ns_text(w).c_str(), ns_text(b).c_str(), ratio_text(d / b).c_str(), ratio_text(w / b).c_str(),
-                     s.wrong_default);
-    }
-    std::fprintf(out, "\n**By deciding stage** (queries each stage decides; the default query's mean time on that subset "
-                      "timed alone, and the subset's share of the set's total; *without middle*: the same subset "
-                      "through the pipeline without the middle stage)\n\n");
-    std::fprintf(out, "| set | stage | queries | share of queries | default, per query | share of time | without middle, per query |\n");
-    std::fprintf(out, "| --- | --- | ---: | ---: | ---: | ---: | ---: |\n");
-    for (const Set& s : sets) {
-        double total = 0;
-        for (int k = 0; k < kStages; ++k) {
-            const double t = ns(s.name + "/stage_" + std::to_string(k) + "/default");
-            if (t > 0) total += t * double(s.by_stage[k].size());
-        }
-        for (int k = 0; k < kStages; ++k) {
-            const std::size_t n = s.by_stage[k].size();
-            if (n == 0) continue;
-            const double t = ns(s.name + "/stage_" + std::to_string(k) + "/default");
-            const double w = ns(s.name + "/stage_" + std::to_string(k) + "/without_middle");
-            std::fprintf(out, "| %s | %s | %zu | %s | %s | %s | %s |\n", s.name.c_str(), kStageName[k], n,
-                         fmt("%.2f%%", 100.0 * double(n) / double(s.cases.size())).c_str(), ns_text(t).c_str(),
-                         total > 0 && t > 0 ? fmt("%.1f%%", 100.0 * t * double(n) / total).c_str() : "—",
-                         ns_text(w).c_str());
-        }
-    }
-    std::fprintf(out, "\n**The stages alone on the queries the middle stage decides** (mean time per query of each "
-                      "function called by itself: stage 1 with Bounded, with Interval, the thorough witness search, and "
-                      "the middle stage)\n\n");
-    std::fprintf(out, "| set | queries | stage 1, Bounded | stage 1, Interval | thorough witness search | middle stage |\n");
+    std::fprintf(out, "\n**The sets** (time per query, median of the repetitions; ratios from this run)\n\n");
+    std::fprintf(out, "| set | queries | default | double §4 | default / double §4 | wrong (default vs oracle) |\n");
     std::fprintf(out, "| --- | ---: | ---: | ---: | ---: | ---: |\n");
     for (const Set& s : sets) {
-        if (s.by_stage[smiddle].empty()) continue;
-        const std::string base = s.name + "/stage_" + std::to_string(smiddle) + "/";
-        std::fprintf(out, "| %s | %zu | %s | %s | %s | %s |\n", s.name.c_str(), s.by_stage[smiddle].size(),
-                     ns_text(ns(base + "alone_bounded")).c_str(), ns_text(ns(base + "alone_interval")).c_str(),
-                     ns_text(ns(base + "alone_thorough_search")).c_str(), ns_text(ns(base + "alone_middle")).c_str());
+        const double d = ns(s.name + "/default"), b = ns(s.name + "/double_s4");
+        std::fprintf(out, "| %s | %zu | %s | %s | %s | %ld |\n", s.title.c_str(), s.cases.size(), ns_text(d).c_str(),
+                     ns_text(b).c_str(), ratio_text(d / b).c_str(), s.wrong_default);
     }
-    std::fprintf(out, "\n**The same on the queries stage 1's Bounded run decides** (those not near touching: why it "
-                      "runs before the middle stage there)\n\n");
-    std::fprintf(out, "| set | queries | stage 1, Bounded | middle stage |\n| --- | ---: | ---: | ---: |\n");
+    std::fprintf(out, "\n**By deciding row** (the queries each row of the pipeline decides, and the default query's "
+                      "mean time on them, timed on their own; their share of the set's total time)\n\n");
+    std::fprintf(out, "| set | row | queries | share of queries | default, per query | share of time |\n");
+    std::fprintf(out, "| --- | --- | ---: | ---: | ---: | ---: |\n");
     for (const Set& s : sets) {
-        if (s.by_stage[s1b].empty()) continue;
-        const std::string base = s.name + "/stage_" + std::to_string(s1b) + "/";
-        std::fprintf(out, "| %s | %zu | %s | %s |\n", s.name.c_str(), s.by_stage[s1b].size(),
-                     ns_text(ns(base + "alone_bounded")).c_str(), ns_text(ns(base + "alone_middle")).c_str());
+        double total = 0;
+        for (std::size_t k = 0; k < filtered::row_count; ++k) {
+            const double t = ns(s.name + "/row_" + std::to_string(k));
+            if (t > 0) total += t * double(s.by_row[k].size());
+        }
+        for (std::size_t k = 0; k < filtered::row_count; ++k) {
+            const std::size_t n = s.by_row[k].size();
+            if (n == 0) continue;
+            const double t = ns(s.name + "/row_" + std::to_string(k));
+            std::fprintf(out, "| %s | `%s` | %zu | %s | %s | %s |\n", s.name.c_str(),
+                         std::string(filtered::name(static_cast<filtered::RowId>(k))).c_str(), n,
+                         fmt("%.2f%%", 100.0 * double(n) / double(s.cases.size())).c_str(), ns_text(t).c_str(),
+                         total > 0 && t > 0 ? fmt("%.1f%%", 100.0 * t * double(n) / total).c_str() : "—");
+        }
     }
+    std::fprintf(out, "\n**Per-row statistics from the library** (`filtered::Stats`, one pass over each set: how often "
+                      "each row ran and decided, and the time in its certifier; the counted query reads a steady clock "
+                      "around each row, so compare rows with each other, not with the timings above)\n");
+    for (const Set& s : sets) std::fprintf(out, "\n%s:\n\n%s", s.name.c_str(), s.stats.table().c_str());
     std::fprintf(out, "\n**Voxels touching a cylinder** (%zu unit cells of [%d, %d]³, cylinder radius 8, height 16, centre on "
                       "the grid node 0, axis z; time per box, one thread)\n\n",
                  kVoxelCells, kLo, kHi);
-    std::fprintf(out, "| interface | per box (%s) |\n| --- | ---: |\n", kBuild);
+    std::fprintf(out, "| interface | per box |\n| --- | ---: |\n");
     std::fprintf(out, "| scalar default query, every cell | %s |\n", ns_text(ns("voxels/default")).c_str());
-    std::fprintf(out, "| scalar, pipeline without the middle stage | %s |\n", ns_text(ns("voxels/without_middle")).c_str());
     std::fprintf(out, "| scalar double §4 | %s |\n", ns_text(ns("voxels/double_s4")).c_str());
     std::fprintf(out, "| batch API (`batch::intersects`, aligned boxes) | %s |\n", ns_text(ns("voxels/batch")).c_str());
     std::fprintf(out, "| grid query (`for_each_cell`, per cell of the grid) | %s |\n", ns_text(ns("voxels/grid")).c_str());
@@ -392,22 +298,15 @@ int main(int argc, char** argv) {
     }
     for (Set& s : sets) {
         for (const Case& c : s.cases) {
-            const Stage st = with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return deciding_stage(b, cyl); });
-            s.by_stage[st].push_back(c);
+            s.by_row[static_cast<std::size_t>(deciding_row(c, s.stats))].push_back(c);
             s.wrong_default += answer<Method::default_query>(c) != boxcyl::testing::oracle_answer(c);
         }
     }
 
     for (const Set& s : sets) {
-        for (int m = 0; m < 3; ++m) add(s.name + "/" + kMethodKey[m], Method(m), &s.cases);
-        for (int k = 0; k < kStages; ++k) {
-            add(s.name + "/stage_" + std::to_string(k) + "/default", Method::default_query, &s.by_stage[k]);
-            add(s.name + "/stage_" + std::to_string(k) + "/without_middle", Method::without_middle, &s.by_stage[k]);
-        }
-        for (int m = int(Method::bounded); m < int(Method::kCount); ++m)
-            add(s.name + "/stage_" + std::to_string(smiddle) + "/" + kMethodKey[m], Method(m), &s.by_stage[smiddle]);
-        for (Method m : {Method::bounded, Method::middle})
-            add(s.name + "/stage_" + std::to_string(s1b) + "/" + kMethodKey[int(m)], m, &s.by_stage[s1b]);
+        for (int m = 0; m < 2; ++m) add(s.name + "/" + kMethodKey[m], Method(m), &s.cases);
+        for (std::size_t k = 0; k < filtered::row_count; ++k)
+            add(s.name + "/row_" + std::to_string(k), Method::default_query, &s.by_row[k]);
     }
     benchmark::RegisterBenchmark("voxels/batch", voxel_batch);
     benchmark::RegisterBenchmark("voxels/grid", voxel_grid);

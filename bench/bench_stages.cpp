@@ -1,13 +1,13 @@
 // Where the default query's time goes, stage by stage (docs/performance.md, *Analysis*): on
 // bench_query's random set (the same 4096 queries, CaseGenerator seed 0xb0c5c701, all box kinds),
 //   problem:           semi_static::problem() alone (the canonical problem, with the unit axis)
-//   stage0/all:        semi_static::filter() (problem and decision), on every query
+//   stage0/all:        stage 0 (problem and decision), on every query
 //   stage0/tiny_axis:  the same on the queries whose axis has a component below 1e-200 (a third)
 //   default:           boxcyl::intersects (the front door), on every query
 //   default_on_left:   boxcyl::intersects on the queries stage 0 leaves undecided only
 //   default_on_stage0 / _on_0b / _beyond_0b: the same on the queries stage 0 decides, on those stage 0b
 //                      decides, and on those both leave (stage 1 and after): the mean's budget by stage
-//   stage0/left:       semi_static::filter() on the queries it leaves (what failing every test costs)
+//   stage0/left:       stage 0 on the queries it leaves (what failing every test costs)
 // Counters: ns_per_query (CPU time per query of the set timed; Google Benchmark prints it as seconds:
 // "55.1s" is 55.1 ns), left_pct (the share of the set that stage 0 leaves), left and left_after_0b (how
 // many queries of the set stage 0 leaves, and how many of those stage 0b leaves too) and, for the
@@ -28,6 +28,7 @@
 
 #include "boxcyl/query.hpp"
 #include "support/cases.hpp"
+#include "support/stages.hpp"
 
 namespace {
 
@@ -52,12 +53,12 @@ const Sets& sets() {
         boxcyl::testing::CaseGenerator gen(kRandomSeed);
         for (std::size_t i = 0; i < kQueries; ++i) r.all.push_back(gen.next());
         for (const Case& c : r.all)
-            (with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::semi_static::filter(b, cyl); })
+            (with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return boxcyl::testing::stage0(b, cyl); })
                  ? r.stage0
                  : r.left)
                 .push_back(c);
         for (const Case& c : r.left)
-            (with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::witness_search::decide(b, cyl); })
+            (with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return boxcyl::testing::stage0b(b, cyl); })
                  ? r.by_0b
                  : r.beyond_0b)
                 .push_back(c);
@@ -119,7 +120,7 @@ void stage0(benchmark::State& state, Subset which) {
         long decided = 0;
         for (const Case& c : all)
             decided += with_box(c, [](const auto& b, const Cylinder<double>& cyl) {
-                           return filtered::semi_static::filter(b, cyl);
+                           return boxcyl::testing::stage0(b, cyl);
                        }).has_value();
         benchmark::DoNotOptimize(decided);
     }

@@ -24,7 +24,7 @@
 #include <vector>     // point lists
 
 #include "boxcyl/geometry/reduce.hpp"
-#include "boxcyl/geometry/reduce_exact.hpp"
+#include "boxcyl/exact/reduce.hpp"
 #include "boxcyl/number/qfield.hpp"
 #include "boxcyl/number/rational.hpp"
 #include "boxcyl/oracle/oracle.hpp"

@@ -28,6 +28,7 @@
 #include <vector>    // series programs
 
 #include "boxcyl/exact/integer_inequalities.hpp"
+#include "boxcyl/exact/answer.hpp"
 #include "boxcyl/exact/integer_parallelepiped.hpp"
 #include "boxcyl/filtered.hpp"
 #include "boxcyl/number/qfield.hpp"
@@ -41,10 +42,12 @@ namespace {
 
 using namespace boxcyl::testing;
 
+Parallelepiped<double> as_parallelepiped(const OrientedBox<double>& b) { return {b.center, b.axes, b.extents}; }
+
 // The integer stage's answer, or nullopt for an oriented box without an exact canonical frame.
 std::optional<bool> integer_answer(const Case& c) {
     return with_box(c, [](const auto& b, const Cylinder<double>& cyl) -> std::optional<bool> {
-        return exact::integer::intersects(b, cyl);
+        return exact::integer::answer(b, cyl);
     });
 }
 
@@ -61,7 +64,7 @@ struct StageTally {
                               << describe(c);
         }
         if (c.kind == BoxKind::oriented) {
-            if (const std::optional<bool> got = exact::integer::intersects_parallelepiped(c.oriented, c.cylinder)) {
+            if (const std::optional<bool> got = exact::integer::intersects_parallelepiped(as_parallelepiped(c.oriented), c.cylinder)) {
                 ++judged_parallelepiped;
                 if (*got != want && ++wrong <= 10)
                     ADD_FAILURE() << where << ": parallelepiped stage answered " << *got << ", oracle " << want << "\n  "
@@ -214,16 +217,16 @@ TEST(ExactStage, HandMadeTouchingCases) {
         c.aligned = unit;
         c.cylinder = k.cyl;
         ASSERT_EQ(oracle_answer(c), k.hit) << k.what << " (the case itself is wrong): " << describe(c);
-        EXPECT_EQ(exact::integer::intersects(unit, k.cyl), k.hit) << k.what << ": " << describe(c);
+        EXPECT_EQ(exact::integer::answer(unit, k.cyl), k.hit) << k.what << ": " << describe(c);
         EXPECT_EQ(filtered::intersects(unit, k.cyl), k.hit) << k.what << ": " << describe(c);
         // The same as a canonical box (centre moved by −(0.5, 0.5, 0.5), exact) and a signed permutation.
         Cylinder<double> moved = k.cyl;
         for (int i = 0; i < 3; ++i) moved.center[i] -= 0.5;
-        EXPECT_EQ(exact::integer::intersects(CanonicalBox<double>{{0.5, 0.5, 0.5}}, moved), k.hit) << k.what << " canonical";
+        EXPECT_EQ(exact::integer::answer(CanonicalBox<double>{{0.5, 0.5, 0.5}}, moved), k.hit) << k.what << " canonical";
         const OrientedBox<double> turned{{0.5, 0.5, 0.5},
                                          {Vec3<double>{0, 1, 0}, Vec3<double>{0, 0, -1}, Vec3<double>{-1, 0, 0}},
                                          {0.5, 0.5, 0.5}};
-        EXPECT_EQ(exact::integer::intersects(turned, k.cyl), std::optional<bool>(k.hit)) << k.what << " oriented";
+        EXPECT_EQ(exact::integer::answer(turned, k.cyl), std::optional<bool>(k.hit)) << k.what << " oriented";
     }
 }
 
@@ -520,8 +523,7 @@ TEST(ExactStage, TwoScaleInputsAgreeWithOracle) {
     auto check = [&](const Case& c, const std::string& where) {
         const std::optional<bool> got = with_box(c, [](const auto& b, const Cylinder<double>& cyl) -> std::optional<bool> {
             if constexpr (std::is_same_v<std::decay_t<decltype(b)>, OrientedBox<double>>) {
-                int perm[3], sign[3];
-                if (!exact::integer::signed_permutation(b.axes, perm, sign)) return std::nullopt;
+                if (!signed_permutation(b.axes)) return std::nullopt;
             }
             return exact::integer::answer_two_scale(b, cyl);
         });
@@ -537,8 +539,7 @@ TEST(ExactStage, TwoScaleInputsAgreeWithOracle) {
     for (long i = 0; i < n; ++i) {
         Case c = gen.next();
         if (c.kind == BoxKind::oriented) {
-            int perm[3], sign[3];
-            if (!exact::integer::signed_permutation(c.oriented.axes, perm, sign)) continue;
+            if (!signed_permutation(c.oriented.axes)) continue;
         }
         Vec3<double>& axis = c.cylinder.axis;
         int zero = -1;
@@ -589,7 +590,7 @@ TEST(ExactStage, NarrowTwoScaleInputsAnswerBeforeTheMiddleStage) {
                     c.cylinder = Cylinder<double>{{0, 1.5, 0}, {1, side * k * denorm, 0}, r, h};
                     const bool want = oracle_answer(c);
                     ASSERT_TRUE(exact::integer::narrow_two_scale(c.aligned, c.cylinder)) << describe(c);
-                    EXPECT_EQ(exact::integer::answer_if_narrow_two_scale(c.aligned, c.cylinder), std::optional<bool>(want))
+                    EXPECT_EQ(exact::answer(c.aligned, c.cylinder, exact::Tier::series), std::optional<bool>(want))
                         << describe(c);
                     const filtered::Result got = filtered::query(c.aligned, c.cylinder);
                     EXPECT_EQ(got.intersect, want) << describe(c);
@@ -606,7 +607,7 @@ TEST(ExactStage, NarrowTwoScaleInputsAnswerBeforeTheMiddleStage) {
         const bool want = oracle_answer(c);
         EXPECT_EQ(want, r >= s) << describe(c);
         ASSERT_TRUE(exact::integer::narrow_two_scale(c.aligned, c.cylinder)) << describe(c);
-        EXPECT_EQ(exact::integer::answer_if_narrow_two_scale(c.aligned, c.cylinder), std::optional<bool>(want))
+        EXPECT_EQ(exact::answer(c.aligned, c.cylinder, exact::Tier::series), std::optional<bool>(want))
             << describe(c);
         const filtered::Result got = filtered::query(c.aligned, c.cylinder);
         EXPECT_EQ(got.intersect, want) << describe(c);
@@ -761,7 +762,7 @@ TEST(ExactStage, ParallelepipedAgreesWithOracle) {
         c.oriented = b;
         c.cylinder = cyl;
         ASSERT_EQ(oracle_answer(c), hit) << describe(c);
-        EXPECT_EQ(exact::integer::intersects_parallelepiped(b, cyl), std::optional<bool>(hit)) << describe(c);
+        EXPECT_EQ(exact::integer::intersects_parallelepiped(as_parallelepiped(b), cyl), std::optional<bool>(hit)) << describe(c);
         EXPECT_EQ(filtered::intersects(b, cyl), hit) << describe(c);
     }
 

@@ -24,7 +24,7 @@
 
 #include "boxcyl/algo/linear_inequalities.hpp"
 #include "boxcyl/geometry/reduce.hpp"
-#include "boxcyl/geometry/reduce_exact.hpp"
+#include "boxcyl/exact/reduce.hpp"
 #include "boxcyl/oracle/oracle.hpp"
 #include "support/cases.hpp"
 #include "support/tolerance.hpp"

@@ -203,7 +203,7 @@ TEST(DoubleDouble, ProbeSeesTheRoundingMode) {
 // ---- The clipped-candidates test (rotated frames) ----
 
 std::optional<bool> clipped_answer(const OrientedBox<double>& b, const Cylinder<double>& c) {
-    return filtered::detail::middle_clipped(b, c);
+    return filtered::enclosed::clipped_candidates(b, c, filtered::scale_exponent(filtered::largest_length(b, c)));
 }
 
 // A rounded rotation, a box on it, and a cylinder placed against its face k (side parallel to the face
@@ -282,9 +282,9 @@ TEST(ClippedCandidates, RandomAndBoundaryQueriesAgreeWithOracle) {
 // ---- The order of the stages: the plain-double hint ----
 
 bool hint(const AlignedBox<double>& b, const Cylinder<double>& c) {
-    filtered::semi_static::Problem p;
-    EXPECT_TRUE(filtered::semi_static::problem(b, c, p));
-    return filtered::detail::looks_near_touching(b, c, p, true);
+    filtered::Prepared<AlignedBox<double>> q(b, c);
+    EXPECT_TRUE(q.in_range);
+    return q.looks_near();
 }
 
 TEST(NearTouchingHint, ContactsAreNearFarQueriesAreNot) {
@@ -332,8 +332,8 @@ TEST(NearTouchingHint, ContactsAreNearFarQueriesAreNot) {
         for (const Cylinder<double>& c : {pair.miss, pair.hit}) {
             filtered::semi_static::Problem p;
             ASSERT_TRUE(filtered::semi_static::problem(pair.box, c, p));
-            EXPECT_FALSE(filtered::witness_search::near_touching(p, pair.box)) << filtered::detail::describe(c);
-            EXPECT_TRUE(filtered::detail::answer_moves(pair.box, c)) << filtered::detail::describe(c);
+            EXPECT_FALSE(filtered::witness_search::near_touching(p, filtered::semi_static::aligned_kappas)) << filtered::detail::describe(c);
+            EXPECT_TRUE(filtered::answer_moves(pair.box, c, filtered::largest_length(pair.box, c))) << filtered::detail::describe(c);
             EXPECT_TRUE(hint(pair.box, c)) << filtered::detail::describe(c);
             Case k;
             k.kind = BoxKind::aligned;

@@ -22,7 +22,7 @@
 #include "boxcyl/algo/lcp_solver.hpp"
 #include "boxcyl/algo/quadratic_programming.hpp"
 #include "boxcyl/geometry/reduce.hpp"
-#include "boxcyl/geometry/reduce_exact.hpp"
+#include "boxcyl/exact/reduce.hpp"
 #include "boxcyl/number/qfield.hpp"
 #include "boxcyl/number/rational.hpp"
 #include "boxcyl/oracle/oracle.hpp"

@@ -15,7 +15,7 @@
 //   Algorithm::lcp           convex QP as an LCP (Lemke)           algo/quadratic_programming.hpp
 //   Algorithm::oracle        the exact reference, any arithmetic    oracle/oracle.hpp
 //   Arithmetic::float32 / float64: rounded; may misjudge inputs within a tiny gap of touching.
-//   Arithmetic::exact: rationals and a + b·√d, exact for the inputs as given (exact_paths.hpp).
+//   Arithmetic::exact: rationals and a + b·√d, exact for the inputs as given (exact/paths.hpp).
 //   Arithmetic::filtered (default): the exact answer; with inequalities through the filter above, with
 //   hull/lcp
 //                        (which have no filter) through Arithmetic::exact.
@@ -25,7 +25,7 @@
 // not exactly orthonormal). The oracle and Arithmetic::exact need
 // the exact backend (link boxcyl::exact, which defines BOXCYL_HAS_EXACT); without it, choosing them
 // throws std::invalid_argument. The exact LCP and linear-inequalities methods on an oriented box whose
-// axes are not exactly orthonormal throw std::domain_error (see exact_paths.hpp); the convex-hull
+// axes are not exactly orthonormal throw std::domain_error (see exact/paths.hpp); the convex-hull
 // method and the oracle handle any box.
 #pragma once
 
@@ -44,9 +44,9 @@
 #include "boxcyl/geometry/validate.hpp"
 #include "boxcyl/options.hpp"
 #if defined(BOXCYL_HAS_EXACT)
-#include "boxcyl/exact_paths.hpp"
+#include "boxcyl/exact/answer.hpp"
+#include "boxcyl/exact/paths.hpp"
 #include "boxcyl/filtered.hpp"
-#include "boxcyl/filtered/parallelepiped.hpp"
 #include "boxcyl/oracle/oracle.hpp"
 #endif
 
@@ -99,6 +99,15 @@ std::optional<bool> rounded(Algorithm a, const Box& box, const Cylinder<T>& cyl)
 }
 
 #if defined(BOXCYL_HAS_EXACT)
+// The exact default, float inputs widened exactly, counted when the options carry statistics.
+template <class Box, class T>
+bool filtered_query(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
+    if constexpr (!std::is_same_v<T, double>)
+        return filtered_query(cast<double>(box), cast<double>(cyl), opt);
+    else
+        return opt.stats ? filtered::query(box, cyl, *opt.stats).intersect : filtered::query(box, cyl).intersect;
+}
+
 inline exact::Method exact_method(Algorithm a) {
     switch (a) {
         case Algorithm::inequalities: return exact::Method::inequalities;
@@ -132,12 +141,7 @@ bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
 #if defined(BOXCYL_HAS_EXACT)
     // The default first, before any rational is built: the filter decides most queries in plain double,
     // and converting the inputs to GMP rationals alone costs ten times the filter.
-    if (opt.arithmetic == Arithmetic::filtered && opt.algorithm == Algorithm::inequalities) {
-        if constexpr (std::is_same_v<T, double>)
-            return filtered::query(box, cyl).intersect;
-        else
-            return filtered::query(cast<double>(box), cast<double>(cyl)).intersect;
-    }
+    if (opt.arithmetic == Arithmetic::filtered && opt.algorithm == Algorithm::inequalities) return filtered_query(box, cyl, opt);
     const auto ebox = to_exact(cast<double>(box));
     const auto ecyl = to_exact(cast<double>(cyl));
     if (opt.algorithm == Algorithm::oracle) return oracle::intersects(ebox, ecyl);
@@ -156,7 +160,7 @@ bool dispatch(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
 }
 
 // A Parallelepiped with options. Arithmetic::filtered: the exact answer whatever the algorithm (the
-// fast stage of filtered/parallelepiped.hpp for §4, exact §3 for §2/§3). §3 and the oracle take any
+// certificates of filtered/parallelepiped.hpp for §4, exact §3 for §2/§3). §3 and the oracle take any
 // parallelepiped in every arithmetic. §2 and §4 need an orthonormal box frame: axes that pass
 // OrientedBox's contract (orthonormal within 1e-4) are that oriented box, with its rules; any other
 // axes throw std::domain_error rather than answer for a different solid.
@@ -177,16 +181,11 @@ bool dispatch(const Parallelepiped<T>& box, const Cylinder<T>& cyl, const QueryO
         return opt.arithmetic == Arithmetic::float32 ? hull(0.0f) : hull(0.0);
     }
 #if defined(BOXCYL_HAS_EXACT)
-    if (opt.arithmetic == Arithmetic::filtered) {
-        if constexpr (std::is_same_v<T, double>)
-            return filtered::query(box, cyl).intersect;
-        else
-            return filtered::query(cast<double>(box), cast<double>(cyl)).intersect;
-    }
+    if (opt.arithmetic == Arithmetic::filtered) return filtered_query(box, cyl, opt);
     if (opt.algorithm == Algorithm::oracle || opt.algorithm == Algorithm::hull) {
         const Parallelepiped<double> b = cast<double>(box);
         if (opt.algorithm == Algorithm::oracle) return oracle::intersects(to_exact(b), to_exact(cast<double>(cyl)));
-        return filtered::parallelepiped_detail::exact_answer(b, cast<double>(cyl));
+        return *exact::answer(b, cast<double>(cyl));
     }
 #else
     if (!rounded_arithmetic || opt.algorithm == Algorithm::oracle)

@@ -2,7 +2,7 @@
 //     minimise f(x) = ½ xᵀA x + bᵀx   subject to  x ≥ 0,  D x ≥ e,
 // solved through its KKT linear complementarity problem (the published note's eq. (8)) by Lemke's method
 // (lcp_solver.hpp). Generic over T; exact for exact T whose cylinder direction is exactly unit
-// (QFRational from reduce_exact.hpp's to_unit, or Rational for rational unit directions).
+// (QFRational from exact/reduce.hpp's to_unit, or Rational for rational unit directions).
 //
 // Beyond the published note (each exact, so exact answers are those of the published method; each for
 // floating point's sake):

@@ -45,13 +45,6 @@
 
 // Small steps called per vector of boxes: GCC at -O2 keeps some out of line (7% of the 10M-box
 // benchmark's profile in calls).
-#if defined(__GNUC__) || defined(__clang__)
-#define BOXCYL_BATCH_INLINE [[gnu::always_inline]] inline
-#define BOXCYL_BATCH_LAMBDA_INLINE __attribute__((always_inline))  // after a lambda's parameter list
-#else
-#define BOXCYL_BATCH_INLINE inline
-#define BOXCYL_BATCH_LAMBDA_INLINE
-#endif
 
 // The instruction-set namespace: everything below depends on the vector width, so each compiled
 // instruction set gets its own namespace (inline, so that boxcyl::batch::detail::… names the includer's
@@ -247,7 +240,7 @@ struct LaneResult {
     LaneMask hit;
 };
 
-BOXCYL_BATCH_INLINE Lanes clamp(const Lanes& x, const Lanes& lo, const Lanes& hi) { return stdx::min(stdx::max(x, lo), hi); }
+BOXCYL_FORCE_INLINE inline Lanes clamp(const Lanes& x, const Lanes& lo, const Lanes& hi) { return stdx::min(stdx::max(x, lo), hi); }
 
 // The certified tests at a box point w, given as v (relative to C) exact up to `ev` per component
 // (ev = 0 when v_j is within 2^-52|v_j| of w_j): with a = u·w,
@@ -259,7 +252,7 @@ BOXCYL_BATCH_INLINE Lanes clamp(const Lanes& x, const Lanes& lo, const Lanes& hi
 struct PointTests {
     LaneMask radial, below_top, above_bottom;
 };
-BOXCYL_BATCH_INLINE PointTests point_tests(const CylinderFilter& f, const Lanes v[3], const Lanes& ev) {
+BOXCYL_FORCE_INLINE inline PointTests point_tests(const CylinderFilter& f, const Lanes v[3], const Lanes& ev) {
     const Lanes a = f.u[0] * v[0] + f.u[1] * v[1] + f.u[2] * v[2];
     const Lanes sa = std::fabs(f.u[0]) * stdx::abs(v[0]) + std::fabs(f.u[1]) * stdx::abs(v[1]) +
                      std::fabs(f.u[2]) * stdx::abs(v[2]);
@@ -279,7 +272,7 @@ BOXCYL_BATCH_INLINE PointTests point_tests(const CylinderFilter& f, const Lanes 
 // and radially inside (the distance to the axis line is convex), and a is affine along it, so one of
 // its points has |a| ≤ H: it lies in the cylinder. (One point with both is the plain case; two points
 // on either side of the end planes certify the hits of disks, h = 0, and of boxes over an end.)
-BOXCYL_BATCH_INLINE LaneMask certain_hit(const PointTests* p, int count) {
+BOXCYL_FORCE_INLINE inline LaneMask certain_hit(const PointTests* p, int count) {
     LaneMask low(false), high(false);
     for (int k = 0; k < count; ++k) {
         low = low || (p[k].radial && p[k].below_top);
@@ -291,7 +284,7 @@ BOXCYL_BATCH_INLINE LaneMask certain_hit(const PointTests* p, int count) {
 // Normalises n in place (n/|n|, rounded: any double vector is a valid direction) and reports the lanes
 // where that worked and |n| ≤ 1 + 2^-42 is certain: Σ n̂_j² computed ≤ 1 + 2^-42 gives
 // |n̂|² ≤ (1 + 2^-42)(1 + 2^-49) + 3·2^-1074 < (1 + 2^-42)² (r_n carries 1 + 2^-40).
-BOXCYL_BATCH_INLINE LaneMask normalise(Lanes n[3]) {
+BOXCYL_FORCE_INLINE inline LaneMask normalise(Lanes n[3]) {
     const Lanes nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
     LaneMask ok = nn >= 0x1p-600 && nn <= 0x1p600;
     Lanes s = 1;
@@ -307,7 +300,7 @@ BOXCYL_BATCH_INLINE LaneMask normalise(Lanes n[3]) {
 // (rounded down: (·)(1 − 2^-50)), √(|n̂|² − (u·n̂)²) ≤ √(1 + 2^-40 − p_lo²) ≤ s_up, computed with the
 // factors (1 − 2^-50) on p_lo² and (1 + 2^-50) on the root that cover its four roundings. Miss if
 // −(Ŝ⁺ + H(|p̂| + e_p) + r·s_up) > K(err_s + H(|p̂| + e_p) + r·s_up) + τ.
-BOXCYL_BATCH_INLINE LaneMask radial_miss(const CylinderFilter& f, const Lanes n[3], const Lanes& s_plus, const Lanes& err_s) {
+BOXCYL_FORCE_INLINE inline LaneMask radial_miss(const CylinderFilter& f, const Lanes n[3], const Lanes& s_plus, const Lanes& err_s) {
     Lanes p = 0, tpu = 0, sn = 0;
     for (int j = 0; j < 3; ++j) {
         p += f.u[j] * n[j];
@@ -327,7 +320,7 @@ BOXCYL_BATCH_INLINE LaneMask radial_miss(const CylinderFilter& f, const Lanes n[
 // Moves w (relative to C) to the nearest point of the cylinder shrunk by the depth f.aim (radius and
 // half-height each less by it), in plain double: only a choice of the next target, nothing is
 // concluded from it.
-BOXCYL_BATCH_INLINE void into_cylinder(const CylinderFilter& f, const Lanes w[3], Lanes y[3]) {
+BOXCYL_FORCE_INLINE inline void into_cylinder(const CylinderFilter& f, const Lanes w[3], Lanes y[3]) {
     const Lanes a = f.u[0] * w[0] + f.u[1] * w[1] + f.u[2] * w[2];
     const double h7 = f.h - f.aim;
     const Lanes ac = clamp(a, -h7, h7);
@@ -352,7 +345,7 @@ BOXCYL_BATCH_INLINE void into_cylinder(const CylinderFilter& f, const Lanes w[3]
 // boxes reach it in their second pass, whose vectors are gathered already: a pass of its own gained
 // nothing there.
 template <class ToBox>
-BOXCYL_BATCH_INLINE LaneMask search_hits(const CylinderFilter& f, const LaneMask& ok, const LaneMask& done,
+BOXCYL_FORCE_INLINE inline LaneMask search_hits(const CylinderFilter& f, const LaneMask& ok, const LaneMask& done,
                                          PointTests pt[4], const Lanes w0[3], const Lanes& ev, ToBox&& to_box) {
     Lanes w[3] = {w0[0], w0[1], w0[2]};
     LaneMask hit(false);
@@ -386,7 +379,7 @@ BOXCYL_BATCH_INLINE LaneMask search_hits(const CylinderFilter& f, const LaneMask
 //                                                               and 2H − |Â| > κ(2H + |Â| + Ŝ1) + τ.
 // Eligible: Ŝ1, T̂ ≤ 2^200 (false for NaN and ∞), so nothing overflows. Lanes that none of these decide
 // (boxes near the surface, big boxes) go on to aligned_lanes.
-BOXCYL_BATCH_INLINE LaneResult aligned_ball_lanes(const CylinderFilter& f, const Lanes lo[3], const Lanes hi[3]) {
+BOXCYL_FORCE_INLINE inline LaneResult aligned_ball_lanes(const CylinderFilter& f, const Lanes lo[3], const Lanes hi[3]) {
     // The bounding boxes first: on voxel-like data most vectors end here, and the branch saves the
     // rest of the pass. Exact: for doubles x, y (±∞ included, never NaN here) fl(x − y) > 0 iff x > y,
     // and one comparison of the largest difference costs fewer instructions than six of mask logic.
@@ -527,7 +520,7 @@ inline LaneResult aligned_lanes(const CylinderFilter& f, const Lanes lo[3], cons
     miss = miss || (ok && dir_ok && radial_miss(f, n, sp, tp));
     if (stdx::all_of(miss || hit)) return {miss || hit, hit};
     // Still undecided: the hit search, on these vectors (see `search_hits`).
-    const auto to_box = [&dlo, &dhi](const Lanes z[3], Lanes x[3]) BOXCYL_BATCH_LAMBDA_INLINE {
+    const auto to_box = [&dlo, &dhi](const Lanes z[3], Lanes x[3]) BOXCYL_FORCE_INLINE {
         for (int j = 0; j < 3; ++j) x[j] = clamp(z[j], dlo[j], dhi[j]);
     };
     hit = hit || search_hits(f, ok, miss || hit, pt, v, Lanes(0), to_box);
@@ -552,7 +545,7 @@ struct OrientedFrame {
     Lanes d[3], E, ev;
     LaneMask ok;
 };
-BOXCYL_BATCH_INLINE OrientedFrame oriented_frame(const CylinderFilter& f, const Lanes k[3], const Lanes A[3][3],
+BOXCYL_FORCE_INLINE inline OrientedFrame oriented_frame(const CylinderFilter& f, const Lanes k[3], const Lanes A[3][3],
                                                  const Lanes e[3]) {
     OrientedFrame o;
     for (int j = 0; j < 3; ++j) o.d[j] = k[j] - f.c[j];
@@ -566,13 +559,13 @@ BOXCYL_BATCH_INLINE OrientedFrame oriented_frame(const CylinderFilter& f, const 
     return o;
 }
 // The box's half-extent along û, Σ e_i|û·A_i|.
-BOXCYL_BATCH_INLINE Lanes oriented_extent(const CylinderFilter& f, const Lanes A[3][3], const Lanes e[3]) {
+BOXCYL_FORCE_INLINE inline Lanes oriented_extent(const CylinderFilter& f, const Lanes A[3][3], const Lanes e[3]) {
     Lanes ext = 0;
     for (int i = 0; i < 3; ++i) ext += e[i] * stdx::abs(f.u[0] * A[i][0] + f.u[1] * A[i][1] + f.u[2] * A[i][2]);
     return ext;
 }
 // The box point nearest (in box coordinates) to y: ξ clamped to ±e, v = d̂ + Σ ξ_i A_i.
-BOXCYL_BATCH_INLINE void oriented_point(const OrientedFrame& o, const Lanes A[3][3], const Lanes e[3], const Lanes y[3],
+BOXCYL_FORCE_INLINE inline void oriented_point(const OrientedFrame& o, const Lanes A[3][3], const Lanes e[3], const Lanes y[3],
                                         Lanes v[3]) {
     Lanes xi[3];
     for (int i = 0; i < 3; ++i)
@@ -581,7 +574,7 @@ BOXCYL_BATCH_INLINE void oriented_point(const OrientedFrame& o, const Lanes A[3]
 }
 // Box points nearest to three axis points, as for aligned boxes (λ half the extent along û): v the
 // one nearest to the axis point nearest to the centre; their tests in pt[0], pt[1], pt[2].
-BOXCYL_BATCH_INLINE void oriented_start(const CylinderFilter& f, const OrientedFrame& o, const Lanes A[3][3],
+BOXCYL_FORCE_INLINE inline void oriented_start(const CylinderFilter& f, const OrientedFrame& o, const Lanes A[3][3],
                                         const Lanes e[3], const Lanes& ext, Lanes v[3], PointTests pt[3]) {
     const Lanes t = clamp(f.u[0] * o.d[0] + f.u[1] * o.d[1] + f.u[2] * o.d[2], -f.h, f.h);
     const Lanes lambda = ext * 0.5;
@@ -597,7 +590,7 @@ BOXCYL_BATCH_INLINE void oriented_start(const CylinderFilter& f, const OrientedF
     pt[0] = point_tests(f, v, o.ev);
 }
 // One more step of alternating projection: the axis point y nearest to v, then v the box point nearest to y.
-BOXCYL_BATCH_INLINE void oriented_step(const CylinderFilter& f, const OrientedFrame& o, const Lanes A[3][3],
+BOXCYL_FORCE_INLINE inline void oriented_step(const CylinderFilter& f, const OrientedFrame& o, const Lanes A[3][3],
                                        const Lanes e[3], Lanes v[3], Lanes y[3]) {
     const Lanes t = clamp(f.u[0] * v[0] + f.u[1] * v[1] + f.u[2] * v[2], -f.h, f.h);
     for (int j = 0; j < 3; ++j) y[j] = t * f.u[j];
@@ -657,7 +650,7 @@ inline LaneResult oriented_search_lanes(const CylinderFilter& f, const Lanes k[3
     PointTests pt[4];
     oriented_start(f, o, A, e, oriented_extent(f, A, e), v, pt);
     oriented_step(f, o, A, e, v, y);
-    const auto to_box = [&](const Lanes z[3], Lanes w[3]) BOXCYL_BATCH_LAMBDA_INLINE { oriented_point(o, A, e, z, w); };
+    const auto to_box = [&](const Lanes z[3], Lanes w[3]) BOXCYL_FORCE_INLINE { oriented_point(o, A, e, z, w); };
     const LaneMask hit = search_hits(f, o.ok, LaneMask(false), pt, v, o.ev, to_box);
     return {hit, hit};
 }

@@ -37,7 +37,7 @@ namespace detail {
 // Loads lanes [i, i + valid) into full vectors; a short tail repeats its last box (its lanes are
 // computed and ignored).
 template <class T>
-BOXCYL_BATCH_INLINE void load(const T* p, std::size_t i, std::size_t valid, Lanes& out) {
+BOXCYL_FORCE_INLINE inline void load(const T* p, std::size_t i, std::size_t valid, Lanes& out) {
     if (valid == lane_count) {
         out.copy_from(p + i, stdx::element_aligned);  // converting load for float: exact
         return;
@@ -54,7 +54,7 @@ BOXCYL_BATCH_INLINE void load(const T* p, std::size_t i, std::size_t valid, Lane
 // random boxes 10.3 → 9.2 ns per box, near-surface aligned sets 7% faster). It inlines it for SSE2
 // and AVX2, where the set intrinsics were no faster.
 template <class Value>
-BOXCYL_BATCH_INLINE Lanes gather(const Value& value, const std::size_t* idx, std::size_t count) {
+BOXCYL_FORCE_INLINE inline Lanes gather(const Value& value, const std::size_t* idx, std::size_t count) {
     auto at = [&](std::size_t l) { return static_cast<double>(value(idx[std::min(l, count - 1)])); };
 #if defined(__AVX512F__)
     if constexpr (lane_count == 8)
@@ -67,7 +67,7 @@ BOXCYL_BATCH_INLINE Lanes gather(const Value& value, const std::size_t* idx, std
 // finite, extents ≥ 0, and the Gram matrix of the axes in double within 10^-12 inside validate()'s
 // tolerance (for axes of length about 1 its rounding error is below 10^-15, and an axis much longer
 // fails its diagonal entry whatever the rounding; NaN and ∞ fail every comparison).
-BOXCYL_BATCH_INLINE bool plausible(const Lanes k[3], const Lanes A[3][3], const Lanes e[3]) {
+BOXCYL_FORCE_INLINE inline bool plausible(const Lanes k[3], const Lanes A[3][3], const Lanes e[3]) {
     constexpr double top = std::numeric_limits<double>::max(), tol = orthonormality_tolerance - 1e-12;
     LaneMask ok = stdx::abs(k[0]) <= top && stdx::abs(k[1]) <= top && stdx::abs(k[2]) <= top && e[0] >= 0 &&
                   e[0] <= top && e[1] >= 0 && e[1] <= top && e[2] >= 0 && e[2] <= top;
@@ -81,7 +81,7 @@ BOXCYL_BATCH_INLINE bool plausible(const Lanes k[3], const Lanes A[3][3], const 
 
 // Whether every lane certainly passes is_valid (Options::check_boxes): hi − lo in [0, DBL_MAX] is false
 // for NaN, ±∞ and lo > hi (and for bounds whose difference overflows: is_valid judges those).
-BOXCYL_BATCH_INLINE bool plausible(const Lanes lo[3], const Lanes hi[3]) {
+BOXCYL_FORCE_INLINE inline bool plausible(const Lanes lo[3], const Lanes hi[3]) {
     constexpr double top = std::numeric_limits<double>::max();
     const Lanes d0 = hi[0] - lo[0], d1 = hi[1] - lo[1], d2 = hi[2] - lo[2];
     return stdx::all_of(d0 >= 0 && d0 <= top && d1 >= 0 && d1 <= top && d2 >= 0 && d2 <= top);
@@ -92,7 +92,7 @@ struct AlignedSource {
     const AlignedBoxes<T>& b;
 
     // First pass: lanes [i, i + valid) (block_bits runs the centre-and-ball tests on them).
-    BOXCYL_BATCH_INLINE void load_lanes(std::size_t i, std::size_t valid, Lanes lo[3], Lanes hi[3]) const {
+    BOXCYL_FORCE_INLINE inline void load_lanes(std::size_t i, std::size_t valid, Lanes lo[3], Lanes hi[3]) const {
         load(b.min_x.data(), i, valid, lo[0]);
         load(b.min_y.data(), i, valid, lo[1]);
         load(b.min_z.data(), i, valid, lo[2]);
@@ -132,7 +132,7 @@ struct AlignedRowsSource {
     // speed with it (64 and 256 boxes alike: bench/python_batch.py, aligned c++ rows against c++).
     static constexpr std::size_t kAhead = 64;
 
-    BOXCYL_BATCH_INLINE void load_lanes(std::size_t i, std::size_t valid, Lanes lo[3], Lanes hi[3]) const {
+    BOXCYL_FORCE_INLINE inline void load_lanes(std::size_t i, std::size_t valid, Lanes lo[3], Lanes hi[3]) const {
 #if defined(__GNUC__)
         if (i + kAhead + lane_count <= b.size()) {
             const char* ahead = reinterpret_cast<const char*>(b.data() + i + kAhead);
@@ -163,7 +163,7 @@ struct AlignedRowsSource {
     }
 #if defined(__AVX2__)
     // Lanes p[0], p[6], p[12], … (doubles): one column of lane_count rows.
-    BOXCYL_BATCH_INLINE static Lanes column(const char* p) {
+    BOXCYL_FORCE_INLINE inline static Lanes column(const char* p) {
 #if defined(__AVX512F__)
         if constexpr (lane_count == 8)
             return Lanes(_mm512_i64gather_pd(_mm512_set_epi64(42, 36, 30, 24, 18, 12, 6, 0), p, 8));
@@ -193,7 +193,7 @@ struct OrientedSource {
     std::span<const OrientedBox<T>> b;
 
     // First pass: lanes [i, i + valid) (block_bits runs the whole filter but its hit search on them).
-    BOXCYL_BATCH_INLINE void load_frames(std::size_t i, std::size_t valid, Lanes k[3], Lanes A[3][3], Lanes e[3]) const {
+    BOXCYL_FORCE_INLINE inline void load_frames(std::size_t i, std::size_t valid, Lanes k[3], Lanes A[3][3], Lanes e[3]) const {
         const OrientedBox<T>* x = b.data() + i;
         load([x, valid](std::size_t l) -> const OrientedBox<T>& { return x[std::min(l, valid - 1)]; }, k, A, e);
     }
@@ -206,7 +206,7 @@ struct OrientedSource {
     }
     // The array of structures as 15 lane vectors, each built from its lanes' scalars.
     template <class Lane>
-    BOXCYL_BATCH_INLINE static void load(Lane&& lane, Lanes k[3], Lanes A[3][3], Lanes e[3]) {
+    BOXCYL_FORCE_INLINE inline static void load(Lane&& lane, Lanes k[3], Lanes A[3][3], Lanes e[3]) {
         for (int j = 0; j < 3; ++j) {
             k[j] = Lanes([&](auto l) { return static_cast<double>(lane(l).center[j]); });
             e[j] = Lanes([&](auto l) { return static_cast<double>(lane(l).extents[j]); });
@@ -226,7 +226,7 @@ struct OrientedSource {
 struct LaneBits {
     std::uint64_t hit, open;
 };
-BOXCYL_BATCH_INLINE LaneBits to_bits(const LaneResult& r) {
+BOXCYL_FORCE_INLINE inline LaneBits to_bits(const LaneResult& r) {
     static_assert(lane_count <= 16, "the weights below must stay exact sums");
     const Lanes weight([](auto l) { return static_cast<double>(1u << l); });
     Lanes z = 0;

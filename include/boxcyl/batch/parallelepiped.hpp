@@ -1,6 +1,6 @@
 // Parallelepipeds in the batch API: one cylinder against a span of boxcyl::Parallelepiped<T>.
 //
-// No SIMD filter: each box is answered by the scalar default query (filtered/parallelepiped.hpp, its
+// No SIMD filter: each box is answered by the scalar default query (filtered.hpp, its
 // own certified stages and exact fallback), in contiguous 64-box blocks over the threads of
 // Options::threads (batch/split.hpp). So Options::kernel has no effect, Stats::kernel is
 // Kernel::compiled with Stats::lanes = 1, and Stats::exact_lanes counts the boxes that reached the
@@ -20,7 +20,7 @@
 
 #include "boxcyl/batch/split.hpp"
 #include "boxcyl/batch/types.hpp"
-#include "boxcyl/filtered/parallelepiped.hpp"
+#include "boxcyl/filtered.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
 #include "boxcyl/geometry/validate.hpp"  // Options::check_boxes
 

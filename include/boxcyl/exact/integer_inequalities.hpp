@@ -11,13 +11,30 @@
 // slab plane t = ±H has x_k = (integer ± H√d)/D_k. Each sign test of §4 is multiplied through by those
 // positive denominators (√d, D_k, d) and becomes the sign of a + b√d with integers a, b, decided by
 // comparing a² with b²d. No division, no gcd, no rounding: the answer is the exact §4 answer, which the
-// oracle judges. The decisions are §4's (exact_paths.hpp), except within §4.3's candidate segments:
+// oracle judges. The decisions are §4's (exact/paths.hpp), except within §4.3's candidate segments:
 // each is asked first whether its line comes within r of the axis (for a box edge a test in integers),
 // which rejects most of them at a fraction of the segment's cost, and the segment's distance is then
 // the line's or an end's (box_edge, face_cut).
 //
 // Z is the integer type: mpz_class always works; number/fixed_integer.hpp's FixedInt (stack limbs, no
 // allocation) while the values fit, the caller repeating the run in mpz_class after an overflow.
+//
+// Map to the generic method (algo/linear_inequalities.hpp), function by function:
+//   here                                        algo/linear_inequalities.hpp
+//   problem<Z>(box, cylinder)                   to_canonical, to_unit (geometry/reduce.hpp), as integers
+//   intersects(Problem&), Inequalities::run     linear_inequalities: slab cull (box_outside_slab),
+//                                               reflection into the first octant, the three cases
+//   Inequalities::two_zero_components           two_zero_components
+//   Inequalities::axis_meets_slabs              axis_meets_slabs (the early exits, eqs. 21/32)
+//   Inequalities::one_zero_component,           one_zero_component, axis_meets_box_one_zero
+//     square_within
+//   Inequalities::no_zero_components            no_zero_components, axis_meets_box_no_zero
+//   Inequalities::vertex_scaled                 ExtremeEdges' vertex projections t_v
+//   Inequalities::box_edge, end_within          ExtremeEdges::box_edge (here its line first)
+//   Inequalities::face_cut, cut_point,          ExtremeEdges::face_cut, cut_point
+//     cut_line_far, cut_end_within
+//   segment_within                              segment_within, in Z[√d]
+//   abs_of                                      abs_of
 #pragma once
 
 #include <algorithm>  // std::max
@@ -25,7 +42,6 @@
 #include <bit>       // std::bit_cast, std::countr_zero
 #include <cstddef>   // std::size_t
 #include <cstdint>   // std::int64_t
-#include <initializer_list>  // narrow()'s lengths
 #include <optional>  // not a signed permutation
 #include <tuple>        // std::tuple_size_v
 #include <type_traits>  // std::is_same_v, std::conditional_t
@@ -254,30 +270,13 @@ Problem<Z> problem(const CanonicalBox<double>& b, const Cylinder<double>& c) {
     return p;
 }
 
-// A signed permutation frame, axes[i] = s_i·e_{p_i}: the only exactly orthonormal frames of doubles.
-inline bool signed_permutation(const std::array<Vec3<double>, 3>& axes, int perm[3], int sign[3]) {
-    unsigned used = 0;
-    for (int i = 0; i < 3; ++i) {
-        int nonzero = 0;
-        for (int j = 0; j < 3; ++j) {
-            const double a = axes[i][j];
-            if (a == 0) continue;
-            if (a != 1 && a != -1) return false;
-            ++nonzero;
-            perm[i] = j;
-            sign[i] = a > 0 ? 1 : -1;
-        }
-        if (nonzero != 1 || (used >> perm[i] & 1u)) return false;
-        used |= 1u << perm[i];
-    }
-    return true;
-}
-
 // For a signed permutation frame the canonical coordinates are x_i = s_i·(X − K)_{p_i}, exactly.
 template <class Z>
 std::optional<Problem<Z>> problem(const OrientedBox<double>& b, const Cylinder<double>& c) {
-    int perm[3], sign[3];
-    if (!signed_permutation(b.axes, perm, sign)) return std::nullopt;
+    const std::optional<SignedPermutation> frame = signed_permutation(b.axes);
+    if (!frame) return std::nullopt;
+    const std::array<int, 3>& perm = frame->perm;
+    const std::array<int, 3>& sign = frame->sign;
     const ScaleFor<Z, 11> s(lengths(b, c));
     const Vec3<Z> D = integer_direction<Z>(c.axis);
     Problem<Z> p;
@@ -717,18 +716,19 @@ auto answer(const Box& b, const Cylinder<double>& c) {
 // likewise below 2^kNarrowAxisBits: integer and binary-fraction coordinates, axes along box axes or
 // with small integer directions — keep every value of §4 within FixedInt (its largest has about
 // 4·(length bits) + 8·(axis bits) + 64 bits), so the exact stage costs less than the searched
-// certificates and the certified filter; for those inputs the filtered query asks it right after
-// stage 0. An overflow all the same only gives nullopt. The axis is
-// checked first: on random data it is almost never narrow, and the check then costs three doubles.
+// certificates and the certified filter; the pipeline asks it right after stage 0. An overflow all the
+// same only gives nullopt. The axis is checked first: on random data it is almost never narrow, and
+// the check then costs three doubles.
 inline constexpr int kNarrowLengthBits = 48;
 inline constexpr int kNarrowAxisBits = 16;
 
-inline bool narrow(const Cylinder<double>& c, std::initializer_list<double> lengths) {
+template <class Box>
+bool narrow(const Box& b, const Cylinder<double>& c) {
     const Scale<3> axis({c.axis[0], c.axis[1], c.axis[2]});
     if (axis.span() > kNarrowAxisBits) return false;
     int emin = 0, top = 0;
     bool any = false;
-    for (double x : lengths) {
+    for (double x : lengths(b, c)) {
         const Dyadic v = dyadic(x);
         if (v.m == 0) continue;
         const auto mag = static_cast<std::uint64_t>(v.m < 0 ? -v.m : v.m);
@@ -738,23 +738,12 @@ inline bool narrow(const Cylinder<double>& c, std::initializer_list<double> leng
     }
     return top - emin <= kNarrowLengthBits;
 }
-inline std::optional<bool> answer_if_narrow(const AlignedBox<double>& b, const Cylinder<double>& c) {
-    if (!narrow(c, {b.min[0], b.min[1], b.min[2], b.max[0], b.max[1], b.max[2], c.center[0], c.center[1], c.center[2],
-                    c.radius, c.height}))
-        return std::nullopt;
-    return answer_small(b, c);
-}
-inline std::optional<bool> answer_if_narrow(const CanonicalBox<double>& b, const Cylinder<double>& c) {
-    if (!narrow(c, {b.extents[0], b.extents[1], b.extents[2], c.center[0], c.center[1], c.center[2], c.radius, c.height}))
-        return std::nullopt;
-    return answer_small(b, c);
-}
 // Narrow inputs of two scales: each group of the lengths within 64 bits (narrow()'s 48, and room for
 // 1 ± ulp beside 1), the axis' groups within kNarrowAxisBits. The series run then costs about a
-// narrow run (about a µs), less than the middle stage spends failing on such queries near touching —
-// a subnormal tilt of an exactly touching shape, a box of 2^−1000 at a cylinder of 2^1000 — whose
-// answers hang on values no double-double enclosure resolves; the filtered query asks it before the
-// middle stage.
+// narrow run (about a µs), less than the middle stage spends failing on such queries near touching — a
+// subnormal tilt of an exactly touching shape, a box of 2^−1000 at a cylinder of 2^1000 — whose
+// answers hang on values no double-double enclosure resolves; the pipeline asks it before the middle
+// stage.
 inline constexpr int kNarrowTwoScaleLengthBits = 64;
 template <class Box>
 bool narrow_two_scale(const Box& b, const Cylinder<double>& c) {
@@ -763,17 +752,5 @@ bool narrow_two_scale(const Box& b, const Cylinder<double>& c) {
     const TwoScale<std::tuple_size_v<decltype(lengths(b, c))>> L(lengths(b, c));
     return L.ok() && L.span() <= kNarrowTwoScaleLengthBits && (L.gap() >= 0 || D.gap() >= 0);
 }
-template <class Box>
-std::optional<bool> answer_if_narrow_two_scale(const Box& b, const Cylinder<double>& c) {
-    if (!narrow_two_scale(b, c)) return std::nullopt;
-    return answer_two_scale(b, c);
-}
-
-// The exact answer for double inputs (each the rational it denotes; the cylinder axis is axis/|axis|
-// exactly). An oriented box whose axes are not a signed permutation has no exact canonical frame:
-// nullopt (exact_paths.hpp's §3 answers it).
-inline bool intersects(const AlignedBox<double>& b, const Cylinder<double>& c) { return answer(b, c); }
-inline bool intersects(const CanonicalBox<double>& b, const Cylinder<double>& c) { return answer(b, c); }
-inline std::optional<bool> intersects(const OrientedBox<double>& b, const Cylinder<double>& c) { return answer(b, c); }
 
 }  // namespace boxcyl::exact::integer

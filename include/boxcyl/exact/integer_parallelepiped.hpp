@@ -1,7 +1,7 @@
-// The exact stage for an oriented box whose frame is orthonormal only up to rounding (a rotation
-// rounded to double), in integers and Z[√d] as exact/integer_inequalities.hpp: the box is the
-// parallelepiped B = {K + Σ λ_m·a_m : |λ_m| ≤ 1} with the half-edge vectors a_m = e_m·A_m exactly as
-// given (docs/robustness.md §11). With P = B ∩ slab and π the projection along the axis:
+// The exact stage for any parallelepiped — an oriented box whose frame is orthonormal only up to
+// rounding (a rotation rounded to double) is one — in integers and Z[√d] as
+// exact/integer_inequalities.hpp: the box is B = {K + Σ λ_m·a_m : |λ_m| ≤ 1} with the half-edge
+// vectors a_m = e_m·A_m exactly as given (docs/algorithms.md, "Clipped edges and face cuts"). With P = B ∩ slab and π the projection along the axis:
 //   the cylinder meets B  ⇔  the axis segment meets B, or some edge of P is within r of the axis line
 // (π(P) is a convex polygon: the axis' image O lies in it iff the axis segment meets P, and otherwise
 // its distance to π(P) is attained on the boundary, whose edges are images of edges of P). Every edge
@@ -16,13 +16,13 @@
 #include <array>     // vertices, candidate points
 #include <cstddef>   // std::size_t
 #include <cstdint>   // std::int64_t
-#include <initializer_list>  // narrow()'s lengths
 #include <optional>  // nullopt: left to §3
 #include <type_traits>  // std::is_same_v
 
 #include "boxcyl/exact/integer_inequalities.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
 
 namespace boxcyl::exact::integer {
 
@@ -38,7 +38,7 @@ struct ParallelepipedProblem {
 
 // The exact products e_m·A_mj are dyadic too: m1·m2·2^(e1 + e2).
 template <class Z>
-ParallelepipedProblem<Z> problem_turned(const OrientedBox<double>& b, const Cylinder<double>& c) {
+ParallelepipedProblem<Z> problem_turned(const Parallelepiped<double>& b, const Cylinder<double>& c) {
     struct Item {
         std::int64_t m1 = 0, m2 = 1;
         int e = 0;
@@ -81,11 +81,11 @@ ParallelepipedProblem<Z> problem_turned(const OrientedBox<double>& b, const Cyli
 namespace detail {
 
 template <class Z>
-class Parallelepiped {
+class ClippedTest {
 public:
     using Q = QuadInt<Z>;
 
-    explicit Parallelepiped(const ParallelepipedProblem<Z>& p) : p_(p), ring_(dot(p.D, p.D)) {
+    explicit ClippedTest(const ParallelepipedProblem<Z>& p) : p_(p), ring_(dot(p.D, p.D)) {
         for (int s = 0; s < 8; ++s) {
             Vec3<Z> v = p.G;
             for (int m = 0; m < 3; ++m) v = (s >> m & 1) ? Vec3<Z>(v + p.a[m]) : Vec3<Z>(v - p.a[m]);
@@ -256,16 +256,16 @@ private:
 };
 
 template <class Z>
-std::optional<bool> run_turned(const OrientedBox<double>& b, const Cylinder<double>& c) {
+std::optional<bool> run_turned(const Parallelepiped<double>& b, const Cylinder<double>& c) {
     const ParallelepipedProblem<Z> p = problem_turned<Z>(b, c);
-    return Parallelepiped<Z>(p).run();
+    return ClippedTest<Z>(p).run();
 }
 
 }  // namespace detail
 
-// The exact answer for any valid oriented box (nullopt only for non-zero half-edge vectors that are
+// The exact answer for any parallelepiped (nullopt only for non-zero half-edge vectors that are
 // linearly dependent): FixedInt first, mpz_class when a value outgrew it.
-inline std::optional<bool> intersects_parallelepiped(const OrientedBox<double>& b, const Cylinder<double>& c) {
+inline std::optional<bool> intersects_parallelepiped(const Parallelepiped<double>& b, const Cylinder<double>& c) {
     FixedOverflow::flag() = false;
     const std::optional<bool> small = detail::run_turned<Small>(b, c);
     if (!FixedOverflow::flag()) return small;
@@ -273,23 +273,11 @@ inline std::optional<bool> intersects_parallelepiped(const OrientedBox<double>& 
 }
 
 // The same in FixedInt alone: nullopt also when a value outgrew it.
-inline std::optional<bool> parallelepiped_small(const OrientedBox<double>& b, const Cylinder<double>& c) {
+inline std::optional<bool> parallelepiped_small(const Parallelepiped<double>& b, const Cylinder<double>& c) {
     FixedOverflow::flag() = false;
     const std::optional<bool> r = detail::run_turned<Small>(b, c);
     if (FixedOverflow::flag()) return std::nullopt;
     return r;
-}
-
-// For narrow inputs (integer_inequalities.hpp), §4 in integers for a signed-permutation frame, the
-// parallelepiped test for any other frame (the axes themselves may be wide: a rounded rotation).
-inline std::optional<bool> answer_if_narrow(const OrientedBox<double>& b, const Cylinder<double>& c) {
-    if (!narrow(c, {b.center[0], b.center[1], b.center[2], b.extents[0], b.extents[1], b.extents[2], c.center[0],
-                    c.center[1], c.center[2], c.radius, c.height}))
-        return std::nullopt;
-    if (const std::optional<bool> r = answer_small(b, c)) return r;
-    int perm[3], sign[3];
-    if (signed_permutation(b.axes, perm, sign)) return std::nullopt;  // outgrew FixedInt
-    return parallelepiped_small(b, c);
 }
 
 }  // namespace boxcyl::exact::integer

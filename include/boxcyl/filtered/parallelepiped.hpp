@@ -1,10 +1,10 @@
-// The exact default query for any parallelepiped (boxcyl::Parallelepiped: axes of any length and
-// angle, exactly as given), fast where the answer is not close: certified separating directions and
-// witness points first, exact §3 on the exact solid only when none certifies.
+// The certificates of the exact default for any parallelepiped (boxcyl::Parallelepiped: axes of any
+// length and angle, exactly as given), and its prepared query. The rows that use them are in
+// filtered/schedule.hpp; the exact stage answers what none certifies (exact/answer.hpp).
 //
-// Stages (each certificate decided on enclosures inside an UncertaintyScope, first with Bounded — a
-// double and a running error bound — then, if that left it undecided, with outward-rounded Interval;
-// a certificate counts only when every comparison in it was decided):
+// Each certificate is decided on enclosures inside an UncertaintyScope (Bounded — a double and a
+// running error bound — then outward-rounded Interval), and counts only when every comparison in it was
+// decided:
 //   misses: a direction n (any double vector: every real direction is a valid separating-axis
 //           candidate, so n itself needs no error bound) with
 //             |n·(C − K)| − Σ eᵢ|n·Wᵢ| − H|n·u| > r·|n × u|   (support functions, |u| = 1),
@@ -16,120 +16,41 @@
 //           for the exact u is a cylinder point, and its enclosure contains it) whose box coordinates
 //           A⁻¹(X − K) (Cramer's rule; only for certainly non-singular A) are within ±eᵢ.
 //           Candidates: the box centre, the cylinder centre and the axis point nearest to the box
-//           centre, then the iterates.
+//           centre, then the iterates;
 //   frame:  for nearly orthogonal axes of any lengths (integer-vertex boxes like (3,4,0), (−4,3,0),
-//           (0,0,5); scaled rotations), §4 on the enclosed canonical problem of the unit frame
-//           Wᵢ/|Wᵢ|, widened by the frame's distance from orthonormal (frame_stage below): complete
-//           but for queries within rounding of touching.
-// Order: the fixed candidates (Bounded), the frame stage (Bounded), the searched candidates
-// (Bounded), then the frame stage and all candidates again in Interval.
+//           (0,0,5); scaled rotations), linear inequalities in the unit frame Wᵢ/|Wᵢ|, widened by the
+//           frame's distance from orthonormal.
 // The search, in plain double and unchecked (only the certificates are): alternating projections
 // between the cylinder and the parallelepiped (the latter by coordinate descent on the box
 // coordinates, exact in one sweep for orthogonal axes), both shrunk about their centres (0.9, 0.99,
 // 0.9999: a witness needs room), certificates tested after steps 1, 2, 4, 8, ... of each phase.
-// Then, in round to nearest, the middle stage's clipped-candidates test on double-double enclosures
-// (filtered/clipped_candidates.hpp: decisive within a few ulps of touching, axes of any length).
-// Undecided queries (touching or within rounding of it, thin overlaps of flat solids) go to
-// the exact stage: the parallelepiped test in integers and Z[√d] (exact/integer_parallelepiped.hpp), or the
-// convex-hull method on rationals and Q(√d) for dependent axes: the answer is always exact.
 // No magnitude is out of range: overflow and underflow make enclosures undecided, never wrong.
-// Needs the exact backend (boxcyl::exact).
 #pragma once
 
 #include <algorithm>  // std::min, std::max
 #include <array>      // the approximate axes
-#include <cassert>    // debug-build precondition checks
 #include <cmath>      // std::fabs, std::sqrt, std::ilogb, std::ldexp
 #include <limits>     // infinity
 #include <optional>   // undecided
-#include <stdexcept>  // std::logic_error (BOXCYL_CHECK_FILTER)
-#include <string>     // its message
-#include <type_traits>  // std::is_same_v
 
-#include "boxcyl/algo/convex_hull.hpp"
-#include "boxcyl/exact/integer_parallelepiped.hpp"
-#include "boxcyl/algo/linear_inequalities.hpp"
-#include "boxcyl/filtered.hpp"  // filtered::Result
+#include "boxcyl/filtered/enclosed.hpp"
+#include "boxcyl/filtered/prepared.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
-#include "boxcyl/geometry/reduce.hpp"  // CanonicalQuery
-#include "boxcyl/geometry/reduce_exact.hpp"
-#include "boxcyl/geometry/validate.hpp"
 #include "boxcyl/number/bounded.hpp"
 #include "boxcyl/number/interval.hpp"
-#include "boxcyl/number/qfield.hpp"
-#include "boxcyl/number/rational.hpp"
-#include "boxcyl/oracle/oracle.hpp"  // to_exact: the rationals the doubles denote
 
-namespace boxcyl::filtered {
+namespace boxcyl::filtered::parallelepiped {
 
-namespace parallelepiped_detail {
-
-// ---- Exact stage: the parallelepiped test in integers, else the convex-hull method on the exact solid. ----
-
-// The integer test (exact/integer_parallelepiped.hpp) takes the half-edge vectors e_m·W_m exactly as
-// given and needs no orthonormality: it answers every parallelepiped whose non-zero half-edge vectors
-// are independent, in integers and Z[√d] with no rational. Dependent ones (flat solids spanned by
-// parallel or coplanar axes) go to the convex-hull method in rationals and Q(√d).
-inline bool exact_answer(const Parallelepiped<double>& b, const Cylinder<double>& c) {
-    const OrientedBox<double> as_given{b.center, b.axes, b.extents};
-    if (const std::optional<bool> r = exact::integer::intersects_parallelepiped(as_given, c)) return *r;
-    const Parallelepiped<Rational> eb = to_exact(b);
-    const Cylinder<Rational> ec = to_exact(c);
-    const QuadraticField<Rational> field(dot(ec.axis, ec.axis));
-    algo::Parallelepiped<QFRational> p;
-    p.center = lift(eb.center);
-    for (int i = 0; i < 3; ++i) p.half_edges[i] = lift(Vec3<Rational>(eb.extents[i] * eb.axes[i]));
-    return algo::convex_hull(p, to_unit(ec, field));
-}
-
-// ---- Enclosed data. ----
-
-// |v|² as a sum of squares of magnitudes: never below 0, also for components that straddle 0.
-template <class N>
-N norm2(const Vec3<N>& v) {
-    const N a = abs_value(v[0]), b = abs_value(v[1]), c = abs_value(v[2]);
-    return a * a + b * b + c * c;
-}
-
-// x·2^k as an enclosure: a point when exact, else the neighbours of the rounded value.
-// (N = double: the plain value, for the preselection below.)
-template <class N>
-N scaled(double x, int k) {
-    const double y = std::ldexp(x, k);
-    if constexpr (std::is_same_v<N, double>) {
-        return y;
-    } else {
-        if (std::ldexp(y, -k) == x) return N(y);
-        return N::range(boxcyl::detail::next_down(y), boxcyl::detail::next_up(y));
-    }
-}
-// The square root of each number type (an unqualified sqrt would find boxcyl's enclosure overloads
-// only, and turn a double into an Interval).
+using enclosed::certainly;
+using enclosed::norm2;
 inline double root(double x) { return std::sqrt(x); }
-inline Bounded root(const Bounded& x) { return sqrt(x); }
-inline Interval root(const Interval& x) { return sqrt(x); }
-
-// An enclosure of the exact unit axis D/|D| (the axis first scaled by a power of two to a largest
-// component in [1, 2), so D·D neither overflows nor vanishes; a single non-zero component gives ±1).
 template <class N>
-Vec3<N> unit_axis(const Vec3<double>& a) {
-    int nonzero = 0, which = 0;
-    double m = 0;
-    for (int i = 0; i < 3; ++i) {
-        if (a[i] != 0) ++nonzero, which = i;
-        m = std::max(m, std::fabs(a[i]));
-    }
-    if (nonzero == 1) {
-        Vec3<N> d{N(0), N(0), N(0)};
-        d[which] = N(a[which] > 0 ? 1.0 : -1.0);
-        return d;
-    }
-    const int k = -std::ilogb(m);
-    const Vec3<N> s{scaled<N>(a[0], k), scaled<N>(a[1], k), scaled<N>(a[2], k)};
-    const N len = root(norm2(s));
-    return {s[0] / len, s[1] / len, s[2] / len};
+N root(const N& x) {
+    return sqrt(x);
 }
+
+// ---- Enclosed data ----
 
 template <class N>
 Vec3<N> enclose(const Vec3<double>& v) {
@@ -146,24 +67,18 @@ struct Problem {
     N det;           // det[W0 W1 W2]
 };
 
+// `u` encloses the unit axis (the plain-double problem takes the search's rounded one).
 template <class N>
-Problem<N> problem(const Parallelepiped<double>& b, const Cylinder<double>& c) {
+Problem<N> problem(const Parallelepiped<double>& b, const Cylinder<double>& c, const Vec3<N>& u) {
     Problem<N> p;
     p.delta = enclose<N>(c.center) - enclose<N>(b.center);
     for (int i = 0; i < 3; ++i) p.w[i] = enclose<N>(b.axes[i]);
     p.e = enclose<N>(b.extents);
-    p.u = unit_axis<N>(c.axis);
+    p.u = u;
     p.r = N(c.radius);
     p.h = N(c.height) * N(0.5);
     p.det = dot(p.w[0], cross(p.w[1], p.w[2]));
     return p;
-}
-
-template <class Test>
-bool certainly(Test&& test) {
-    UncertaintyScope scope;
-    const bool ok = test();
-    return ok && scope.certain();
 }
 
 // n separates: s = |n·δ| − Σ eᵢ|n·Wᵢ| − H|n·u| > 0 and s² > r²|n × u|².
@@ -211,86 +126,25 @@ bool cylinder_point_inside(const Problem<N>& p, double t, double rho, const Vec3
     });
 }
 
-// ---- Nearly orthogonal axes of any lengths: §4 in the frame of the unit axes. ----
+// ---- Nearly orthogonal axes of any lengths: linear inequalities in the frame of the unit axes. ----
 //
 // With Lᵢ = |Wᵢ| and Aᵢ = Wᵢ/Lᵢ (enclosures of the real numbers), the solid is exactly
-// {K + Σ yᵢAᵢ : |yᵢ| ≤ eᵢLᵢ}: an oriented box with the real frame A. When ‖AᵀA − I‖₂ ≤ g (bounded from
-// the enclosures), the canonical problem (cᵢ = Aᵢ·(C − K), the axis Aᵀu normalised, extents eᵢLᵢ) is
-// widened by η = g·(|e'|₁ + |C − K|₁ + 2H + 2r) exactly as for an oriented box whose frame is
-// orthonormal only up to rounding (filtered.hpp, docs/robustness.md): §4 on the inflated problem
-// certifies misses, on the deflated one hits. Exactly orthogonal axes ((3,4,0), (−4,3,0), (0,0,5))
-// leave g at the enclosures' width, so only queries within a few ulps of touching stay undecided.
+// {K + Σ yᵢAᵢ : |yᵢ| ≤ eᵢLᵢ}: an oriented box with the real frame A, widened by its distance from
+// orthonormal as a rounded rotation is (enclosed::frame_problem). Exactly orthogonal axes ((3,4,0),
+// (−4,3,0), (0,0,5)) leave g at the enclosures' width, so only queries within a few ulps of touching
+// stay undecided.
 template <class N>
-std::optional<bool> run_section4(const CanonicalQuery<N>& q) {
-    UncertaintyScope scope;
-    const bool answer = algo::linear_inequalities(q.box, q.cylinder);
-    if (!scope.certain()) return std::nullopt;
-    return answer;
-}
-template <class N>
-double upper(const N& x) {
-    return std::max(-x.lo(), x.hi());
-}
-template <class N>
-std::optional<bool> frame_stage(const Problem<N>& p, const Cylinder<double>& c) {
-    Vec3<N> a[3];
-    CanonicalQuery<N> q;
+std::optional<bool> frame_stage(const Problem<N>& p, double scale) {
+    Vec3<N> a[3], extents;
     for (int i = 0; i < 3; ++i) {
-        const N len = root(norm2(p.w[i]));
+        const N len = sqrt(enclosed::norm2(p.w[i]));
         if (!(len.lo() > 0)) return std::nullopt;  // a zero (or tiny) axis: a flat solid
         a[i] = {p.w[i][0] / len, p.w[i][1] / len, p.w[i][2] / len};
-        q.box.extents[i] = p.e[i] * len;
+        extents[i] = p.e[i] * len;
     }
-    double g = 0;
-    for (int i = 0; i < 3; ++i) {
-        N row(0);
-        for (int j = 0; j < 3; ++j) {
-            N gij = dot(a[i], a[j]);
-            if (i == j) gij -= N(1);
-            row += N(upper(gij));
-        }
-        g = std::max(g, row.hi());
-    }
-    if (!(g <= 0x1p-10)) return std::nullopt;  // skewed: not a rotated frame
-    Vec3<N> v;
-    for (int i = 0; i < 3; ++i) {
-        q.cylinder.center[i] = dot(a[i], p.delta);
-        v[i] = dot(a[i], p.u);
-    }
-    const N vlen = root(norm2(v));
-    q.cylinder.direction = {v[0] / vlen, v[1] / vlen, v[2] / vlen};
-    q.cylinder.radius = p.r;
-    q.cylinder.half_height = p.h;
-    N lengths(0);
-    for (int i = 0; i < 3; ++i) lengths += N(upper(q.box.extents[i])) + N(upper(p.delta[i]));
-    lengths += N(2) * N(upper(p.h)) + N(2) * N(upper(p.r));
-    const double eta = (N(g) * lengths).hi();
-    if (!(eta < std::numeric_limits<double>::infinity())) return std::nullopt;
-    // η split as in filtered.hpp: on the cylinder up to min(r, H), the rest on the box.
-    const double on_cyl = std::min(std::min(p.r.lo(), p.h.lo()), eta);
-    const double on_box = on_cyl == eta ? 0.0 : (N(eta) - N(on_cyl)).hi();
-    // Sizes as points: outer ones rounded up after adding, inner ones down after subtracting.
-    bool has_inner = true;
-    auto up = [](const N& x, double by) { return N(by == 0 ? x.hi() : (N(x.hi()) + N(by)).hi()); };
-    auto down = [&has_inner](const N& x, double by) {
-        if (by == 0) return N(x.lo());
-        if (!(x.lo() >= by)) has_inner = false;
-        return N(std::max(0.0, (N(x.lo()) - N(by)).lo()));
-    };
-    CanonicalQuery<N> outer = q, inner = q;
-    outer.cylinder.radius = up(q.cylinder.radius, on_cyl);
-    outer.cylinder.half_height = up(q.cylinder.half_height, on_cyl);
-    inner.cylinder.radius = down(q.cylinder.radius, on_cyl);
-    inner.cylinder.half_height = down(q.cylinder.half_height, on_cyl);
-    for (int i = 0; i < 3; ++i) {
-        outer.box.extents[i] = up(q.box.extents[i], on_box);
-        inner.box.extents[i] = down(q.box.extents[i], on_box);
-    }
-    (void)c;
-    if (has_inner)
-        if (const std::optional<bool> r = run_section4(inner); r && *r) return true;
-    if (const std::optional<bool> r = run_section4(outer); r && !*r) return false;
-    return std::nullopt;
+    const auto w = enclosed::frame_problem(a, p.delta, extents, p.u, p.r, p.h);
+    if (!w) return std::nullopt;
+    return enclosed::decide(*w, scale);
 }
 
 // ---- Candidates, in plain double (any value is sound; only the certificates decide). ----
@@ -498,51 +352,48 @@ inline void normalise(Parallelepiped<double>& b, Cylinder<double>& c) {
     if (exact) b = nb, c = nc;
 }
 
-// The certified stages: the answer, or nullopt for the exact stage.
-inline std::optional<bool> filter(Parallelepiped<double> b, Cylinder<double> c) {
-    normalise(b, c);
-    const Approx a = approx(b, c);
-    Candidates cs;
-    fixed_candidates(a, c, cs);
-    const Problem<double> pd = problem<double>(b, c);
-    const Problem<Bounded> pb = problem<Bounded>(b, c);
-    if (const std::optional<bool> r = certify(pb, pd, cs)) return r;
-    if (const std::optional<bool> r = frame_stage(pb, c)) return r;
-    Candidates searched;  // all phases' candidates, kept for the Interval pass
-    for (const auto& [shrink, steps] : search_phases) {
-        Candidates phase;
-        searched_candidates(a, shrink, phase, steps);
-        if (const std::optional<bool> r = certify(pb, pd, phase)) return r;
-        searched.append(phase);
+
+}  // namespace boxcyl::filtered::parallelepiped
+
+namespace boxcyl::filtered {
+
+// The prepared query of a parallelepiped: the question at a convenient scale (parallelepiped::normalise,
+// exact), the plain-double problem and search, the fixed candidates, and the enclosed problems on first
+// use; the searched candidates are kept for the interval rows.
+template <>
+class Prepared<Parallelepiped<double>> {
+public:
+    Prepared(const Parallelepiped<double>& b, const Cylinder<double>& c)
+        : box(b), cyl(c), approx((parallelepiped::normalise(box, cyl), parallelepiped::approx(box, cyl))),
+          plain(parallelepiped::problem<double>(box, cyl, approx.u)) {
+        parallelepiped::fixed_candidates(approx, cyl, fixed);
     }
-    const Problem<Interval> pi = problem<Interval>(b, c);
-    if (const std::optional<bool> r = frame_stage(pi, c)) return r;
-    if (const std::optional<bool> r = certify(pi, pd, cs)) return r;
-    return certify(pi, pd, searched);
-}
 
-}  // namespace parallelepiped_detail
+    Parallelepiped<double> box;  // the query, normalised (the same solid and question)
+    Cylinder<double> cyl;
+    parallelepiped::Approx approx;              // the search's rounded problem
+    parallelepiped::Problem<double> plain;      // the certificates' preselection in plain double
+    parallelepiped::Candidates fixed, searched;  // the candidates, fixed and searched (filled by its row)
 
-// The exact answer for any parallelepiped (exact_used: no certificate decided, exact §3 answered).
-inline Result query(const Parallelepiped<double>& box, const Cylinder<double>& cyl) {
-    assert(is_valid(box) && "boxcyl::filtered::query: invalid box (see boxcyl::validate)");
-    assert(is_valid(cyl) && "boxcyl::filtered::query: invalid cylinder (see boxcyl::validate)");
-#if defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT
-    return {parallelepiped_detail::exact_answer(box, cyl), true};
-#else
-    std::optional<bool> fast = parallelepiped_detail::filter(box, cyl);
-    // Near touching, the middle stage's clipped-candidates test on double-double enclosures (round to
-    // nearest only): the oriented box's test, which takes the axes exactly as given.
-    if (!fast && detail::middle_runs())
-        fast = detail::middle_clipped(OrientedBox<double>{box.center, box.axes, box.extents}, cyl);
-    if (!fast) return {parallelepiped_detail::exact_answer(box, cyl), true};
-#if defined(BOXCYL_CHECK_FILTER) && BOXCYL_CHECK_FILTER
-    if (parallelepiped_detail::exact_answer(box, cyl) != *fast)
-        throw std::logic_error("boxcyl::filtered: the parallelepiped filter answered " +
-                               std::string(*fast ? "true" : "false") + " but the exact answer differs");
-#endif
-    return {*fast, false};
-#endif
-}
+    const parallelepiped::Problem<Bounded>& bounded() { return enclosed_problem(bounded_); }
+    const parallelepiped::Problem<Interval>& interval() { return enclosed_problem(interval_); }
+    double scale() const { return largest_length(box, cyl); }
+    bool nearest() { return memo(nearest_, [] { return boxcyl::detail::round_to_nearest(); }); }
+
+private:
+    template <class N>
+    const parallelepiped::Problem<N>& enclosed_problem(std::optional<parallelepiped::Problem<N>>& slot) {
+        if (!slot) slot = parallelepiped::problem<N>(box, cyl, enclosed::unit_direction<N>(cyl.axis));
+        return *slot;
+    }
+    template <class F>
+    static bool memo(std::int8_t& slot, F&& compute) {
+        if (slot < 0) slot = compute() ? 1 : 0;
+        return slot != 0;
+    }
+    std::optional<parallelepiped::Problem<Bounded>> bounded_;
+    std::optional<parallelepiped::Problem<Interval>> interval_;
+    std::int8_t nearest_ = -1;
+};
 
 }  // namespace boxcyl::filtered

@@ -50,11 +50,6 @@
 // through memory to the tests that wait for them (3–5% of the default query on bench_stages' random set).
 // The same for the small certificates and projections that stage 0b's searches call at every step
 // (witness_search.hpp): as calls, stage 0b took ≈10% longer on bench_batch's near-surface boxes.
-#if defined(__GNUC__) || defined(__clang__)
-#define BOXCYL_STAGE0_INLINE [[gnu::always_inline]] inline
-#else
-#define BOXCYL_STAGE0_INLINE inline
-#endif
 
 // The unit axis's dropped components as SSE2 masks where the target has SSE2 (every x86-64): GCC
 // compiles the portable form (an integer mask from a comparison) through general registers and back,
@@ -228,7 +223,6 @@ constexpr Kappas kappas_for(const InputModel& m) {
 inline constexpr Kappas canonical_kappas = kappas_for(canonical_model);
 inline constexpr Kappas aligned_kappas = kappas_for(aligned_model);
 inline constexpr Kappas oriented_kappas = kappas_for(oriented_model);
-inline constexpr Kappas unsound_kappas{};  // every κ 0: `sound = false` below
 
 // World box points of an oriented box (world_offset): K, C exact with |K_j|, |C_j| ≤ L/2, x exact with
 // |x_m| ≤ e_m ≤ L/2, A exact with |A_mj| ≤ 1.0005 (g ≤ 2^-10), u the world unit axis (3.6ε, as d in
@@ -279,7 +273,7 @@ struct Problem {
 // tiny, such a component (an axis like (1e-300, 0.6, 0.8), or a subnormal one) makes every product
 // with it subnormal, which x86 runs in microcode: stage 0 took twice as long on such queries (100 vs
 // 52 ns; a third of the benchmark's random axes have one).
-BOXCYL_STAGE0_INLINE Vec3<double> unit_axis(const Vec3<double>& a) {
+BOXCYL_FORCE_INLINE inline Vec3<double> unit_axis(const Vec3<double>& a) {
     double x = a[0], y = a[1], z = a[2];
     double m = std::max(std::max(std::fabs(x), std::fabs(y)), std::fabs(z));
     if (!(m >= 0x1p-250 && m <= 0x1p250)) {
@@ -309,7 +303,7 @@ BOXCYL_STAGE0_INLINE Vec3<double> unit_axis(const Vec3<double>& a) {
 }
 
 inline bool in_range(double l) { return l >= min_scale && l <= max_scale; }
-BOXCYL_STAGE0_INLINE double largest(const Vec3<double>& v) {
+BOXCYL_FORCE_INLINE inline double largest(const Vec3<double>& v) {
     return std::max(std::max(std::fabs(v[0]), std::fabs(v[1])), std::fabs(v[2]));
 }
 inline bool usable_axis(const Vec3<double>& a) {
@@ -322,7 +316,7 @@ inline bool usable_axis(const Vec3<double>& a) {
 // The cylinder-side witnesses' axial parameter t: the axis point nearest to the box centre, clamped to
 // |t| ≤ H' where H' < H for sure (H·(1 − 2^-40) with H = fl(h/2) normal, or 0 for a disk); nullopt
 // when H is subnormal (no safe H').
-BOXCYL_STAGE0_INLINE std::optional<double> axial_parameter(const Problem& p) {
+BOXCYL_FORCE_INLINE inline std::optional<double> axial_parameter(const Problem& p) {
     if (p.h != 0 && !(p.h >= 0x1p-1000)) return std::nullopt;
     const double h = p.h * (1 - 0x1p-40);
     return clamp_to(-dot(p.d, p.c), -h, h);
@@ -330,7 +324,7 @@ BOXCYL_STAGE0_INLINE std::optional<double> axial_parameter(const Problem& p) {
 // The middle of the axis segment's part inside the box (Liang–Barsky clipping of c + t·d, |t| ≤ H',
 // against |x_i| ≤ e_i), when that part is not empty; H' as in axial_parameter (call it first: it
 // rejects a subnormal H).
-BOXCYL_STAGE0_INLINE std::optional<double> chord_middle(const Problem& p) {
+BOXCYL_FORCE_INLINE inline std::optional<double> chord_middle(const Problem& p) {
     const double h = p.h * (1 - 0x1p-40);
     double lo = -h, hi = h;
     for (int i = 0; i < 3; ++i) {
@@ -360,7 +354,7 @@ inline double bound2(const Problem& p, const Kappa& k) { return k.eps * p.e2 + k
 
 // A miss: the direction n (any double vector; scaled here to |n_i| ≤ 1, which keeps it a double
 // vector, now exact as given) separates the outer problem.
-BOXCYL_STAGE0_INLINE bool separated_along(const Problem& p, const Kappas& k, Vec3<double> n) {
+BOXCYL_FORCE_INLINE inline bool separated_along(const Problem& p, const Kappas& k, Vec3<double> n) {
     const double m = largest(n);
     if (!(m > 0) || !(m < std::numeric_limits<double>::infinity())) return false;  // also NaN
     n = {n[0] / m, n[1] / m, n[2] / m};  // |n_i / m| ≤ 1 survives rounding (monotone)
@@ -370,7 +364,7 @@ BOXCYL_STAGE0_INLINE bool separated_along(const Problem& p, const Kappas& k, Vec
 // A hit: the box point Q = C + v (exactly a box point: the caller's clamp) lies in the inner cylinder.
 // The test on a cylinder given by axis a, radius r and half-height h in the offsets' frame (the inner
 // cylinder in the box frame here; the cylinder as given in world coordinates for world_point_inside).
-BOXCYL_STAGE0_INLINE bool point_in_cylinder(const Problem& p, const Vec3<double>& a, double r, double h,
+BOXCYL_FORCE_INLINE inline bool point_in_cylinder(const Problem& p, const Vec3<double>& a, double r, double h,
                                             const Kappa& k_height, const Kappa& k_radial, const Vec3<double>& v) {
     return witness_height_margin(v, a, h) > bound1(p, k_height) && witness_radial_margin(v, a, r) > bound2(p, k_radial);
 }
@@ -380,7 +374,7 @@ inline bool box_point_inside(const Problem& p, const Kappas& k, const Vec3<doubl
 // A hit: the cylinder point X = C + t·d + (z − (d·z)d) lies in the box shrunk to e_in. The caller
 // guarantees |t| ≤ H exactly (axial_parameter's H'), |t| ≤ 0.26L and |z_i| ≤ 2L (the model); z = 0
 // needs no radial check.
-BOXCYL_STAGE0_INLINE bool cylinder_point_inside(const Problem& p, const Kappas& k, double t, const Vec3<double>& z,
+BOXCYL_FORCE_INLINE inline bool cylinder_point_inside(const Problem& p, const Kappas& k, double t, const Vec3<double>& z,
                                                 bool radial = true) {
     if (radial && !(witness_radial_margin(z, p.d, p.r) > bound2(p, k.chord_radial))) return false;
     const double dz = dot(p.d, z), b = bound1(p, k.chord_box);
@@ -398,7 +392,7 @@ BOXCYL_STAGE0_INLINE bool cylinder_point_inside(const Problem& p, const Kappas& 
 // inside the inner cylinder, with d·v ≤ H at one of them and d·v ≥ −H at one of them: the segment
 // Q1Q2 is in the box and radially inside, and d·v takes a value in [−H, H] on it — that point is in
 // the inner cylinder.
-BOXCYL_STAGE0_INLINE bool pair_in_cylinder(const Problem& p, const Vec3<double>& a, double r, double h,
+BOXCYL_FORCE_INLINE inline bool pair_in_cylinder(const Problem& p, const Vec3<double>& a, double r, double h,
                                            const Kappa& k_signed, const Kappa& k_radial, const Vec3<double>& v1,
                                            const Vec3<double>& v2) {
     const double b_radial = bound2(p, k_radial), b = bound1(p, k_signed);
@@ -448,7 +442,7 @@ inline bool cylinder_segment_inside(const Problem& p, const Kappas& k, double t1
 // Always inlined into the per-kind overloads below: as a call, its first tests waited for the problem's
 // fields through memory (stage 0 ≈2 ns slower on bench_query's random set).
 template <class Witness>
-BOXCYL_STAGE0_INLINE std::optional<bool> decide(const Problem& p, const Kappas& k, Witness&& witness) {
+BOXCYL_FORCE_INLINE inline std::optional<bool> decide(const Problem& p, const Kappas& k, Witness&& witness) {
     const Vec3<double>& c = p.c;
     const Vec3<double>& d = p.d;
     const Vec3<double>& e = p.e;
@@ -498,7 +492,7 @@ BOXCYL_STAGE0_INLINE std::optional<bool> decide(const Problem& p, const Kappas& 
 // touching along that direction. Only a hint for the order of the later stages (near touching, stage
 // 1's double precision cannot decide and the middle stage runs first; elsewhere stage 1 decides at a
 // third of the middle stage's cost), never for an answer.
-BOXCYL_STAGE0_INLINE bool near_touching(const Problem& p, const Kappas& k) {
+BOXCYL_FORCE_INLINE inline bool near_touching(const Problem& p, const Kappas& k) {
     constexpr double wide = 0x1p20;
     const Vec3<double>& c = p.c;
     const Vec3<double>& d = p.d;
@@ -515,12 +509,6 @@ BOXCYL_STAGE0_INLINE bool near_touching(const Problem& p, const Kappas& k) {
     }
     return false;
 }
-inline bool near_touching(const Problem& p, const CanonicalBox<double>&) { return near_touching(p, canonical_kappas); }
-inline bool near_touching(const Problem& p, const AlignedBox<double>&) { return near_touching(p, aligned_kappas); }
-inline bool near_touching(const Problem& p, const OrientedBox<double>&) { return near_touching(p, oriented_kappas); }
-
-// `sound = false` (the filter() overloads below) sets every κ to 0: decisions on the computed values
-// alone, unsound, for the tests that show the bounds are needed.
 
 // The axis point nearest to the box centre (canonical origin), clamped to the slab: c + t·d with
 // t = clamp(−d·c, −H, H). Any point will do for a witness; this one is often deep inside.
@@ -547,7 +535,7 @@ inline void set_units(Problem& p, double l, double g) {
 }
 
 // Canonical box: the box is canonical, the cylinder already in its frame: nothing rounds but the unit axis.
-BOXCYL_STAGE0_INLINE bool problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
+BOXCYL_FORCE_INLINE inline bool problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.extents), largest(cyl.center), cyl.radius, cyl.height});
     if (!in_range(l) || !usable_axis(cyl.axis)) return false;
     p.c = cyl.center;
@@ -568,7 +556,7 @@ BOXCYL_STAGE0_INLINE bool problem(const CanonicalBox<double>& b, const Cylinder<
 }
 
 // Aligned box: centre K and extents E rounded (in the model); "C in the box" is decided exactly.
-BOXCYL_STAGE0_INLINE bool problem(const AlignedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
+BOXCYL_FORCE_INLINE inline bool problem(const AlignedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.min), largest(b.max), largest(cyl.center), cyl.radius, cyl.height});
     if (!in_range(l) || !usable_axis(cyl.axis)) return false;
     int inside = 1;
@@ -595,7 +583,7 @@ BOXCYL_STAGE0_INLINE bool problem(const AlignedBox<double>& b, const Cylinder<do
 // are within γ3·|A_i||A_j| ≤ 3.0003ε of the exact ones (the diagonal's "− 1" is exact by Sterbenz's
 // lemma, as |A_i|² ∈ [0.5, 2]), a row sum of three rounds twice: so g ≤ row + 10ε, and
 // g = fl(row + 32ε) is an upper bound.
-BOXCYL_STAGE0_INLINE bool problem(const OrientedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
+BOXCYL_FORCE_INLINE inline bool problem(const OrientedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.center), largest(b.extents), largest(cyl.center), cyl.radius, cyl.height});
     if (!in_range(l) || !usable_axis(cyl.axis)) return false;
     const std::array<Vec3<double>, 3>& a = b.axes;
@@ -653,22 +641,16 @@ inline Vec3<double> witness_offset(const Problem& p, int w, const AlignedBox<dou
 // ---- Stage 0: the answer, or nullopt when undecided. ----
 
 // On a problem computed by problem() for the same box and cylinder (the query builds it once and
-// hands it on to the witness search).
-inline std::optional<bool> decide(const Problem& p, const CanonicalBox<double>&, const Cylinder<double>&, bool sound = true) {
-    return decide(p, sound ? canonical_kappas : unsound_kappas, [&p](int w) { return witness_offset(p, w); });
+// hands it on to the witness search). The tests pass other κ (zero: the decisions of the computed
+// values alone) through the generic decide() above.
+inline std::optional<bool> decide(const Problem& p, const CanonicalBox<double>&, const Cylinder<double>&) {
+    return decide(p, canonical_kappas, [&p](int w) { return witness_offset(p, w); });
 }
-inline std::optional<bool> decide(const Problem& p, const AlignedBox<double>& b, const Cylinder<double>& cyl, bool sound = true) {
-    return decide(p, sound ? aligned_kappas : unsound_kappas, [&](int w) { return witness_offset(p, w, b, cyl); });
+inline std::optional<bool> decide(const Problem& p, const AlignedBox<double>& b, const Cylinder<double>& cyl) {
+    return decide(p, aligned_kappas, [&](int w) { return witness_offset(p, w, b, cyl); });
 }
-inline std::optional<bool> decide(const Problem& p, const OrientedBox<double>&, const Cylinder<double>&, bool sound = true) {
-    return decide(p, sound ? oriented_kappas : unsound_kappas, [&p](int w) { return witness_offset(p, w); });
-}
-
-template <class Box>
-std::optional<bool> filter(const Box& b, const Cylinder<double>& cyl, bool sound = true) {
-    Problem p;
-    if (!problem(b, cyl, p)) return std::nullopt;
-    return decide(p, b, cyl, sound);
+inline std::optional<bool> decide(const Problem& p, const OrientedBox<double>&, const Cylinder<double>&) {
+    return decide(p, oriented_kappas, [&p](int w) { return witness_offset(p, w); });
 }
 
 }  // namespace boxcyl::filtered::semi_static

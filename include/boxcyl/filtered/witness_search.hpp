@@ -48,7 +48,7 @@ using semi_static::clamp_to;  // branch-free std::clamp
 
 // One projection onto the cylinder (centre c, unit axis d, half-height h, radius r; h, r ≥ 0) in the
 // box frame.
-BOXCYL_STAGE0_INLINE Vec3<double> onto_cylinder(const Vec3<double>& x, const Problem& p, double h, double r) {
+BOXCYL_FORCE_INLINE inline Vec3<double> onto_cylinder(const Vec3<double>& x, const Problem& p, double h, double r) {
     const Vec3<double> y = x - p.c;
     const double t = dot(p.d, y);
     Vec3<double> w = y - t * p.d;
@@ -57,7 +57,7 @@ BOXCYL_STAGE0_INLINE Vec3<double> onto_cylinder(const Vec3<double>& x, const Pro
     return p.c + clamp_to(t, -h, h) * p.d + w;
 }
 // Onto the box of extents e ≥ 0.
-BOXCYL_STAGE0_INLINE Vec3<double> onto_box(const Vec3<double>& x, const Vec3<double>& e) {
+BOXCYL_FORCE_INLINE inline Vec3<double> onto_box(const Vec3<double>& x, const Vec3<double>& e) {
     return {clamp_to(x[0], -e[0], e[0]), clamp_to(x[1], -e[1], e[1]), clamp_to(x[2], -e[2], e[2])};
 }
 
@@ -248,9 +248,8 @@ inline auto offset_in_world(const Problem& p, const OrientedBox<double>& b, cons
 // (semi_static::near_touching: a face or cap against a face, an edge against the side), or the axis
 // segment's distance from the box near r (the side or the rim against a vertex or an edge: the
 // distance from the nearest axis point to the box, in plain double).
-template <class Box>
-bool near_touching(const semi_static::Problem& p, const Box& box) {
-    if (semi_static::near_touching(p, box)) return true;
+inline bool near_touching(const semi_static::Problem& p, const semi_static::Kappas& k) {
+    if (semi_static::near_touching(p, k)) return true;
     const double t = detail::nearest_axis_parameter(p, p.h);
     Vec3<double> gap;
     for (int i = 0; i < 3; ++i) {
@@ -282,19 +281,6 @@ inline bool certain_hit(const semi_static::Problem& p, const AlignedBox<double>&
 }
 inline bool certain_hit(const semi_static::Problem& p, const OrientedBox<double>&, const Cylinder<double>&) {
     return detail::search_thorough(p, semi_static::oriented_kappas, detail::offset_in(p));
-}
-
-// The same from the inputs (false or nullopt when the problem is out of stage 0's range).
-template <class Box>
-std::optional<bool> decide(const Box& b, const Cylinder<double>& cyl) {
-    semi_static::Problem p;
-    if (!semi_static::problem(b, cyl, p)) return std::nullopt;
-    return witness_search::decide(p, b, cyl);  // qualified: ADL also finds semi_static::decide
-}
-template <class Box>
-bool certain_hit(const Box& b, const Cylinder<double>& cyl) {
-    semi_static::Problem p;
-    return semi_static::problem(b, cyl, p) && certain_hit(p, b, cyl);
 }
 
 }  // namespace boxcyl::filtered::witness_search

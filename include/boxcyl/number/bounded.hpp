@@ -38,12 +38,7 @@
 #include "boxcyl/number/traits.hpp"
 
 // The operations are a few flops each; inlining them is what makes this stage cheap (GCC at -O2 would
-// otherwise call many of them out of line).
-#if defined(__GNUC__) || defined(__clang__)
-#define BOXCYL_BOUNDED_INLINE [[gnu::always_inline]] inline
-#else
-#define BOXCYL_BOUNDED_INLINE inline
-#endif
+// otherwise call many of them out of line): BOXCYL_FORCE_INLINE.
 
 namespace boxcyl {
 
@@ -72,24 +67,24 @@ public:
     double hi() const { return e_ == 0 ? v_ : detail::next_up(v_ + e_ * margin); }
     bool exact_zero() const { return v_ == 0 && e_ == 0; }
 
-    BOXCYL_BOUNDED_INLINE friend Bounded operator+(const Bounded& a, const Bounded& b) {
+    BOXCYL_FORCE_INLINE inline friend Bounded operator+(const Bounded& a, const Bounded& b) {
         const double v = a.v_ + b.v_;
         return checked(v, a.e_ + b.e_ + u * std::fabs(v));
     }
-    BOXCYL_BOUNDED_INLINE friend Bounded operator-(const Bounded& a, const Bounded& b) {
+    BOXCYL_FORCE_INLINE inline friend Bounded operator-(const Bounded& a, const Bounded& b) {
         const double v = a.v_ - b.v_;
         return checked(v, a.e_ + b.e_ + u * std::fabs(v));
     }
-    BOXCYL_BOUNDED_INLINE friend Bounded operator-(const Bounded& a) { return {-a.v_, a.e_}; }
+    BOXCYL_FORCE_INLINE inline friend Bounded operator-(const Bounded& a) { return {-a.v_, a.e_}; }
     // |AB − ab| ≤ |a|·e_b + |b|·e_a + e_a·e_b for |A − a| ≤ e_a, |B − b| ≤ e_b.
-    BOXCYL_BOUNDED_INLINE friend Bounded operator*(const Bounded& a, const Bounded& b) {
+    BOXCYL_FORCE_INLINE inline friend Bounded operator*(const Bounded& a, const Bounded& b) {
         const double v = a.v_ * b.v_;
         const double e = std::fabs(a.v_) * b.e_ + std::fabs(b.v_) * a.e_ + a.e_ * b.e_ + u * std::fabs(v) + tiny;
         return checked(v, (a.exact_zero() || b.exact_zero()) ? 0.0 : e);
     }
     // |A/B − a/b| ≤ (e_a + |a/b|·e_b)/(|b| − e_b); the divisor is taken as |b| − 2e_b (a lower bound
     // of |b| − e_b whatever the rounding of e_b) and must be positive, else the result is undecided.
-    BOXCYL_BOUNDED_INLINE friend Bounded operator/(const Bounded& a, const Bounded& b) {
+    BOXCYL_FORCE_INLINE inline friend Bounded operator/(const Bounded& a, const Bounded& b) {
         const double v = a.v_ / b.v_;
         const double den = std::fabs(b.v_) - 2 * b.e_;
         if (!(den > 0)) [[unlikely]]
@@ -108,7 +103,7 @@ public:
     Bounded& operator/=(const Bounded& b) { return *this = *this / b; }
 
     // |√A − √a| = |A − a|/(√A + √a) ≤ e_a/√a.
-    BOXCYL_BOUNDED_INLINE friend Bounded sqrt(const Bounded& a) {
+    BOXCYL_FORCE_INLINE inline friend Bounded sqrt(const Bounded& a) {
         if (a.exact_zero()) return Bounded(0.0);
         if (!(a.v_ > 0)) [[unlikely]]
             return undecided();
@@ -117,31 +112,31 @@ public:
     }
 
     // B − A lies in [d − b, d + b] for d = b.v − a.v rounded and b = (e_a + e_b + u|d|)·M.
-    BOXCYL_BOUNDED_INLINE friend bool operator<(const Bounded& a, const Bounded& b) {
+    BOXCYL_FORCE_INLINE inline friend bool operator<(const Bounded& a, const Bounded& b) {
         const double d = b.v_ - a.v_;
         const double bound = (a.e_ + b.e_ + u * std::fabs(d)) * margin;
         if (d - bound > 0) return true;
         if (d + bound <= 0) return false;
         return uncertain();
     }
-    BOXCYL_BOUNDED_INLINE friend bool operator<=(const Bounded& a, const Bounded& b) {
+    BOXCYL_FORCE_INLINE inline friend bool operator<=(const Bounded& a, const Bounded& b) {
         const double d = b.v_ - a.v_;
         const double bound = (a.e_ + b.e_ + u * std::fabs(d)) * margin;
         if (d - bound >= 0) return true;
         if (d + bound < 0) return false;
         return uncertain();
     }
-    BOXCYL_BOUNDED_INLINE friend bool operator>(const Bounded& a, const Bounded& b) { return b < a; }
-    BOXCYL_BOUNDED_INLINE friend bool operator>=(const Bounded& a, const Bounded& b) { return b <= a; }
+    BOXCYL_FORCE_INLINE inline friend bool operator>(const Bounded& a, const Bounded& b) { return b < a; }
+    BOXCYL_FORCE_INLINE inline friend bool operator>=(const Bounded& a, const Bounded& b) { return b <= a; }
     friend bool operator==(const Bounded& a, const Bounded& b) { return a <= b && b <= a; }
     friend bool operator!=(const Bounded& a, const Bounded& b) { return !(a == b); }
 
     // |x| without deciding the sign of x: |·| is 1-Lipschitz, so the bound carries over.
-    BOXCYL_BOUNDED_INLINE friend Bounded enclosure_abs(const Bounded& x) { return {std::fabs(x.v_), x.e_}; }
+    BOXCYL_FORCE_INLINE inline friend Bounded enclosure_abs(const Bounded& x) { return {std::fabs(x.v_), x.e_}; }
     // x clamped to [−e, e], also without a decision. Where x is certainly outside, the result is the
     // bound ±e itself; otherwise the clamp is 1-Lipschitz in x and in e, so max(e_x, e_e) bounds the
     // error, and an exact e bounds it by 2e as well (an exact 0 stays exact).
-    BOXCYL_BOUNDED_INLINE friend Bounded enclosure_clamp(const Bounded& x, const Bounded& e) {
+    BOXCYL_FORCE_INLINE inline friend Bounded enclosure_clamp(const Bounded& x, const Bounded& e) {
         if (certainly_less(e, x)) return e;
         const Bounded minus_e = -e;
         if (certainly_less(x, minus_e)) return minus_e;
@@ -154,10 +149,10 @@ public:
 private:
     // A result that may have overflowed (see the header comment): |v| + e rounds to at least DBL_MAX
     // in every rounding mode when |v| or e is at DBL_MAX, and is ∞ or NaN when either is.
-    BOXCYL_BOUNDED_INLINE static Bounded checked(double v, double e) {
+    BOXCYL_FORCE_INLINE inline static Bounded checked(double v, double e) {
         return {v, std::fabs(v) + e < std::numeric_limits<double>::max() ? e : std::numeric_limits<double>::infinity()};
     }
-    BOXCYL_BOUNDED_INLINE static bool certainly_less(const Bounded& a, const Bounded& b) {  // a < b decided true; no flag
+    BOXCYL_FORCE_INLINE inline static bool certainly_less(const Bounded& a, const Bounded& b) {  // a < b decided true; no flag
         const double d = b.v_ - a.v_;
         return d - (a.e_ + b.e_ + u * std::fabs(d)) * margin > 0;
     }

@@ -46,11 +46,6 @@
 #include "boxcyl/number/interval.hpp"  // UncertaintyScope, the uncertainty flag, next_up/next_down
 #include "boxcyl/number/traits.hpp"
 
-#if defined(__GNUC__) || defined(__clang__)
-#define BOXCYL_DD_INLINE [[gnu::always_inline]] inline
-#else
-#define BOXCYL_DD_INLINE inline
-#endif
 
 // A hardware FMA (then std::fma is one instruction), or an x86 target without one (then Dekker's
 // product, and no contraction is possible either). Elsewhere std::fma is used as well.
@@ -65,18 +60,18 @@ namespace boxcyl {
 namespace detail::dd {
 
 // s + t = a + b exactly (round to nearest, no overflow): Knuth's TwoSum.
-BOXCYL_DD_INLINE void two_sum(double a, double b, double& s, double& t) {
+BOXCYL_FORCE_INLINE inline void two_sum(double a, double b, double& s, double& t) {
     s = a + b;
     const double bb = s - a;
     t = (a - (s - bb)) + (b - bb);
 }
 // The same when |a| ≥ |b| or a = 0 (Dekker's Fast2Sum).
-BOXCYL_DD_INLINE void fast_two_sum(double a, double b, double& s, double& t) {
+BOXCYL_FORCE_INLINE inline void fast_two_sum(double a, double b, double& s, double& t) {
     s = a + b;
     t = b - (s - a);
 }
 // p + e = a·b exactly (round to nearest, no overflow, no underflow of e).
-BOXCYL_DD_INLINE void two_prod(double a, double b, double& p, double& e) {
+BOXCYL_FORCE_INLINE inline void two_prod(double a, double b, double& p, double& e) {
     p = a * b;
 #if BOXCYL_DD_USE_FMA
     e = std::fma(a, b, -p);
@@ -89,7 +84,7 @@ BOXCYL_DD_INLINE void two_prod(double a, double b, double& p, double& e) {
 #endif
 }
 // x·y + z with one rounding where the target has an FMA, else two (the bound allows either).
-BOXCYL_DD_INLINE double mul_add(double x, double y, double z) {
+BOXCYL_FORCE_INLINE inline double mul_add(double x, double y, double z) {
 #if BOXCYL_DD_USE_FMA
     return std::fma(x, y, z);
 #else
@@ -131,7 +126,7 @@ public:
         return detail::next_up(hi_ + detail::next_up(std::fabs(lo_) + e_ * margin));
     }
 
-    BOXCYL_DD_INLINE friend DoubleDouble operator+(const DoubleDouble& a, const DoubleDouble& b) {
+    BOXCYL_FORCE_INLINE inline friend DoubleDouble operator+(const DoubleDouble& a, const DoubleDouble& b) {
         if (b.exact_zero()) return a;
         if (a.exact_zero()) return b;
         double sh, sl, th, tl, vh, vl, zh, zl;
@@ -146,10 +141,10 @@ public:
         const bool exact = a.lo_ == 0 && b.lo_ == 0;
         return {zh, zl, a.e_ + b.e_ + (exact ? 0.0 : rel * std::fabs(zh))};
     }
-    BOXCYL_DD_INLINE friend DoubleDouble operator-(const DoubleDouble& a) { return {-a.hi_, -a.lo_, a.e_}; }
-    BOXCYL_DD_INLINE friend DoubleDouble operator-(const DoubleDouble& a, const DoubleDouble& b) { return a + (-b); }
+    BOXCYL_FORCE_INLINE inline friend DoubleDouble operator-(const DoubleDouble& a) { return {-a.hi_, -a.lo_, a.e_}; }
+    BOXCYL_FORCE_INLINE inline friend DoubleDouble operator-(const DoubleDouble& a, const DoubleDouble& b) { return a + (-b); }
     // |AB − ab| ≤ |a|·e_b + |b|·e_a + e_a·e_b for |A − a| ≤ e_a, |B − b| ≤ e_b; |a| ≤ |a_hi| + |a_lo|.
-    BOXCYL_DD_INLINE friend DoubleDouble operator*(const DoubleDouble& a, const DoubleDouble& b) {
+    BOXCYL_FORCE_INLINE inline friend DoubleDouble operator*(const DoubleDouble& a, const DoubleDouble& b) {
         if (a.exact_zero() || b.exact_zero()) return DoubleDouble(0.0);
         double ch, cl1, zh, zl;
         detail::dd::two_prod(a.hi_, b.hi_, ch, cl1);
@@ -211,7 +206,7 @@ public:
     // The sign of the exact value's difference: B − A lies within E of d = b − a (a double-double,
     // |d_lo| ≤ ulp(d_hi)), E = e_d·M. Decided when |d_hi| exceeds twice |d_lo| + E (a margin that
     // needs no care about the rounding of the test itself); an exact d decides by d_hi's sign.
-    BOXCYL_DD_INLINE friend int compare(const DoubleDouble& a, const DoubleDouble& b) {  // sign of b − a, 2: undecided
+    BOXCYL_FORCE_INLINE inline friend int compare(const DoubleDouble& a, const DoubleDouble& b) {  // sign of b − a, 2: undecided
         const DoubleDouble d = b - a;
         if (d.e_ == 0 && d.hi_ == d.hi_ && std::fabs(d.hi_) <= std::numeric_limits<double>::max())
             return (d.hi_ > 0) - (d.hi_ < 0);
@@ -222,26 +217,26 @@ public:
     }
     // An undecided comparison is recorded and answers by the order of the values (value_order), so
     // that the comparisons a sort makes always form a strict weak order (§3's hull sorts points).
-    BOXCYL_DD_INLINE friend bool operator<(const DoubleDouble& a, const DoubleDouble& b) {
+    BOXCYL_FORCE_INLINE inline friend bool operator<(const DoubleDouble& a, const DoubleDouble& b) {
         int s = compare(a, b);
         if (s == 2) [[unlikely]]
             s = undecided_order(a, b);
         return s > 0;
     }
-    BOXCYL_DD_INLINE friend bool operator<=(const DoubleDouble& a, const DoubleDouble& b) {
+    BOXCYL_FORCE_INLINE inline friend bool operator<=(const DoubleDouble& a, const DoubleDouble& b) {
         int s = compare(a, b);
         if (s == 2) [[unlikely]]
             s = undecided_order(a, b);
         return s >= 0;
     }
-    BOXCYL_DD_INLINE friend bool operator>(const DoubleDouble& a, const DoubleDouble& b) { return b < a; }
-    BOXCYL_DD_INLINE friend bool operator>=(const DoubleDouble& a, const DoubleDouble& b) { return b <= a; }
+    BOXCYL_FORCE_INLINE inline friend bool operator>(const DoubleDouble& a, const DoubleDouble& b) { return b < a; }
+    BOXCYL_FORCE_INLINE inline friend bool operator>=(const DoubleDouble& a, const DoubleDouble& b) { return b <= a; }
     friend bool operator==(const DoubleDouble& a, const DoubleDouble& b) { return a <= b && b <= a; }
     friend bool operator!=(const DoubleDouble& a, const DoubleDouble& b) { return !(a == b); }
 
     // |x| without deciding the sign of x (|·| is 1-Lipschitz: the bound carries over). The sign of a
     // normalised hi + lo is the sign of hi.
-    BOXCYL_DD_INLINE friend DoubleDouble enclosure_abs(const DoubleDouble& x) { return x.hi_ < 0 ? -x : x; }
+    BOXCYL_FORCE_INLINE inline friend DoubleDouble enclosure_abs(const DoubleDouble& x) { return x.hi_ < 0 ? -x : x; }
     // x clamped to [−e, e] without a decision: where x is certainly outside, the bound ±e itself;
     // otherwise the clamp of the values, which is 1-Lipschitz in x and e (error max(e_x, e_e)), and for
     // an exact e within 2e of any point of [−e, e] (an exact 0 stays exact).

@@ -5,6 +5,14 @@
 #include <cmath>        // std::sqrt for the floating-point specialisation
 #include <type_traits>  // std::is_floating_point_v
 
+// Forces inlining where GCC at -O2 would keep a small hot function out of line (each use says why):
+// before a function's declaration (with `inline`), or after a lambda's parameter list.
+#if defined(__GNUC__) || defined(__clang__)
+#define BOXCYL_FORCE_INLINE __attribute__((always_inline))
+#else
+#define BOXCYL_FORCE_INLINE
+#endif
+
 namespace boxcyl {
 
 // Primary template: unknown types are not exact and have no sqrt; specialise to opt in.

@@ -16,9 +16,10 @@
 #include "boxcyl/algo/convex_hull.hpp"
 #include "boxcyl/algo/linear_inequalities.hpp"
 #include "boxcyl/algo/quadratic_programming.hpp"
+#include "boxcyl/exact/convert.hpp"
+#include "boxcyl/exact/reduce.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
 #include "boxcyl/geometry/reduce.hpp"
-#include "boxcyl/geometry/reduce_exact.hpp"
-#include "boxcyl/oracle/oracle.hpp"
 
 namespace boxcyl::exact {
 
@@ -74,6 +75,18 @@ inline bool intersects(Method m, const OrientedBox<Rational>& box, const Cylinde
             "boxcyl: exact lcp/inequalities need an exactly orthonormal box frame; these oriented-box axes are only "
             "orthonormal up to rounding (use Algorithm::hull or Algorithm::oracle for an exact answer)");
     return detail::run_canonical(m, to_canonical(detail::lift(box), u));
+}
+
+// Any parallelepiped, axes exactly as given: the convex-hull method only (the other two need an
+// orthonormal frame).
+inline bool intersects(Method m, const Parallelepiped<Rational>& box, const Cylinder<Rational>& cyl) {
+    if (m != Method::hull)
+        throw std::domain_error("boxcyl: exact lcp/inequalities need an orthonormal box frame (use Algorithm::hull)");
+    const QuadraticField<Rational> field(dot(cyl.axis, cyl.axis));
+    algo::Parallelepiped<QFRational> p;
+    p.center = lift(box.center);
+    for (int i = 0; i < 3; ++i) p.half_edges[i] = lift(Vec3<Rational>(box.extents[i] * box.axes[i]));
+    return algo::convex_hull(p, to_unit(cyl, field));
 }
 
 }  // namespace boxcyl::exact

@@ -1,0 +1,62 @@
+// The exact stage: the one entry point into exact arithmetic for the exact default (filtered.hpp) and
+// for every box kind. The answer is exact for the inputs as given (each double the rational it
+// denotes, the unit axis D/|D| exactly); the oracle is not used (it stays the independent judge).
+//
+// Routes, cheapest first:
+//   a canonical frame that is exact (aligned and canonical boxes, oriented boxes whose axes are a
+//   signed permutation): the linear-inequalities method in integers and Z[√d]
+//   (exact/integer_inequalities.hpp) — in fixed-width integers on the stack, in integers in powers of a
+//   tiny ε for inputs of two far-apart scales, else in mpz_class;
+//   any other frame, and any parallelepiped: the clipped edges and face cuts in integers
+//   (exact/integer_parallelepiped.hpp);
+//   dependent axes (flat parallelepipeds spanned by parallel or coplanar axes): the convex-hull method
+//   in rationals and Q(√d) (exact/paths.hpp).
+// The tiers let the pipeline ask one route early, where it costs less than any further filter: the
+// fixed-width integers for narrow inputs, the ε-series for narrow inputs of two scales. Each answers
+// nullopt when it cannot (a value outgrew its integers, a sign beyond the series' order, not that kind
+// of input); Tier::full always answers.
+#pragma once
+
+#include <optional>  // the tiers' "cannot"
+
+#include "boxcyl/exact/convert.hpp"
+#include "boxcyl/exact/integer_inequalities.hpp"
+#include "boxcyl/exact/integer_parallelepiped.hpp"
+#include "boxcyl/exact/paths.hpp"
+#include "boxcyl/geometry/box.hpp"
+#include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
+
+namespace boxcyl::exact {
+
+enum class Tier {
+    fixed,   // fixed-width integers only
+    series,  // integers in powers of ε only (inputs of two scales)
+    full,    // every route: always answers
+};
+
+inline std::optional<bool> answer(const Parallelepiped<double>& b, const Cylinder<double>& c, Tier tier = Tier::full) {
+    switch (tier) {
+        case Tier::fixed: return integer::parallelepiped_small(b, c);
+        case Tier::series: return std::nullopt;
+        case Tier::full: break;
+    }
+    if (const std::optional<bool> r = integer::intersects_parallelepiped(b, c)) return r;
+    return intersects(Method::hull, to_exact(b), to_exact(c));
+}
+
+// Aligned, canonical and oriented boxes.
+template <class Box>
+std::optional<bool> answer(const Box& b, const Cylinder<double>& c, Tier tier = Tier::full) {
+    if constexpr (std::is_same_v<Box, OrientedBox<double>>) {
+        if (!signed_permutation(b.axes)) return answer(Parallelepiped<double>{b.center, b.axes, b.extents}, c, tier);
+    }
+    switch (tier) {
+        case Tier::fixed: return integer::answer_small(b, c);
+        case Tier::series: return integer::answer_two_scale(b, c);
+        case Tier::full: break;
+    }
+    return integer::answer(b, c);
+}
+
+}  // namespace boxcyl::exact

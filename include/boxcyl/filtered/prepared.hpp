@@ -1,0 +1,238 @@
+// The prepared query: what every row of the pipeline (filtered/schedule.hpp) needs to know about one
+// box and one cylinder, computed once. Stage 0's problem is computed at once (nearly every query ends
+// there); the facts of the later rows on first use (facts()), and the speed hints (near touching,
+// narrow inputs) each on first use, since a query that stage 0 decides must not pay for them.
+//
+// Queries beyond stage 0's range of scales (a length above 2^200 or all below 2^-200) are first
+// scaled by a power of two to about 1 when that is exact for every length: the same question, whose
+// answer is the same, and then the cheap rows apply.
+#pragma once
+
+#include <algorithm>  // std::max
+#include <bit>        // std::bit_cast: powers of two
+#include <cmath>      // std::fabs, std::ilogb
+#include <cstdint>    // std::uint64_t, std::int8_t
+#include <limits>     // infinity
+#include <optional>   // the frame's signed permutation
+#include <type_traits>  // std::is_same_v
+
+#include "boxcyl/algo/linear_inequalities.hpp"
+#include "boxcyl/filtered/semi_static.hpp"
+#include "boxcyl/filtered/witness_search.hpp"
+#include "boxcyl/geometry/box.hpp"
+#include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/reduce.hpp"
+#include "boxcyl/number/double_double.hpp"  // round_to_nearest
+
+namespace boxcyl::filtered {
+
+// ---- Lengths and scales ----
+
+inline void update_max(double& m, double x) { m = std::max(m, std::fabs(x)); }
+inline void update_max(double& m, const Vec3<double>& v) {
+    for (int i = 0; i < 3; ++i) update_max(m, v[i]);
+}
+inline void update_max(double& m, const AlignedBox<double>& b) { update_max(m, b.min), update_max(m, b.max); }
+inline void update_max(double& m, const CanonicalBox<double>& b) { update_max(m, b.extents); }
+template <class Box>  // OrientedBox, Parallelepiped: the centre and the extents (the axes carry no length)
+void update_max(double& m, const Box& b) {
+    update_max(m, b.center), update_max(m, b.extents);
+}
+// The largest length of a query: every box length, the cylinder's centre, radius and height.
+template <class Box>
+double largest_length(const Box& b, const Cylinder<double>& c) {
+    double m = 0;
+    update_max(m, b);
+    update_max(m, c.center);
+    update_max(m, c.radius);
+    update_max(m, c.height);
+    return m;
+}
+
+// x·2^k rounded as any product is (so exact unless it leaves the normal range), for |k| ≤ 2044: by
+// one or two products with normal powers of two, not a libm call (std::ldexp was two fifths of the
+// time of random queries at extreme scales).
+inline double times_two_to(double x, int k) {
+    auto power = [](int e) { return std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52); };
+    if (k >= -1022 && k <= 1023) return x * power(k);
+    const int half = k / 2;
+    return x * power(half) * power(k - half);
+}
+inline Vec3<double> times_two_to(const Vec3<double>& v, int k) {
+    return {times_two_to(v[0], k), times_two_to(v[1], k), times_two_to(v[2], k)};
+}
+// Every length of the query times 2^k, the axis kept (the axes of a frame too).
+inline AlignedBox<double> times_two_to(const AlignedBox<double>& b, int k) {
+    return {times_two_to(b.min, k), times_two_to(b.max, k)};
+}
+inline CanonicalBox<double> times_two_to(const CanonicalBox<double>& b, int k) { return {times_two_to(b.extents, k)}; }
+template <class Box>  // OrientedBox, Parallelepiped
+Box times_two_to(const Box& b, int k) {
+    return {times_two_to(b.center, k), b.axes, times_two_to(b.extents, k)};
+}
+inline Cylinder<double> times_two_to(const Cylinder<double>& c, int k) {
+    return {times_two_to(c.center, k), c.axis, times_two_to(c.radius, k), times_two_to(c.height, k)};
+}
+inline bool same_lengths(const AlignedBox<double>& a, const AlignedBox<double>& b) { return a.min == b.min && a.max == b.max; }
+inline bool same_lengths(const CanonicalBox<double>& a, const CanonicalBox<double>& b) { return a.extents == b.extents; }
+template <class Box>
+bool same_lengths(const Box& a, const Box& b) {
+    return a.center == b.center && a.extents == b.extents;
+}
+inline bool same_lengths(const Cylinder<double>& a, const Cylinder<double>& b) {
+    return a.center == b.center && a.radius == b.radius && a.height == b.height;
+}
+
+// The query with every length times 2^k, k bringing the largest to [1, 2), when that is exact for
+// every length: scaled back, a value comes back exactly only when its scaling rounded nothing (the way
+// back only grows values, or shrinks them again by what they grew), in every rounding mode alike.
+template <class Box>
+bool rescaled_exactly(Box& box, Cylinder<double>& cyl, double m) {
+    if (!(m > 0) || !(m < std::numeric_limits<double>::infinity())) return false;
+    const int k = -std::ilogb(m);
+    const Box b = times_two_to(box, k);
+    const Cylinder<double> c = times_two_to(cyl, k);
+    if (!same_lengths(times_two_to(b, -k), box) || !same_lengths(times_two_to(c, -k), cyl)) return false;
+    box = b, cyl = c;
+    return true;
+}
+
+// Stage 1's exponent: lengths times 2^k bring the largest m to [1, 2) when m is beyond 2^±200 (the
+// linear-inequalities method forms products of up to four lengths), else k = 0.
+inline int scale_exponent(double m) {
+    if (!(m > 0) || !(m < std::numeric_limits<double>::infinity())) return 0;
+    const int e = std::ilogb(m);
+    return (e < -200 || e > 200) ? -e : 0;
+}
+
+// The cylinder axis with its non-zero components below 2^exponent of the largest set to 0; false when
+// there is none. Such components are exact in the input but lost in any enclosure of the unit axis.
+inline bool tiny_components_zeroed(const Vec3<double>& a, Vec3<double>& zeroed, int exponent) {
+    double m = 0;
+    update_max(m, a);
+    const double limit = std::ldexp(m, exponent);
+    bool any = false;
+    zeroed = a;
+    for (int i = 0; i < 3; ++i)
+        if (a[i] != 0 && std::fabs(a[i]) <= limit) zeroed[i] = 0, any = true;
+    return any;
+}
+
+// ---- The box kinds' frames ----
+
+template <class Box>
+inline constexpr bool is_oriented = std::is_same_v<Box, OrientedBox<double>>;
+
+// Whether a size is 0: a flat box, a disk or a segment (their hits have no interior point to certify).
+inline bool has_zero_size(const AlignedBox<double>& b, const Cylinder<double>& c) {
+    return b.min[0] == b.max[0] || b.min[1] == b.max[1] || b.min[2] == b.max[2] || c.radius == 0 || c.height == 0;
+}
+template <class Box>
+bool has_zero_size(const Box& b, const Cylinder<double>& c) {
+    return b.extents[0] == 0 || b.extents[1] == 0 || b.extents[2] == 0 || c.radius == 0 || c.height == 0;
+}
+
+// Stage 0's error bounds for each box kind (filtered/semi_static.hpp).
+template <class Box>
+inline constexpr const semi_static::Kappas& kappas = semi_static::canonical_kappas;
+template <>
+inline constexpr const semi_static::Kappas& kappas<AlignedBox<double>> = semi_static::aligned_kappas;
+template <>
+inline constexpr const semi_static::Kappas& kappas<OrientedBox<double>> = semi_static::oriented_kappas;
+
+// ---- Speed hints: they choose the order of rows, never an answer. ----
+
+// Whether the plain-double linear-inequalities answer changes between the cylinder grown and shrunk by
+// 2^-30 of the query's scale m (radius and half-height ± δ). It catches the contacts whose gap no single
+// separating axis or axis distance shows (a cap's rim on a box edge, a side on a vertex).
+template <class Box>
+bool answer_moves(const Box& box, const Cylinder<double>& cyl, double m) {
+    const double delta = 0x1p-30 * m;
+    if (!(delta > 0) || !(m < std::numeric_limits<double>::max() / 4)) return true;
+    const CanonicalQuery<double> q = to_canonical(box, to_unit(cyl));
+    CanonicalQuery<double> grown = q, shrunk = q;
+    grown.cylinder.radius += delta;
+    grown.cylinder.half_height += delta;
+    shrunk.cylinder.radius = std::max(0.0, q.cylinder.radius - delta);
+    shrunk.cylinder.half_height = std::max(0.0, q.cylinder.half_height - delta);
+    return algo::linear_inequalities(grown.box, grown.cylinder) != algo::linear_inequalities(shrunk.box, shrunk.cylinder);
+}
+
+// ---- The prepared query ----
+
+template <class Box>
+class Prepared {
+public:
+    // The facts of the later rows (computed together on first use).
+    struct Facts {
+        double scale;     // the largest length
+        int k;            // stage 1's exponent (scale_exponent)
+        bool flat;        // a zero size (has_zero_size)
+        bool two_scale_axis;  // an axis component below 2^-200 of the largest (and non-zero)
+        Vec3<double> axis_zeroed;  // the axis with those components set to 0
+        std::optional<SignedPermutation> frame;  // an oriented box's frame, when a signed permutation
+        bool turned;      // an oriented box whose frame is not a signed permutation
+    };
+
+    Prepared(const Box& b, const Cylinder<double>& c) : box(b), cyl(c) {
+        in_range = semi_static::problem(box, cyl, p);
+        if (!in_range && rescaled_exactly(box, cyl, largest_length(box, cyl))) in_range = semi_static::problem(box, cyl, p);
+    }
+
+    Box box;               // the query (scaled by an exact power of two when beyond stage 0's range)
+    Cylinder<double> cyl;
+    semi_static::Problem p;  // stage 0's problem; valid when in_range
+    bool in_range;           // within stage 0's range of scales
+
+    const Facts& facts() {
+        if (!facts_) {
+            Facts f{};
+            f.scale = largest_length(box, cyl);
+            f.k = scale_exponent(f.scale);
+            f.flat = has_zero_size(box, cyl);
+            f.two_scale_axis = tiny_components_zeroed(cyl.axis, f.axis_zeroed, -200);
+            if constexpr (is_oriented<Box>) {
+                f.frame = signed_permutation(box.axes);
+                f.turned = !f.frame;
+            }
+            facts_ = f;
+        }
+        return *facts_;
+    }
+    // The arithmetic rounds to nearest (a probe of the arithmetic itself: it sees every control word).
+    bool nearest() { return memo(nearest_, [] { return boxcyl::detail::round_to_nearest(); }); }
+    // Near touching by two plain-double hints: one of stage 0's separating-axis tests near its bound, and
+    // a rounded answer that changes when the cylinder grows or shrinks by 2^-30 of the scale.
+    bool near() {
+        return memo(near_, [this] {
+            return in_range && semi_static::near_touching(p, kappas<Box>) && answer_moves(box, cyl, facts().scale);
+        });
+    }
+    // Looks near touching by either hint (the axis's distance from the box near r counts too); a query
+    // out of stage 0's range is looked at scaled to about 1.
+    bool looks_near() {
+        return memo(looks_near_, [this] {
+            if (in_range) return witness_search::near_touching(p, kappas<Box>) || answer_moves(box, cyl, facts().scale);
+            Box b = box;
+            Cylinder<double> c = cyl;
+            const double m = facts().scale;
+            if (!(m > 0) || !(m < std::numeric_limits<double>::infinity())) return true;
+            const int k = -std::ilogb(m);
+            b = times_two_to(b, k), c = times_two_to(c, k);
+            semi_static::Problem q;
+            return !semi_static::problem(b, c, q) || witness_search::near_touching(q, kappas<Box>) ||
+                   answer_moves(b, c, largest_length(b, c));
+        });
+    }
+
+private:
+    template <class F>
+    static bool memo(std::int8_t& slot, F&& compute) {
+        if (slot < 0) slot = compute() ? 1 : 0;
+        return slot != 0;
+    }
+    std::optional<Facts> facts_;
+    std::int8_t nearest_ = -1, near_ = -1, looks_near_ = -1;
+};
+
+}  // namespace boxcyl::filtered

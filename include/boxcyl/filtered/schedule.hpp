@@ -1,0 +1,217 @@
+// The exact default's pipeline as data: for each box kind a table of rows — name, rounding modes, when
+// it applies, certifier — walked in order until one decides; the last row is the exact stage, which
+// always does. docs/pipeline.md describes every row by these names.
+//
+// A certifier is one function of the prepared query (filtered/prepared.hpp) with one signature,
+// returning a hit, a miss or nothing; it knows nothing of the order. Every certificate it accepts is
+// proved for the inputs as given, in the rounding modes its row lists. "When" is either a fact that a
+// certifier needs (stage 0's range, a flat shape) or a speed hint, marked `hint`: a hint only orders
+// the rows — whatever it says, some later row (at worst the exact stage) answers exactly.
+#pragma once
+
+#include <chrono>     // Stats' timing
+#include <cstdint>    // std::uint8_t
+#include <optional>   // the verdicts
+#include <tuple>      // the tables
+#include <type_traits>  // std::is_same_v
+
+#include "boxcyl/exact/answer.hpp"
+#include "boxcyl/filtered/enclosed.hpp"
+#include "boxcyl/filtered/parallelepiped.hpp"
+#include "boxcyl/filtered/prepared.hpp"
+#include "boxcyl/filtered/semi_static.hpp"
+#include "boxcyl/filtered/stats.hpp"
+#include "boxcyl/filtered/witness_search.hpp"
+#include "boxcyl/number/bounded.hpp"
+#include "boxcyl/number/double_double.hpp"
+#include "boxcyl/number/interval.hpp"
+
+namespace boxcyl::filtered {
+
+// A certifier's verdict: true (the solids meet), false (they do not), nullopt (not certified).
+using Verdict = std::optional<bool>;
+
+// The rounding modes a row runs in. Double-double arithmetic is exact only in round to nearest; the
+// rows on it are replaced by rows on outward-rounded intervals in the other modes.
+enum class Modes : std::uint8_t { any, nearest, directed };
+
+template <class When, class Certify>
+struct Row {
+    RowId id;
+    Modes modes;
+    When when;         // bool(Prepared&): the row applies
+    Certify certify;   // Verdict(Prepared&)
+};
+template <class When, class Certify>
+Row(RowId, Modes, When, Certify) -> Row<When, Certify>;
+
+// ---- Conditions ----
+
+inline constexpr auto always = [](auto&) { return true; };
+inline constexpr auto in_range = [](auto& q) { return q.in_range; };
+inline constexpr auto flat = [](auto& q) { return q.facts().flat; };
+inline constexpr auto flat_two_scale_axis = [](auto& q) { return q.facts().flat && q.facts().two_scale_axis; };
+inline constexpr auto flat_in_range = [](auto& q) { return q.facts().flat && q.in_range; };
+inline constexpr auto turned = [](auto& q) {
+    if constexpr (is_oriented<std::remove_reference_t<decltype(q.box)>>) return q.facts().turned;
+    return false;
+};
+// A flat shape whose axis is of one scale (what the linear inequalities leave there hangs on the tiny
+// components, docs/robustness/enclosures.md), not a turned frame (its clipped row ran already).
+inline constexpr auto flat_one_scale_axis = [](auto& q) {
+    const auto& f = q.facts();
+    return f.flat && !f.two_scale_axis && !turned(q);
+};
+// Hints.
+inline constexpr auto hint_narrow = [](auto& q) { return exact::integer::narrow(q.box, q.cyl); };
+inline constexpr auto hint_narrow_two_scale = [](auto& q) { return exact::integer::narrow_two_scale(q.box, q.cyl); };
+// Near touching, stage 0b's searched certificates need a margin that is not there.
+inline constexpr auto hint_search = [](auto& q) { return q.in_range && !q.near(); };
+// Linear inequalities on Bounded decide most queries that are not near touching at a third of the
+// middle stage's cost; near touching, and for turned frames (whose widened problem fails there at
+// several µs), they are left out.
+inline constexpr auto hint_not_near = [](auto& q) { return !q.near() && !turned(q) && !q.looks_near(); };
+
+// ---- Certifiers ----
+
+// Each certifier checks what it needs (stage 0's range), so that every row can be tested alone.
+inline constexpr auto semi_static_tests = [](auto& q) -> Verdict {
+    if (!q.in_range) return std::nullopt;
+    return semi_static::decide(q.p, q.box, q.cyl);
+};
+inline constexpr auto searched = [](auto& q) -> Verdict {
+    if (!q.in_range) return std::nullopt;
+    return witness_search::decide(q.p, q.box, q.cyl);
+};
+inline constexpr auto thorough = [](auto& q) -> Verdict {
+    if (q.in_range && witness_search::certain_hit(q.p, q.box, q.cyl)) return true;
+    return std::nullopt;
+};
+template <class N>
+inline constexpr auto inequalities = [](auto& q) -> Verdict { return enclosed::inequalities<N>(q); };
+inline constexpr auto clipped_dd = [](auto& q) -> Verdict {
+    return enclosed::clipped_candidates(q.box, q.cyl, q.facts().k);
+};
+inline constexpr auto hull_dd = [](auto& q) -> Verdict {
+    if constexpr (is_oriented<std::remove_reference_t<decltype(q.box)>>) return enclosed::hull(q.box, q.cyl, q.facts().k);
+    return std::nullopt;
+};
+template <exact::Tier tier>
+inline constexpr auto exact_stage = [](auto& q) -> Verdict { return exact::answer(q.box, q.cyl, tier); };
+
+// Parallelepipeds.
+inline constexpr auto pp_candidates = [](auto& q) -> Verdict {
+    return parallelepiped::certify(q.bounded(), q.plain, q.fixed);
+};
+template <class N>
+inline constexpr auto pp_frame = [](auto& q) -> Verdict {
+    if constexpr (std::is_same_v<N, Bounded>) return parallelepiped::frame_stage(q.bounded(), q.scale());
+    else return parallelepiped::frame_stage(q.interval(), q.scale());
+};
+inline constexpr auto pp_search = [](auto& q) -> Verdict {
+    for (const auto& [shrink, steps] : parallelepiped::search_phases) {
+        parallelepiped::Candidates phase;
+        parallelepiped::searched_candidates(q.approx, shrink, phase, steps);
+        if (const Verdict r = parallelepiped::certify(q.bounded(), q.plain, phase)) return r;
+        q.searched.append(phase);
+    }
+    return std::nullopt;
+};
+inline constexpr auto pp_candidates_interval = [](auto& q) -> Verdict {
+    if (const Verdict r = parallelepiped::certify(q.interval(), q.plain, q.fixed)) return r;
+    return parallelepiped::certify(q.interval(), q.plain, q.searched);
+};
+inline constexpr auto pp_clipped = [](auto& q) -> Verdict {
+    return enclosed::clipped_candidates(q.box, q.cyl, scale_exponent(q.scale()));
+};
+
+// ---- The tables ----
+
+using R = RowId;
+using M = Modes;
+
+// Aligned, canonical and oriented boxes.
+inline constexpr std::tuple box_schedule{
+    Row{R::semi_static, M::any, always, semi_static_tests},
+    Row{R::exact_narrow, M::any, hint_narrow, exact_stage<exact::Tier::fixed>},
+    Row{R::search, M::nearest, hint_search, searched},
+    Row{R::search, M::directed, in_range, searched},
+    Row{R::inequalities_bounded, M::nearest, hint_not_near, inequalities<Bounded>},
+    Row{R::exact_series_narrow, M::nearest, hint_narrow_two_scale, exact_stage<exact::Tier::series>},
+    Row{R::clipped, M::nearest, turned, clipped_dd},
+    Row{R::hull_double_double, M::nearest, turned, hull_dd},
+    Row{R::inequalities_dd, M::nearest, always, inequalities<DoubleDouble>},
+    Row{R::clipped_flat, M::nearest, flat_one_scale_axis, clipped_dd},
+    Row{R::exact_series, M::nearest, flat_two_scale_axis, exact_stage<exact::Tier::series>},
+    Row{R::inequalities_bounded_late, M::nearest, flat_two_scale_axis, inequalities<Bounded>},
+    Row{R::inequalities_bounded, M::directed, always, inequalities<Bounded>},
+    Row{R::inequalities_interval, M::nearest, flat_two_scale_axis, inequalities<Interval>},
+    Row{R::inequalities_interval, M::directed, always, inequalities<Interval>},
+    Row{R::thorough_search, M::nearest, flat_in_range, thorough},
+    Row{R::thorough_search, M::directed, in_range, thorough},
+    Row{R::exact, M::any, always, exact_stage<exact::Tier::full>},
+};
+
+// Any parallelepiped.
+inline constexpr std::tuple parallelepiped_schedule{
+    Row{R::pp_fixed, M::any, always, pp_candidates},
+    Row{R::pp_frame, M::any, always, pp_frame<Bounded>},
+    Row{R::pp_search, M::any, always, pp_search},
+    Row{R::pp_frame_interval, M::any, always, pp_frame<Interval>},
+    Row{R::pp_candidates_interval, M::any, always, pp_candidates_interval},
+    Row{R::clipped, M::nearest, always, pp_clipped},
+    Row{R::exact, M::any, always, exact_stage<exact::Tier::full>},
+};
+
+template <class Box>
+constexpr const auto& schedule() {
+    if constexpr (std::is_same_v<Box, Parallelepiped<double>>)
+        return parallelepiped_schedule;
+    else
+        return box_schedule;
+}
+
+// ---- The runner ----
+
+// No statistics: every hook is empty and inlines away.
+struct NoStats {
+    static constexpr bool enabled = false;
+};
+
+// Whether the row runs in the query's rounding mode (probed once, on the first row that asks).
+template <class Box>
+bool runs_in(Modes modes, Prepared<Box>& q) {
+    return modes == Modes::any || (modes == Modes::nearest) == q.nearest();
+}
+
+// Runs one row; true when it decided (verdict set, `exact` says whether the exact stage did).
+template <class Box, class R, class Recorder>
+bool try_row(const R& row, Prepared<Box>& q, Recorder& stats, Verdict& verdict, bool& exact_used) {
+    if (!runs_in(row.modes, q) || !row.when(q)) return false;
+    if constexpr (Recorder::enabled) {
+        const auto start = std::chrono::steady_clock::now();
+        verdict = row.certify(q);
+        const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start);
+        Stats::Row& s = stats[row.id];
+        ++s.tried;
+        s.nanoseconds += static_cast<std::uint64_t>(ns.count());
+        if (verdict) ++(*verdict ? s.hits : s.misses);
+    } else {
+        verdict = row.certify(q);
+    }
+    if (!verdict) return false;
+    exact_used = row.id == RowId::exact || row.id == RowId::exact_narrow || row.id == RowId::exact_series_narrow ||
+                 row.id == RowId::exact_series;
+    return true;
+}
+
+// Walks the box kind's table: the first row that decides answers.
+template <class Box, class Recorder>
+Verdict walk(Prepared<Box>& q, Recorder& stats, bool& exact_used) {
+    if constexpr (Recorder::enabled) ++stats.queries;
+    Verdict verdict;
+    std::apply([&](const auto&... row) { (try_row(row, q, stats, verdict, exact_used) || ...); }, schedule<Box>());
+    return verdict;
+}
+
+}  // namespace boxcyl::filtered

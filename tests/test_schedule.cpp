@@ -1,0 +1,191 @@
+// The exact default's schedules (filtered/schedule.hpp), row by row: every certifier is run alone —
+// whatever its row's "when" says — on the near-touching, adversarial, boundary and random sets, in
+// every IEEE rounding mode its row runs in, and each decision it makes must equal the oracle's. So each
+// row's soundness is a property of its own, not of the rows before it; the order stays free to change.
+// Also the schedules' shape (at most 15 rows per rounding mode, the exact stage last) and the
+// statistics the pipeline reports.
+#include <gtest/gtest.h>
+
+#include <cfenv>      // rounding modes
+#include <cstdio>     // std::printf
+#include <random>     // std::mt19937_64
+#include <string>     // labels
+#include <tuple>      // the schedules
+#include <utility>    // std::pair
+#include <vector>     // the sets
+
+#include "boxcyl/filtered.hpp"
+#include "boxcyl/query.hpp"
+#include "support/cases.hpp"
+#include "support/fp.hpp"
+#include "support/near_touching.hpp"
+#include "support/runner.hpp"
+
+namespace boxcyl {
+namespace {
+
+using namespace boxcyl::testing;
+using filtered::Modes;
+
+bool runs_in(Modes modes, int mode) {
+    return modes == Modes::any || (modes == Modes::nearest) == (mode == FE_TONEAREST);
+}
+
+struct Tally {
+    long tried = 0, decided = 0, wrong = 0;
+};
+
+// Runs every row of `schedule` alone on (box, cylinder), in `mode`; counts into tallies by row.
+template <class Schedule, class Box>
+void check_rows(const Schedule& schedule, const Box& box, const Cylinder<double>& cyl, bool want, int mode,
+                std::vector<Tally>& tallies, const std::string& where) {
+    std::apply(
+        [&](const auto&... row) {
+            (
+                [&] {
+                    if (!runs_in(row.modes, mode)) return;
+                    std::optional<bool> got;
+                    {
+                        const RoundingMode guard(mode);
+                        filtered::Prepared<Box> q(box, cyl);
+                        got = row.certify(q);
+                    }
+                    Tally& t = tallies[static_cast<std::size_t>(row.id)];
+                    ++t.tried;
+                    if (!got) return;
+                    ++t.decided;
+                    if (*got != want && ++t.wrong <= 5)
+                        ADD_FAILURE() << "row " << filtered::name(row.id) << " (" << mode_name(mode) << ") answered "
+                                      << *got << ", oracle " << want << ": " << where;
+                }(),
+                ...);
+        },
+        schedule);
+}
+
+struct Sets {
+    std::vector<Case> boxes;                                     // aligned, oriented, canonical
+    std::vector<std::pair<Parallelepiped<double>, Cylinder<double>>> parallelepipeds;
+    std::vector<bool> box_want, pp_want;
+};
+
+const Sets& sets() {
+    static const Sets s = [] {
+        Sets r;
+        std::mt19937_64 touching(7301), adversarial(7302);
+        for (long i = 0; i < scaled(600); ++i) r.boxes.push_back(touching_case(touching));
+        for (long i = 0; i < scaled(600); ++i) r.boxes.push_back(adversarial_case(adversarial));
+        CaseGenerator boundary(7303), random(7304), degenerate(7305, Profile::degenerate);
+        for (const Case& c : boundary_pairs(boundary, static_cast<std::size_t>(scaled(60)))) r.boxes.push_back(c);
+        for (long i = 0; i < scaled(600); ++i) r.boxes.push_back(random.next());
+        for (long i = 0; i < scaled(300); ++i) r.boxes.push_back(degenerate.next());
+        for (const Case& c : r.boxes) r.box_want.push_back(oracle_answer(c));
+        // Parallelepipeds: the oriented cases as the parallelepipeds they are, and the same with their
+        // axes scaled and sheared (any lengths and angles), near touching or not.
+        std::mt19937_64 rng(7306);
+        std::uniform_real_distribution<double> shear(-0.5, 0.5);
+        for (const Case& c : r.boxes) {
+            if (c.kind != BoxKind::oriented) continue;
+            const OrientedBox<double>& o = c.oriented;
+            r.parallelepipeds.push_back({{o.center, o.axes, o.extents}, c.cylinder});
+            Parallelepiped<double> p{o.center, o.axes, o.extents};
+            p.axes[0] = 3.0 * p.axes[0];
+            p.axes[1] = p.axes[1] + shear(rng) * p.axes[2];
+            if (validate(p).ok()) r.parallelepipeds.push_back({p, c.cylinder});
+        }
+        for (const auto& [p, c] : r.parallelepipeds) r.pp_want.push_back(oracle::intersects(to_exact(p), to_exact(c)));
+        return r;
+    }();
+    return s;
+}
+
+void report(const char* what, int mode, const std::vector<Tally>& tallies) {
+    for (std::size_t i = 0; i < tallies.size(); ++i) {
+        const Tally& t = tallies[i];
+        if (t.tried == 0) continue;
+        std::printf("  %-12s %-12s %-26s tried %6ld  decided %6ld  wrong %ld\n", what, mode_name(mode),
+                    std::string(filtered::name(static_cast<filtered::RowId>(i))).c_str(), t.tried, t.decided, t.wrong);
+    }
+}
+
+class ScheduleRows : public ::testing::TestWithParam<int> {};
+
+TEST_P(ScheduleRows, EveryRowIsSoundAlone) {
+    const int mode = GetParam();
+    const Sets& s = sets();
+    std::vector<Tally> boxes(filtered::row_count), pps(filtered::row_count);
+    for (std::size_t i = 0; i < s.boxes.size(); ++i)
+        with_box(s.boxes[i], [&](const auto& b, const Cylinder<double>& c) {
+            check_rows(filtered::box_schedule, b, c, s.box_want[i], mode, boxes, describe(s.boxes[i]));
+            return 0;
+        });
+    for (std::size_t i = 0; i < s.parallelepipeds.size(); ++i) {
+        const auto& [p, c] = s.parallelepipeds[i];
+        check_rows(filtered::parallelepiped_schedule, p, c, s.pp_want[i], mode, pps,
+                   filtered::detail::describe(p) + ", " + filtered::detail::describe(c));
+    }
+    report("boxes", mode, boxes);
+    report("parallelepipeds", mode, pps);
+    // Every row that ran decided something: the sets reach every certificate (the test has teeth).
+    for (std::size_t r = 0; r < filtered::row_count; ++r) {
+        for (const std::vector<Tally>* t : {&boxes, &pps}) {
+            const Tally& x = (*t)[r];
+            EXPECT_EQ(x.wrong, 0) << filtered::name(static_cast<filtered::RowId>(r));
+            if (x.tried > 0) EXPECT_GT(x.decided, 0) << filtered::name(static_cast<filtered::RowId>(r)) << " never decided";
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(RoundingModes, ScheduleRows,
+                         ::testing::Values(FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO),
+                         [](const auto& info) { return std::string(mode_name(info.param)); });
+
+// The tables' shape: at most 15 rows in each rounding mode, the exact stage last in both.
+template <class Schedule>
+void check_shape(const Schedule& schedule, const char* what) {
+    for (const Modes mode : {Modes::nearest, Modes::directed}) {
+        int rows = 0;
+        filtered::RowId last{};
+        std::apply(
+            [&](const auto&... row) {
+                ((row.modes == Modes::any || row.modes == mode ? (++rows, last = row.id) : last), ...);
+            },
+            schedule);
+        EXPECT_LE(rows, 15) << what;
+        EXPECT_EQ(last, filtered::RowId::exact) << what;
+    }
+}
+TEST(Schedule, AtMostFifteenRowsPerModeExactLast) {
+    check_shape(filtered::box_schedule, "boxes");
+    check_shape(filtered::parallelepiped_schedule, "parallelepipeds");
+}
+
+// The statistics: a query through the front door with QueryOptions::stats counts one query, one
+// deciding row and the rows tried before it.
+TEST(Schedule, StatisticsCountWhatRan) {
+    filtered::Stats stats;
+    const AlignedBox<double> box{{-1, -1, -1}, {1, 1, 1}};
+    EXPECT_FALSE(intersects(box, Cylinder<double>{{5, 0, 0}, {0, 0, 1}, 1, 1}, {.stats = &stats}));  // far: stage 0
+    EXPECT_EQ(stats.queries, 1u);
+    EXPECT_EQ(stats[filtered::RowId::semi_static].misses, 1u);
+    EXPECT_EQ(stats[filtered::RowId::semi_static].tried, 1u);
+    // Exactly touching, integer coordinates: the exact stage for narrow inputs decides, after stage 0.
+    EXPECT_TRUE(intersects(box, Cylinder<double>{{3, 0, 0}, {0, 0, 1}, 2, 1}, {.stats = &stats}));
+    EXPECT_EQ(stats.queries, 2u);
+    EXPECT_EQ(stats[filtered::RowId::semi_static].tried, 2u);
+    EXPECT_EQ(stats[filtered::RowId::exact_narrow].hits, 1u);
+    std::uint64_t decided = 0;
+    for (const auto& r : stats.rows) decided += r.hits + r.misses;
+    EXPECT_EQ(decided, 2u);
+    const std::string table = stats.table();
+    EXPECT_NE(table.find("| semi_static | 2 | 1 |"), std::string::npos) << table;
+    EXPECT_NE(table.find("| exact_narrow | 1 | 1 |"), std::string::npos) << table;
+    // Float inputs count too (widened exactly).
+    filtered::Stats f;
+    EXPECT_FALSE(intersects(AlignedBox<float>{{-1, -1, -1}, {1, 1, 1}}, Cylinder<float>{{5, 0, 0}, {0, 0, 1}, 1, 1},
+                            {.stats = &f}));
+    EXPECT_EQ(f.queries, 1u);
+}
+
+}  // namespace
+}  // namespace boxcyl
