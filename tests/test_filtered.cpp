@@ -32,6 +32,7 @@
 #include "support/fp.hpp"
 #include "support/numeric.hpp"
 #include "support/runner.hpp"
+#include "support/stages.hpp"
 
 namespace boxcyl {
 namespace {
@@ -434,8 +435,8 @@ TEST(Filtered, WitnessSearchCertifiesFlatBoxHits) {
     for (std::size_t i = 0; i < flat_box_hits.size(); ++i) {
         const Case& c = flat_box_hits[i];
         ASSERT_TRUE(oracle_answer(c)) << i;
-        const bool certified = c.kind == BoxKind::aligned ? filtered::witness_search::certain_hit(c.aligned, c.cylinder)
-                                                          : filtered::witness_search::certain_hit(c.canonical, c.cylinder);
+        const bool certified = c.kind == BoxKind::aligned ? thorough_hit(c.aligned, c.cylinder)
+                                                          : thorough_hit(c.canonical, c.cylinder);
         EXPECT_TRUE(certified) << "flat box hit " << i << "\n  " << describe(c);
         const filtered::Result r = run(c);
         EXPECT_TRUE(r.intersect) << i;

@@ -131,7 +131,9 @@ TEST_P(ScheduleRows, EveryRowIsSoundAlone) {
         for (const std::vector<Tally>* t : {&boxes, &pps}) {
             const Tally& x = (*t)[r];
             EXPECT_EQ(x.wrong, 0) << filtered::name(static_cast<filtered::RowId>(r));
-            if (x.tried > 0) EXPECT_GT(x.decided, 0) << filtered::name(static_cast<filtered::RowId>(r)) << " never decided";
+            if (x.tried > 0) {
+                EXPECT_GT(x.decided, 0) << filtered::name(static_cast<filtered::RowId>(r)) << " never decided";
+            }
         }
     }
 }
@@ -158,6 +160,30 @@ void check_shape(const Schedule& schedule, const char* what) {
 TEST(Schedule, AtMostFifteenRowsPerModeExactLast) {
     check_shape(filtered::box_schedule, "boxes");
     check_shape(filtered::parallelepiped_schedule, "parallelepipeds");
+}
+
+// The facts the rows' conditions read: a rotated frame is turned, a signed permutation is not, nor is any
+// other box kind; flat shapes and two-scale axes are recognised.
+TEST(Schedule, FactsOfThePreparedQuery) {
+    const Cylinder<double> cyl{{0.5, 0, 0}, {0, 0, 1}, 1, 2};
+    const OrientedBox<double> rotated{{0, 0, 0}, {Vec3<double>{0.6, 0.8, 0}, Vec3<double>{-0.8, 0.6, 0}, Vec3<double>{0, 0, 1}},
+                                      {1, 1, 1}};
+    const OrientedBox<double> permuted{{0, 0, 0}, {Vec3<double>{0, 1, 0}, Vec3<double>{-1, 0, 0}, Vec3<double>{0, 0, 1}},
+                                       {1, 1, 0}};
+    filtered::Prepared<OrientedBox<double>> a(rotated, cyl), b(permuted, cyl);
+    EXPECT_TRUE(filtered::turned(a));
+    EXPECT_FALSE(filtered::turned(b));
+    EXPECT_FALSE(a.facts().flat);
+    EXPECT_TRUE(b.facts().flat);
+    filtered::Prepared<AlignedBox<double>> c(AlignedBox<double>{{-1, -1, -1}, {1, 1, 1}},
+                                             Cylinder<double>{{0, 0, 0}, {0x1p-300, 0, 1}, 1, 2});
+    EXPECT_FALSE(filtered::turned(c));
+    EXPECT_TRUE(c.facts().two_scale_axis);
+    EXPECT_EQ(c.facts().axis_zeroed, (Vec3<double>{0, 0, 1}));
+    // Beyond stage 0's range, rescaled exactly by a power of two.
+    filtered::Prepared<AlignedBox<double>> far(AlignedBox<double>{{-0x1p500, -1, -1}, {1, 1, 1}}, cyl);
+    EXPECT_TRUE(far.in_range);
+    EXPECT_EQ(far.box.min[0], -1.0);
 }
 
 // The statistics: a query through the front door with QueryOptions::stats counts one query, one

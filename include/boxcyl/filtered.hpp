@@ -82,14 +82,15 @@ Result run(const Box& box, const Cylinder<double>& cyl, Recorder& stats) {
     return {*exact::answer(box, cyl), true};
 #else
     Prepared<Box> q(box, cyl);
-    bool exact_used = false;
-    const Verdict v = walk(q, stats, exact_used);
+    RowId by = RowId::exact;
+    const Verdict v = walk(q, stats, by);
 #if defined(BOXCYL_CHECK_FILTER) && BOXCYL_CHECK_FILTER
-    if (!exact_used && *exact::answer(box, cyl) != *v)
-        throw std::logic_error("boxcyl::filtered: a certificate answered " + std::string(*v ? "true" : "false") +
-                               " but the exact answer differs for " + describe(box) + ", " + describe(cyl));
+    if (!is_exact_row(by) && *exact::answer(box, cyl) != *v)
+        throw std::logic_error("boxcyl::filtered: row " + std::string(name(by)) + " answered " +
+                               std::string(*v ? "true" : "false") + " but the exact answer differs for " +
+                               describe(box) + ", " + describe(cyl));
 #endif
-    return {*v, exact_used};
+    return {*v, is_exact_row(by)};
 #endif
 }
 

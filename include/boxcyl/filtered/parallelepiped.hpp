@@ -363,6 +363,7 @@ namespace boxcyl::filtered {
 template <>
 class Prepared<Parallelepiped<double>> {
 public:
+    using box_type = Parallelepiped<double>;
     Prepared(const Parallelepiped<double>& b, const Cylinder<double>& c)
         : box(b), cyl(c), approx((parallelepiped::normalise(box, cyl), parallelepiped::approx(box, cyl))),
           plain(parallelepiped::problem<double>(box, cyl, approx.u)) {

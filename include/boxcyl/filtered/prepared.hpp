@@ -15,6 +15,7 @@
 #include <limits>     // infinity
 #include <optional>   // the frame's signed permutation
 #include <type_traits>  // std::is_same_v
+#include <utility>      // std::pair
 
 #include "boxcyl/algo/linear_inequalities.hpp"
 #include "boxcyl/filtered/semi_static.hpp"
@@ -163,6 +164,7 @@ bool answer_moves(const Box& box, const Cylinder<double>& cyl, double m) {
 template <class Box>
 class Prepared {
 public:
+    using box_type = Box;
     // The facts of the later rows (computed together on first use).
     struct Facts {
         double scale;     // the largest length
@@ -174,15 +176,32 @@ public:
         bool turned;      // an oriented box whose frame is not a signed permutation
     };
 
-    Prepared(const Box& b, const Cylinder<double>& c) : box(b), cyl(c) {
-        in_range = semi_static::problem(box, cyl, p);
-        if (!in_range && rescaled_exactly(box, cyl, largest_length(box, cyl))) in_range = semi_static::problem(box, cyl, p);
+    // The query is not copied (the rows read the caller's box and cylinder), unless it is rescaled.
+    Prepared(const Box& b, const Cylinder<double>& c)
+        : in_range(semi_static::problem(b, c, p)),
+          scaled_(in_range ? std::nullopt : rescaled(b, c)),
+          box(scaled_ ? scaled_->first : b),
+          cyl(scaled_ ? scaled_->second : c) {
+        if (scaled_) in_range = semi_static::problem(box, cyl, p);
     }
+    Prepared(const Prepared&) = delete;
+    Prepared& operator=(const Prepared&) = delete;
 
-    Box box;               // the query (scaled by an exact power of two when beyond stage 0's range)
-    Cylinder<double> cyl;
     semi_static::Problem p;  // stage 0's problem; valid when in_range
     bool in_range;           // within stage 0's range of scales
+
+private:
+    static std::optional<std::pair<Box, Cylinder<double>>> rescaled(const Box& b, const Cylinder<double>& c) {
+        std::pair<Box, Cylinder<double>> s{b, c};
+        if (!rescaled_exactly(s.first, s.second, largest_length(b, c))) return std::nullopt;
+        return s;
+    }
+    std::optional<std::pair<Box, Cylinder<double>>> scaled_;
+
+public:
+    // The query (scaled by an exact power of two when it was beyond stage 0's range).
+    const Box& box;
+    const Cylinder<double>& cyl;
 
     const Facts& facts() {
         if (!facts_) {

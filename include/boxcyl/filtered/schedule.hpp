@@ -52,8 +52,12 @@ inline constexpr auto in_range = [](auto& q) { return q.in_range; };
 inline constexpr auto flat = [](auto& q) { return q.facts().flat; };
 inline constexpr auto flat_two_scale_axis = [](auto& q) { return q.facts().flat && q.facts().two_scale_axis; };
 inline constexpr auto flat_in_range = [](auto& q) { return q.facts().flat && q.in_range; };
+// The box kind of a prepared query.
+template <class Q>
+using box_of = typename std::remove_cvref_t<Q>::box_type;
+
 inline constexpr auto turned = [](auto& q) {
-    if constexpr (is_oriented<std::remove_reference_t<decltype(q.box)>>) return q.facts().turned;
+    if constexpr (is_oriented<box_of<decltype(q)>>) return q.facts().turned;
     return false;
 };
 // A flat shape whose axis is of one scale (what the linear inequalities leave there hangs on the tiny
@@ -93,7 +97,7 @@ inline constexpr auto clipped_dd = [](auto& q) -> Verdict {
     return enclosed::clipped_candidates(q.box, q.cyl, q.facts().k);
 };
 inline constexpr auto hull_dd = [](auto& q) -> Verdict {
-    if constexpr (is_oriented<std::remove_reference_t<decltype(q.box)>>) return enclosed::hull(q.box, q.cyl, q.facts().k);
+    if constexpr (is_oriented<box_of<decltype(q)>>) return enclosed::hull(q.box, q.cyl, q.facts().k);
     return std::nullopt;
 };
 template <exact::Tier tier>
@@ -184,9 +188,9 @@ bool runs_in(Modes modes, Prepared<Box>& q) {
     return modes == Modes::any || (modes == Modes::nearest) == q.nearest();
 }
 
-// Runs one row; true when it decided (verdict set, `exact` says whether the exact stage did).
+// Runs one row; true when it decided (verdict set, `by` the row).
 template <class Box, class R, class Recorder>
-bool try_row(const R& row, Prepared<Box>& q, Recorder& stats, Verdict& verdict, bool& exact_used) {
+bool try_row(const R& row, Prepared<Box>& q, Recorder& stats, Verdict& verdict, RowId& by) {
     if (!runs_in(row.modes, q) || !row.when(q)) return false;
     if constexpr (Recorder::enabled) {
         const auto start = std::chrono::steady_clock::now();
@@ -200,17 +204,21 @@ bool try_row(const R& row, Prepared<Box>& q, Recorder& stats, Verdict& verdict, 
         verdict = row.certify(q);
     }
     if (!verdict) return false;
-    exact_used = row.id == RowId::exact || row.id == RowId::exact_narrow || row.id == RowId::exact_series_narrow ||
-                 row.id == RowId::exact_series;
+    by = row.id;
     return true;
 }
 
-// Walks the box kind's table: the first row that decides answers.
+// Whether a row is the exact stage (in one of its tiers).
+constexpr bool is_exact_row(RowId r) {
+    return r == RowId::exact || r == RowId::exact_narrow || r == RowId::exact_series_narrow || r == RowId::exact_series;
+}
+
+// Walks the box kind's table: the first row that decides answers (`by` says which).
 template <class Box, class Recorder>
-Verdict walk(Prepared<Box>& q, Recorder& stats, bool& exact_used) {
+Verdict walk(Prepared<Box>& q, Recorder& stats, RowId& by) {
     if constexpr (Recorder::enabled) ++stats.queries;
     Verdict verdict;
-    std::apply([&](const auto&... row) { (try_row(row, q, stats, verdict, exact_used) || ...); }, schedule<Box>());
+    std::apply([&](const auto&... row) { (try_row(row, q, stats, verdict, by) || ...); }, schedule<Box>());
     return verdict;
 }
 
