@@ -1,6 +1,6 @@
 // The default query's exact stage alone (exact/answer.hpp), on the queries that reach
 // exact arithmetic, beside the exact stage it replaced (§4, or §3 for turned frames, generically on
-// GMP rationals in Q(√d): exact/paths.hpp) on the same queries (docs/robustness.md §11). Sets:
+// GMP rationals in Q(√d): exact/paths.hpp) on the same queries (docs/robustness/exact-stage.md). Sets:
 //   touching:       support/touching.hpp's exactly touching queries (seed 0x21e7, 4096 of them), those
 //                   that reach exact arithmetic — split into integer (aligned, canonical,
 //                   signed-permutation frames: §4 in integers) and turned (frames orthonormal only up

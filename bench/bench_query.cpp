@@ -74,22 +74,6 @@ constexpr MethodInfo kMethods[] = {
     {Method::oracle, "oracle", "exact oracle", true},
 };
 
-// Whether a frame of doubles is exactly orthonormal: only signed permutations are.
-bool signed_permutation(const std::array<Vec3<double>, 3>& axes) {
-    unsigned used = 0;
-    for (const Vec3<double>& a : axes) {
-        int nonzero = 0;
-        for (int j = 0; j < 3; ++j) {
-            if (a[j] == 0) continue;
-            if ((a[j] != 1 && a[j] != -1) || (used >> j & 1u)) return false;
-            used |= 1u << j;
-            ++nonzero;
-        }
-        if (nonzero != 1) return false;
-    }
-    return true;
-}
-
 // One query of method M; M is a template parameter so that each timed loop is specialised.
 template <Method M, class Box>
 bool query(const Box& box, const Cylinder<double>& cyl) {
@@ -104,12 +88,12 @@ bool query(const Box& box, const Cylinder<double>& cyl) {
     } else if constexpr (M == Method::float_s4) {
         return intersects(box, cyl, {Algorithm::inequalities, Arithmetic::float32});
     } else if constexpr (M == Method::exact_path) {
-        // What one fallback costs, chosen as filtered.hpp's stage 2 chooses: exact linear inequalities
+        // What one exact answer costs in rationals and Q(√d): exact linear inequalities
         // where the canonical frame is exact (aligned and canonical boxes, signed-permutation frames),
         // the exact convex-hull method on any other oriented box.
         Algorithm a = Algorithm::inequalities;
         if constexpr (std::is_same_v<Box, OrientedBox<double>>)
-            if (!signed_permutation(box.axes)) a = Algorithm::hull;
+            if (!signed_permutation(box.axes)) a = Algorithm::hull;  // geometry/box.hpp
         return intersects(box, cyl, {a, Arithmetic::exact});
     } else {
         return oracle::intersects(box, cyl);

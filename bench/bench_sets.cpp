@@ -191,6 +191,11 @@ double ns(const std::string& name) {
     return it == g_ns.end() ? -1 : it->second;
 }
 
+// The benchmark of a set's queries that row k decides.
+std::string row_key(const std::string& set, std::size_t k) {
+    return set + "/row/" + std::string(filtered::name(static_cast<filtered::RowId>(k)));
+}
+
 void summary(std::FILE* out, const std::vector<Set>& sets) {
     std::fprintf(out, "\n**The sets** (time per query, median of the repetitions; ratios from this run)\n\n");
     std::fprintf(out, "| set | queries | default | double §4 | default / double §4 | wrong (default vs oracle) |\n");
@@ -207,13 +212,13 @@ void summary(std::FILE* out, const std::vector<Set>& sets) {
     for (const Set& s : sets) {
         double total = 0;
         for (std::size_t k = 0; k < filtered::row_count; ++k) {
-            const double t = ns(s.name + "/row_" + std::to_string(k));
+            const double t = ns(row_key(s.name, k));
             if (t > 0) total += t * double(s.by_row[k].size());
         }
         for (std::size_t k = 0; k < filtered::row_count; ++k) {
             const std::size_t n = s.by_row[k].size();
             if (n == 0) continue;
-            const double t = ns(s.name + "/row_" + std::to_string(k));
+            const double t = ns(row_key(s.name, k));
             std::fprintf(out, "| %s | `%s` | %zu | %s | %s | %s |\n", s.name.c_str(),
                          std::string(filtered::name(static_cast<filtered::RowId>(k))).c_str(), n,
                          fmt("%.2f%%", 100.0 * double(n) / double(s.cases.size())).c_str(), ns_text(t).c_str(),
@@ -306,7 +311,7 @@ int main(int argc, char** argv) {
     for (const Set& s : sets) {
         for (int m = 0; m < 2; ++m) add(s.name + "/" + kMethodKey[m], Method(m), &s.cases);
         for (std::size_t k = 0; k < filtered::row_count; ++k)
-            add(s.name + "/row_" + std::to_string(k), Method::default_query, &s.by_row[k]);
+            add(row_key(s.name, k), Method::default_query, &s.by_row[k]);
     }
     benchmark::RegisterBenchmark("voxels/batch", voxel_batch);
     benchmark::RegisterBenchmark("voxels/grid", voxel_grid);

@@ -1,10 +1,9 @@
 #!/usr/bin/env bash
 # Regenerates docs/performance.md:
 #  * bench/bench_sets.cpp: the default exact query against plain double §4 on the random, one-ulp
-#    boundary, exactly touching and adversarial near-touching sets in one run, with and without the
-#    middle stage, the time by deciding stage, the stages alone, and a voxel grid touching a cylinder
-#    through the scalar, batch and grid interfaces; bench_sets_before (the library built with
-#    BOXCYL_MIDDLE_STAGE=0) for the batch and grid figures without the middle stage;
+#    boundary, exactly touching, adversarial near-touching and other sets in one run, the time by
+#    deciding pipeline row, the library's per-row statistics (filtered::Stats), and a voxel grid
+#    touching a cylinder through the scalar, batch and grid interfaces;
 #  * bench/bench_query.cpp: each algorithm in each arithmetic, and FCL, Bullet and ODE (bench/peers.cpp)
 #    on the random and boundary sets.
 # 15–25 minutes with the build on a shared 2-core machine. The sections after the marker line at the
@@ -23,7 +22,7 @@ opt="-O2 -g -DNDEBUG"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="$opt" \
   -DBOXCYL_BUILD_BENCHMARKS=ON -DBOXCYL_BENCH_PEERS=ON -DBOXCYL_BUILD_TESTS=OFF -DBOXCYL_BUILD_TOOLS=OFF -DBOXCYL_BUILD_PYTHON=OFF \
   -DBOXCYL_INSTALL=OFF >/dev/null
-cmake --build "$build" -j "${JOBS:-$(nproc)}" --target bench_query bench_sets bench_sets_before >/dev/null
+cmake --build "$build" -j "${JOBS:-$(nproc)}" --target bench_query bench_sets >/dev/null
 
 # The flags the benchmark was actually compiled with (CMake's flags.make), and the compiler.
 flags=$(sed -n 's/^CXX_FLAGS = //p' "$build/bench/CMakeFiles/bench_query.dir/flags.make")
@@ -35,17 +34,13 @@ version() { dpkg-query -W -f='${Version}' "$1" 2>/dev/null || echo "(version unk
 
 table=$(mktemp)
 sets=$(mktemp)
-before=$(mktemp)
 kept=$(mktemp)
 log="$build/bench_output.txt"  # the full console output of the last run
-trap 'rm -f "$table" "$sets" "$before" "$kept"' EXIT
+trap 'rm -f "$table" "$sets" "$kept"' EXIT
 # The hand-written analysis below this marker line survives regeneration.
 marker='<!-- analysis: kept by scripts/bench.sh -->'
 if [ -f "$out" ]; then awk -v m="$marker" 'found || $0 == m { found = 1; print }' "$out" > "$kept"; fi
 "$build/bench/bench_sets" --markdown="$sets" --benchmark_color=false | tee "$log"
-# Without the middle stage: only the voxel workload is timed (the batch and grid rows).
-"$build/bench/bench_sets_before" --markdown="$before" --benchmark_color=false \
-  --benchmark_filter='^voxels/(default|batch|grid)$' | tee -a "$log"
 "$build/bench/bench_query" --markdown="$table" --benchmark_color=false "$@" | tee -a "$log"
 
 {
@@ -93,76 +88,16 @@ The sets:
   in [−1, 1], no zero sizes or tiny components), and 512 one-ulp boundary pairs of it: a second mix, so
   that no ratio rests on one generator's choices.
 
-Columns: *default* is \`boxcyl::intersects(box, cyl)\`; *without middle* is the same pipeline with the
-middle stage left out (stage 1's undecided queries go on to stage 1's Interval run, the thorough witness
-search and the exact stage, as the library did before the middle stage existed) — called from the
-benchmark, so both columns are one binary, one run; *double §4* is
+Columns: *default* is \`boxcyl::intersects(box, cyl)\`; *double §4* is
 \`intersects(box, cyl, {Algorithm::inequalities, Arithmetic::float64})\`, plain rounded double, wrong
-near touching. *wrong* counts the default query's answers that differ from the oracle's.
+near touching. *wrong* counts the default query's answers that differ from the oracle's. The rows of the
+pipeline, by the names below, are described in [pipeline.md](pipeline.md); *by deciding row* times the
+default query (without statistics) on the queries each row decides, and the per-row statistics come
+from the library itself (\`filtered::Stats\`, the table any user can print on their own data).
 
 HEAD
 cat "$sets"
-cat <<MID
-
-Without the middle stage in the library itself (\`bench_sets_before\`, built with
-\`BOXCYL_MIDDLE_STAGE=0\`; a second process, so compare these rows with the table above only roughly):
-
-MID
-awk '/^\*\*Voxels touching/ { found = 1 } found' "$before"
 cat <<'WHERE'
-
-## Where the time goes in today's design
-
-The default query (`include/boxcyl/filtered.hpp`; derivations in docs/robustness.md) runs these
-stages in order and stops at the first that decides (round to nearest, the mode every figure here
-was measured in):
-
-1. **Stage 0**, the semi-static filter: a dozen separating-axis and witness tests in plain double with
-   error bounds fixed at compile time. It decides about 92% of random queries at a few tens of ns.
-2. **The exact stage for narrow inputs**: integer or binary-fraction coordinates (voxel and block-model
-   grids, CAD) go straight to exact integer arithmetic, which costs less there than any further filter.
-3. **Stage 0b**, the witness search: a few projection steps find a separating direction or a witness
-   point that stage 0's tests certify; most of what stage 0 leaves on random data. Skipped near
-   touching (a separating-axis test of stage 0 near its bound, and the rounded answer moving under a
-   2^-30 growth or shrinking of the cylinder), where it can only fail.
-4. **Stage 1's Bounded run** (§4 on a double with a running error bound, with the hit certificates),
-   only for queries that do not look near touching (`looks_near_touching` in filtered.hpp: a
-   plain-double hint from stage 0's separating-axis tests, the axis segment's distance from the box,
-   and whether a rounded answer changes when the cylinder grows or shrinks by 2^-30 of the scale), and
-   not for turned frames, whose middle stage runs on Bounded first anyway. Far from touching it
-   decides nearly everything stage 0 leaves, at a third of the middle stage's cost (the table *the
-   same on the queries stage 1's Bounded run decides*); near touching it would only fail.
-5. **The exact stage for narrow inputs of two scales**: a subnormal axis component beside 1, a box of
-   2^-1000 at a cylinder of 2^1000, when each group of values is narrow. Exact integers in powers of a
-   tiny ε (docs/robustness.md §11) answer these in about a µs; the middle stage would fail on most of
-   them first, since their answers hang on values no double-double enclosure resolves.
-6. **The middle stage**, on double-double enclosures with a running error bound (about 2^-100 relative
-   per operation): §4 with its hit certificates for aligned, canonical and signed-permutation boxes;
-   for rotated frames the clipped-candidates test (the axis segment through the box, or a box edge
-   clipped to the cylinder's slab, or a face cut by a slab plane, within r of the axis: each test
-   three-valued, on Bounded first and double-double only where Bounded could not tell), which stays
-   decisive when the cylinder axis is parallel to a box edge or face. It decides every query that is
-   not exactly touching unless its decision hangs on a subnormal quantity.
-7. **The exact stage**, in integers and Z[√d] after one power-of-two scaling (docs/robustness.md §11):
-   §4 for aligned, canonical and signed-permutation boxes, the parallelepiped's clipped edges and face
-   cuts for rotated frames; fixed-width stack integers (16 limbs, GMP's mpn) while the values fit,
-   integers in powers of a tiny ε (32-limb coefficients) for inputs of two far-apart scales, mpz
-   otherwise.
-
-Degenerate shapes (flat boxes, disks, segments) that the middle stage leaves get the thorough witness
-search (up to 3 × 256 projection steps) before the exact stage. In the other rounding modes the middle
-stage declines (its error-free transformations assume round to nearest) and stage 1 runs in full: §4 on
-Bounded, then on Interval, then the thorough witness search, then the exact stage. In round to nearest
-Interval and the thorough search are skipped: the middle stage decides all they would, at less cost
-(the table *the stages alone*), and on what it leaves (exactly touching, or hanging on a subnormal)
-they only add their cost before the exact stage.
-
-On random data nearly nothing reaches the middle stage, and the default query stays below plain
-double §4 (stage 0 tests less than §4 computes). Near touching, the middle stage decides nearly
-everything that is not exactly touching in a few µs; what remains of the time is the exact stage on
-exactly touching inputs, cheap on ordinary ranges and tens of µs where one query spans hundreds of
-binary orders (an axis component of 1e-300 beside 1, 2^±1000 in one query: mpz numbers of thousands
-of bits).
 
 ## All algorithms and the peer libraries (`bench/bench_query.cpp`, `bench/peers.cpp`)
 
@@ -209,9 +144,9 @@ cat "$table"
 cat <<TAIL
 
 **Profiling** (where a query's time goes): the benchmarks are built with \`-g\`, e.g. the default query
-on the boundary queries that the middle stage decides:
+on the boundary queries that the double-double linear inequalities decide (row \`inequalities_dd\`):
 
-    perf record $build/bench/bench_sets --quick --benchmark_filter='boundary/stage_3/default' --benchmark_min_time=25
+    perf record $build/bench/bench_sets --quick --benchmark_filter='boundary/row/inequalities_dd' --benchmark_min_time=25
     perf report --no-children --sort symbol
 
 (the first minute is the sets' generation, with the oracle; a long \`min_time\` makes the timed loop

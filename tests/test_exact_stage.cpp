@@ -773,10 +773,10 @@ TEST(ExactStage, ParallelepipedAgreesWithOracle) {
         const Case c = touching.next();
         if (c.kind != BoxKind::oriented) continue;
         FixedOverflow::flag() = false;
-        const std::optional<bool> small = exact::integer::detail::run_turned<exact::integer::Small>(c.oriented, c.cylinder);
+        const std::optional<bool> small = exact::integer::detail::run_turned<exact::integer::Small>(as_parallelepiped(c.oriented), c.cylinder);
         if (FixedOverflow::flag()) continue;
         ++compared;
-        EXPECT_EQ(small, exact::integer::detail::run_turned<mpz_class>(c.oriented, c.cylinder)) << describe(c);
+        EXPECT_EQ(small, exact::integer::detail::run_turned<mpz_class>(as_parallelepiped(c.oriented), c.cylinder)) << describe(c);
     }
     EXPECT_GT(compared, 500);
 }

@@ -312,7 +312,7 @@ filtered::Result run(const Case& c) {
     return with_box(c, [](const auto& box, const Cylinder<double>& cyl) { return filtered::query(box, cyl); });
 }
 
-// What makes a case degenerate for stage 1 (docs/robustness.md, "fallbacks"): a disk (h = 0), a flat
+// What makes a case degenerate for stage 1 (docs/robustness/degenerate.md): a disk (h = 0), a flat
 // box (an extent 0), a segment (r = 0), an axis component that is non-zero but below 2^-60 of the
 // largest (its share of the unit axis is far below an ulp of the others). Otherwise "regular".
 enum Shape { regular, disk, flat, segment, tiny_axis, shape_count };
@@ -379,7 +379,7 @@ const std::vector<Case> regressions = {
 };
 
 // Flat boxes hit away from the cross-sections stage 1's certificates try: they fell back to exact
-// arithmetic until the witness search (docs/robustness.md §9) certified them; the last five needed
+// arithmetic until the witness search (docs/robustness/stage0.md) certified them; the last five needed
 // its finest shrink (0.999) and up to 256 steps. The last one (a thick disk, r ≈ 728 ≫ H ≈ 27, whose
 // rim crosses the flat box: the deepest box point is 3.6 inside) needs the cylinder shrunk by the same
 // depth along and across the axis: shrunk by a factor, r lost more room than the whole overlap has.
@@ -471,8 +471,8 @@ TEST_P(FilteredRandom, AgreesWithOracle) {
     EXPECT_GT(f.t.hits, n / 5);
     EXPECT_LT(f.t.hits, n * 4 / 5);
     if (!forced) {
-        // Measured 0–1 in 100,000 (without the witness search 0.03%, all flat boxes; docs/robustness.md
-        // §5, §9); the bound leaves room for other seeds. The hit certificates keep disks and segments off
+        // Measured 0–1 in 100,000 (without the witness search 0.03%, all flat boxes;
+        // docs/robustness/degenerate.md); the bound leaves room for other seeds. The hit certificates keep disks and segments off
         // too.
         EXPECT_LT(f.fallback(), 2e-4);
         EXPECT_LT(f.fallback(regular), 0.0005);

@@ -337,7 +337,7 @@ TEST(SemiStatic, UnitAxisDropsOnlyTinyComponents) {
 }
 
 TEST(SemiStatic, KappasAreSmall) {
-    // Printed for docs/robustness.md §9; the filter is useless if they blow up (they are all < 2^11).
+    // Printed for docs/robustness/stage0.md; the filter is useless if they blow up (they are all < 2^11).
     for (const ss::Kappas& k : {ss::canonical_kappas, ss::aligned_kappas, ss::oriented_kappas}) {
         std::printf("kappa (eps, g): face %.1f %.1f, face² %.1f %.1f, axis %.1f %.1f, edge %.1f %.1f, edge² %.1f %.1f, "
                     "inside %.1f %.1f, Q height %.1f %.1f, Q radial %.1f %.1f, X box %.1f %.1f, X radial %.1f %.1f, "

@@ -26,7 +26,7 @@
 // left to the scalar query.
 //
 // How: batch/filter.hpp decides each lane that it can prove (certain miss by a separating direction,
-// certain hit by a box point inside the cylinder, with proven error bounds: docs/robustness.md §8);
+// certain hit by a box point inside the cylinder, with proven error bounds: docs/robustness/batch.md);
 // every undecided lane is answered by the scalar exact default (filtered::query). Aligned boxes take
 // two passes: a cheap one over every box (bounding boxes, then the box's centre and a ball around it:
 // §8a), then the whole filter on the few lanes it left, gathered into full vectors (batch/kernel.hpp).

@@ -2,9 +2,9 @@
 // boxes. Closed solids: touching counts as intersecting. Inputs must satisfy validate() (finite, non-zero
 // axis, non-negative sizes, min ≤ max, orthonormal oriented-box axes); that is asserted in debug builds.
 //
-// boxcyl::intersects(box, cylinder) — no options — is EXACT for the inputs as given: a certified
-// interval filter over the linear-inequalities method decides most queries, an exact fallback the rest
-// (filtered.hpp, docs/robustness.md; its cost relative to plain double is measured in docs/performance.md).
+// boxcyl::intersects(box, cylinder) — no options — is EXACT for the inputs as given: certificates in
+// floating point decide most queries, the exact stage the rest (filtered.hpp, docs/pipeline.md; its cost
+// relative to plain double is measured in docs/performance.md).
 // It needs the exact backend (link boxcyl::exact); without it, that call fails to compile, and the plain
 // double path stays available by explicit choice: intersects(box, cyl, {Algorithm::inequalities,
 // Arithmetic::float64}).

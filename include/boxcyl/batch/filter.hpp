@@ -2,7 +2,7 @@
 // it either proves the exact answer (a certain miss or a certain hit, for the inputs as given: every
 // double is the rational it denotes, u = axis/|axis| exactly, closed solids) or leaves the lane
 // undecided; batch.hpp sends undecided lanes to the scalar exact default (filtered.hpp). It never
-// decides wrongly; docs/robustness.md §8 derives every bound below, in short:
+// decides wrongly; docs/robustness/batch.md derives every bound below, in short:
 //
 //  * Cylinder side, once per batch, in a certified enclosure type (number/bounded.hpp, sound in every
 //    rounding mode): a double vector û with δ_u ≥ max_j |u_j − û_j|, the cylinder's bounding box,
@@ -366,7 +366,7 @@ BOXCYL_FORCE_INLINE inline LaneMask search_hits(const CylinderFilter& f, const L
 // First pass (every box, no branches): the box's centre and a ball around it. With d̂lo, d̂hi = fl(lo − C),
 // fl(hi − C), in doubled coordinates (no halvings, which could round): ŝ = fl(d̂lo + d̂hi) (twice the centre,
 // relative to C; ŝ_j/2 lies in [d̂lo_j, d̂hi_j] since rounding is monotone), t̂ = fl(d̂hi − d̂lo) (twice the
-// half-extents). docs/robustness.md §8a derives, with u = 2^-52, ε_A = 3.01u + 1.74δ_u:
+// half-extents). docs/robustness/batch.md derives, with u = 2^-52, ε_A = 3.01u + 1.74δ_u:
 //   * the box lies in the ball around C + ŝ/2 of radius ρ, 2ρ ≤ |t̂|(1 + 2^-49) + 2^-49|ŝ|;
 //   * a point W/2 of the box (exactly) has |W − ŝ| ≤ 2u|ŝ|;
 //   * Q̂ = fl(Σŝ_j²), Â = fl(Σû_jŝ_j) (|Â − u·ŝ| ≤ ε_A|ŝ|), Ŝ1 = fl(Σ|ŝ_j|) ≥ |ŝ|(1 − 2.01u),

@@ -1,20 +1,10 @@
-// The default query's exact stage for a canonical problem (aligned boxes, canonical boxes, oriented
-// boxes whose axes are a signed permutation): §4 (linear inequalities) evaluated in integers, with no
-// rational number anywhere (docs/robustness.md, "The exact stage in integers").
-//
-// Why integers suffice. Every finite double is m·2^e with an integer m, so after multiplying every
-// length by one power of two (2^−emin, and 2 more so that (min + max)/2 and h/2 stay integral) the box
-// extents E, the centre offset C, the radius R and the half-height H are integers; the axis direction
-// D is scaled on its own (only its direction matters). Both scalings are exact and change no answer.
-// The unit axis is u = D/√d with d = D·D, so every quantity of §4 is (element of Z[√d]) / (positive
-// integer): a projection t = u·y is T/√d with T = D·y; a point where a box edge along x_k crosses a
-// slab plane t = ±H has x_k = (integer ± H√d)/D_k. Each sign test of §4 is multiplied through by those
-// positive denominators (√d, D_k, d) and becomes the sign of a + b√d with integers a, b, decided by
-// comparing a² with b²d. No division, no gcd, no rounding: the answer is the exact §4 answer, which the
-// oracle judges. The decisions are §4's (exact/paths.hpp), except within §4.3's candidate segments:
-// each is asked first whether its line comes within r of the axis (for a box edge a test in integers),
-// which rejects most of them at a fraction of the segment's cost, and the segment's distance is then
-// the line's or an end's (box_edge, face_cut).
+// The exact stage for a canonical problem (aligned and canonical boxes, oriented boxes whose axes are a
+// signed permutation): the linear-inequalities method evaluated in integers and Z[√d], with no rational
+// anywhere (docs/algorithms.md, "The exact stage in integers"; docs/robustness/exact-stage.md). One
+// power of two makes every length an integer, the axis D is scaled on its own, and every comparison,
+// multiplied through by its positive denominators (√d, D_k, d), is the sign of a + b√d. The decisions are
+// the method's (exact/paths.hpp), except that each candidate segment is asked first whether its line
+// comes within r of the axis, which rejects most of them cheaply (box_edge, face_cut).
 //
 // Z is the integer type: mpz_class always works; number/fixed_integer.hpp's FixedInt (stack limbs, no
 // allocation) while the values fit, the caller repeating the run in mpz_class after an overflow.

@@ -1,16 +1,9 @@
-// The exact stage for any parallelepiped — an oriented box whose frame is orthonormal only up to
-// rounding (a rotation rounded to double) is one — in integers and Z[√d] as
-// exact/integer_inequalities.hpp: the box is B = {K + Σ λ_m·a_m : |λ_m| ≤ 1} with the half-edge
-// vectors a_m = e_m·A_m exactly as given (docs/algorithms.md, "Clipped edges and face cuts"). With P = B ∩ slab and π the projection along the axis:
-//   the cylinder meets B  ⇔  the axis segment meets B, or some edge of P is within r of the axis line
-// (π(P) is a convex polygon: the axis' image O lies in it iff the axis segment meets P, and otherwise
-// its distance to π(P) is attained on the boundary, whose edges are images of edges of P). Every edge
-// of P lies on a box edge clipped to the slab, or on a face cut by a slab plane (the facets of P are
-// box faces and slab planes), so those 24 segments — each a subset of P — are the candidates. The
-// axis test solves for λ by Cramer's rule, the candidates' end points are box vertices or points
-// where a box edge crosses a slab plane, t = ±H: all with denominators that are positive integers,
-// so every test is again the sign of a + b√d with integers a, b. A flat box (one zero extent) meets the
-// axis where the axis crosses its plane; a segment or a point is its own candidate.
+// The exact stage for any parallelepiped (an oriented box whose frame is only nearly orthonormal is
+// one): the clipped edges and face cuts (docs/algorithms.md, "Clipped edges and face cuts") in integers
+// and Z[√d], as exact/integer_inequalities.hpp. B = {K + Σ λ_m·a_m : |λ_m| ≤ 1} with the half-edge
+// vectors a_m = e_m·A_m exactly as given; the axis test solves for λ by Cramer's rule, and the
+// candidates' end points (box vertices, points where a box edge crosses a slab plane t = ±H) have
+// positive integer denominators, so every test is the sign of a + b√d with integers a, b.
 #pragma once
 
 #include <array>     // vertices, candidate points

@@ -1,20 +1,11 @@
-// The parallelepiped test of the exact stage (exact/integer_parallelepiped.hpp) on enclosures: the
-// middle stage's method for an oriented box whose frame is a rounded rotation.
-//
-// The box is B = {K + Σ λ_m·a_m : |λ_m| ≤ 1}, with the half-edge vectors a_m = e_m·A_m as given, P = B ∩ slab
-// (|t| ≤ H along the unit axis u from the cylinder centre C). The cylinder meets B iff the axis segment
-// meets B, or one of P's candidate edges (box edges clipped to the slab, faces cut by the slab planes)
-// is within r of the axis line (docs/robustness.md §11). Here every value is an enclosure (a double-double
-// with a running error bound) and every test is three-valued: yes, no, or unknown when the enclosures
-// cannot separate its operands. The answer is certain when one candidate is certainly within r (or the
-// axis certainly meets B), or when every test certainly fails.
-//
-// Why not the convex-hull method: its comparisons are exact degeneracies whenever the cylinder axis is
-// parallel to a box edge (the edge projects to a point), the usual case of shapes resting on each other
-// in a rotated frame, and an undecided comparison there voids the whole run. Here each geometric test
-// is written so that a degeneracy that does not matter is not asked: a segment nearly parallel to the
-// axis, whose nearest point is unknown, is still certainly farther than r when its end points are
-// farther than r plus its projected length.
+// The clipped edges and face cuts (docs/algorithms.md, "Clipped edges and face cuts") on enclosures: the
+// rows clipped and clipped_flat. The cylinder meets B = {K + Σ λ_m·a_m : |λ_m| ≤ 1} (half-edge vectors
+// a_m = e_m·A_m as given) iff the axis segment meets B, or a box edge clipped to the slab |t| ≤ H or a
+// face cut by a slab plane is within r of the axis line. Every test is three-valued (yes, no, unknown
+// when the enclosures cannot separate its operands); the answer is certain when one candidate is
+// certainly within r, or every test certainly fails. Unlike the convex-hull method's, its tests stay
+// decisive with the axis parallel to a box edge: a degeneracy that does not matter is not asked
+// (docs/robustness/clipped-candidates.md).
 #pragma once
 
 #include <array>     // vertices and candidate points

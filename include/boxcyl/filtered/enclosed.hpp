@@ -142,16 +142,12 @@ bool apart_along_box_axes(const CanonicalQuery<N>& q) {
     return false;
 }
 
-// Hit certificates for the degenerate shapes (disks, flat boxes, segments), whose branches in the method
-// compare rounding noise but whose hits usually have a witness far from touching. A witness is a segment
-// of points that lie in the box for sure, parallel to the cylinder axis d (all at one distance from the
-// axis line), that reaches the slab |t| ≤ H for sure:
-//   (a) the axis itself (distance 0): {c + t·d} ∩ box reaches [−H, H];
-//   (b) the chord through a box point Q near c, when Q's distance to the axis line is < r for sure.
-// The chord {Q + t·d : t ∈ [t0, t1]} lies in the box where, for every i with d_i ≠ 0,
-// a_i = (−e_i − Q_i)/d_i, b_i = (e_i − Q_i)/d_i (swapped if d_i < 0), t0 = max a_i ≤ 0 ≤ t1 = min b_i.
-// It meets the slab, whose points have s + t ∈ [−H, H] with s = d·(Q − c), iff every a_i ≤ H − s and
-// every b_i ≥ −H − s: all pairwise comparisons, so no min/max needs deciding.
+// Hit certificates for flat shapes (disks, flat boxes, segments), whose branches in the method compare
+// rounding noise but whose hits usually have a witness far from touching (docs/robustness/degenerate.md):
+//   (a) the axis itself: {c + t·d} ∩ box reaches [−H, H];
+//   (b) a chord {Q + t·d} through a box point Q near c whose distance to the axis line is < r, reaching
+//       the slab: for every i with d_i ≠ 0, a_i = (−e_i − Q_i)/d_i ≤ H − s and b_i = (e_i − Q_i)/d_i ≥
+//       −H − s (swapped if d_i < 0), s = d·(Q − c): pairwise comparisons only, no min/max to decide.
 template <class N>
 bool chord_reaches_slab(const CanonicalQuery<N>& q, const Vec3<N>& point, const Vec3<N>& diff, bool on_axis) {
     const Vec3<N>& d = q.cylinder.direction;
@@ -179,15 +175,10 @@ bool chord_reaches_slab(const CanonicalQuery<N>& q, const Vec3<N>& point, const 
     }
     return true;
 }
-// (c) The cross-section through the axis point p, the disk {p + w : w ⊥ d, |w| ≤ r}, meets the box: the
-// point of the polygon (plane ∩ box) nearest to p is p itself (done by (a)), the foot on a side, or a
-// vertex. So the candidates are
-//   face x_i = f:  X = p + λ(E_i − d_i·d), λ = (f − p_i)/w_i, w_i = d_j² + d_k²; |X − p|² = λ²·w_i, so
-//                  within r iff (f − p_i)² < r²·w_i; X_j = p_j − (f − p_i)·d_i·d_j/w_i inside (−e_j, e_j);
-//   edge ∥ x_k at (x_i, x_j) = (σ_i e_i, σ_j e_j):  x_k = p_k − (d_i(x_i − p_i) + d_j(x_j − p_j))/d_k
-//                  inside [−e_k, e_k], and |X − p|² < r².
-// Each candidate is a point of the plane (exact in real arithmetic), so any one certainly in the box and
-// the disk is a witness.
+// (c) The cross-section through the axis point p meets the box: the point of (plane ∩ box) nearest to p
+// is p itself (done by (a)), the foot on a side (face x_i = f: X = p + λ(E_i − d_i·d), λ = (f − p_i)/w_i,
+// w_i = d_j² + d_k², within r iff (f − p_i)² < r²·w_i), or a vertex (an edge ∥ x_k crossing the plane).
+// Each candidate is exactly a point of the plane, so one certainly in the box and the disk is a witness.
 template <class N>
 bool disk_meets_box(const CanonicalQuery<N>& q, const Vec3<N>& p) {
     const Vec3<N>& d = q.cylinder.direction;
@@ -326,17 +317,13 @@ std::optional<bool> decide(const Widened<N>& w, double scale) {
 
 // ---- Tiny axis components (docs/robustness/enclosures.md) ----
 //
-// A non-zero component below 2^-30 of the largest makes a unit-axis component near or below the rounding
-// of the others: its sign is exact in the input but lost in the enclosures. The axis a' with those
-// components set to 0 is within angle θ ≤ 2^-28 of a, and cyl(u; r, H) ⊆ cyl(u'; r + η, H + η) with
-// η = θ(H + r), and cyl(u'; r − η, H − η) ⊆ cyl(u; r, H). So the method on a' with the cylinder widened
-// by η certifies misses, narrowed by η certifies hits.
-//
-// The double-double form zeroes components below 2^-200 (θ ≤ 2^-198) and, instead of two widened
-// problems with point sizes (rounding a size to a double would cost its 2^-100 precision), takes every
-// size as [s − η, s + η]: a decided answer holds for the widened problem (a miss certifies a miss) and
-// the narrowed one (a hit certifies a hit — only if every size is ≥ η). False when η overflows; `thin`
-// says whether some size was below η.
+// A non-zero component below 2^-30 of the largest is exact in the input but lost in the enclosures of the
+// unit axis. With those components zeroed the axis turns by θ ≤ 2^-28, and the cylinder widened by
+// η = θ(H + r) contains the exact one, narrowed by η is contained in it: the widened problem certifies
+// misses, the narrowed one hits. The double-double form zeroes components below 2^-200 and takes every
+// size as [s − η, s + η] instead (a decided answer holds for both problems; a hit only if every size is
+// ≥ η). docs/robustness/enclosures.md has the derivation. False when η overflows; `thin` says whether
+// some size was below η.
 template <class N>
 bool spread_sizes_by_eta(N& radius, N& half_height, bool& thin) {
     const double reach = (N(half_height.hi()) + N(radius.hi())).hi();
@@ -382,15 +369,11 @@ std::optional<bool> decide_axis(CanonicalQuery<N> q, const Vec3<double>& a, Fram
 
 // ---- Rotated frames: the real frame A is only nearly orthonormal ----
 
-// The η-widening of a nearly orthonormal frame (docs/robustness/frames.md): with A = QS (polar
-// decomposition), g ≥ ‖AᵀA − I‖₂ (max row sum of |G|), the canonical problem C' = Aᵀ(C − K),
-// d' = Aᵀu/|Aᵀu|, widened by η = g·(|e|₁ + |C − K|₁ + 2H + 2r), split as a on the cylinder (a ≤ min(r, H))
-// and η − a on the box: the inflated problem misses ⇒ the exact one misses, the deflated one meets ⇒
-// the exact one meets. `frame` is A (enclosed), `axis` any positive multiple of u. nullopt when g > 2^-10
-// (not a rotated frame) or η overflows.
-//
-// The widening is a policy so that the tests can show it is needed (they drop it); `Widening::eta`
-// returns the η to apply for the proved bound.
+// The η-widening of a nearly orthonormal frame A (docs/robustness/frames.md): with g ≥ ‖AᵀA − I‖₂, the
+// canonical problem C' = Aᵀ(C − K), d' = Aᵀu/|Aᵀu| widened by η = g·(|e|₁ + |C − K|₁ + 2H + 2r) —
+// a ≤ min(r, H) of it on the cylinder, the rest on the box — misses only if the exact one does, and
+// narrowed by η meets only if the exact one does. `frame` is A (enclosed), `axis` any positive multiple
+// of u; nullopt when g > 2^-10 or η overflows. The widening is a policy so that tests can drop it.
 struct ProvedWidening {
     static double eta(double bound) { return bound; }
 };
@@ -428,15 +411,11 @@ std::optional<Widened<N>> frame_problem(const Vec3<N> (&frame)[3], const Vec3<N>
     return widen(q, on_cyl, on_box);
 }
 
-// Hit certificates for the parallelepiped {K + Σ x_m·A_m : |x_m| ≤ e_m} with the axes A_m exactly as
-// given (no η: where η leaves no inner problem — flat boxes, disks — these certify hits without exact
-// arithmetic). delta = C − K, u the unit axis. Each candidate solves a linear system that its exact
-// point solves by construction (Cramer's rule, or the plane equation u·(X − C) = 0 solved for one
-// coordinate), so only inequalities are checked:
-//   (a) C in the box; the axis segment crossing a face x_k = ±e_k: y·A_i + z·A_j − t·u = delta ∓ e_k·A_k
-//       with |y| ≤ e_i, |z| ≤ e_j, |t| ≤ H (works for r = 0 too);
-//   (c) a cross-section meeting a box edge, or a face (the nearest point to its centre of the line where
-//       the disk's plane cuts the face's plane).
+// Hit certificates for the parallelepiped {K + Σ x_m·A_m : |x_m| ≤ e_m} with the axes exactly as given
+// (no η: where η leaves no inner problem — flat boxes, disks — these certify hits without exact
+// arithmetic; docs/robustness/degenerate.md). Each candidate point solves a linear system by
+// construction, so only inequalities are checked: (a) C in the box, or the axis segment crossing a face;
+// (c) a cross-section meeting a box edge or a face.
 template <class N>
 N det3(const Vec3<N>& a, const Vec3<N>& b, const Vec3<N>& c) {
     return dot(a, cross(b, c));

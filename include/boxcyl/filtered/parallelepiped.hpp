@@ -2,29 +2,13 @@
 // length and angle, exactly as given), and its prepared query. The rows that use them are in
 // filtered/schedule.hpp; the exact stage answers what none certifies (exact/answer.hpp).
 //
-// Each certificate is decided on enclosures inside an UncertaintyScope (Bounded — a double and a
-// running error bound — then outward-rounded Interval), and counts only when every comparison in it was
-// decided:
-//   misses: a direction n (any double vector: every real direction is a valid separating-axis
-//           candidate, so n itself needs no error bound) with
-//             |n·(C − K)| − Σ eᵢ|n·Wᵢ| − H|n·u| > r·|n × u|   (support functions, |u| = 1),
-//           i.e. s > 0 and s² > r²|n × u|². Candidates: the face normals Wⱼ × Wₖ, the cylinder axis,
-//           Wᵢ × axis, and the direction between the nearest points found by a double iteration;
-//   hits:   a box point P = K + Σ xᵢWᵢ for doubles |xᵢ| ≤ eᵢ (so exactly a point of the solid) with
-//           |u·(P − C)| ≤ H and |(P − C) × u|² ≤ r²; or a cylinder point X = C + t·u + ρ·w/|w|
-//           (double t with |t| ≤ H, double ρ ≤ r, w = m − (m·u)u ⊥ u for a double m: the real point
-//           for the exact u is a cylinder point, and its enclosure contains it) whose box coordinates
-//           A⁻¹(X − K) (Cramer's rule; only for certainly non-singular A) are within ±eᵢ.
-//           Candidates: the box centre, the cylinder centre and the axis point nearest to the box
-//           centre, then the iterates;
-//   frame:  for nearly orthogonal axes of any lengths (integer-vertex boxes like (3,4,0), (−4,3,0),
-//           (0,0,5); scaled rotations), linear inequalities in the unit frame Wᵢ/|Wᵢ|, widened by the
-//           frame's distance from orthonormal.
-// The search, in plain double and unchecked (only the certificates are): alternating projections
-// between the cylinder and the parallelepiped (the latter by coordinate descent on the box
-// coordinates, exact in one sweep for orthogonal axes), both shrunk about their centres (0.9, 0.99,
-// 0.9999: a witness needs room), certificates tested after steps 1, 2, 4, 8, ... of each phase.
-// No magnitude is out of range: overflow and underflow make enclosures undecided, never wrong.
+// Misses: a separating direction n (any double vector) whose support-function gap
+// |n·(C − K)| − Σ eᵢ|n·Wᵢ| − H|n·u| exceeds r·|n × u|. Hits: a box point (box coordinates |xᵢ| ≤ eᵢ in
+// doubles: exactly a point of the solid) inside the cylinder, or a cylinder point (C + t·u + ρ·w/|w|)
+// whose box coordinates are within ±eᵢ. Frame: linear inequalities in the unit frame Wᵢ/|Wᵢ|, widened
+// by its distance from orthonormal. Candidates come from a plain-double search (alternating projections
+// between the shrunk solids); only the certificates, on enclosures, decide. docs/robustness/parallelepipeds.md
+// has the proofs; no magnitude is out of range (overflow and underflow make comparisons undecided).
 #pragma once
 
 #include <algorithm>  // std::min, std::max

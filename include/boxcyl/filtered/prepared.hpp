@@ -29,25 +29,36 @@ namespace boxcyl::filtered {
 
 // ---- Lengths and scales ----
 
-inline void update_max(double& m, double x) { m = std::max(m, std::fabs(x)); }
-inline void update_max(double& m, const Vec3<double>& v) {
-    for (int i = 0; i < 3; ++i) update_max(m, v[i]);
+// f(x) for every length of a box kind or a cylinder (by reference: f may scale it); not the axes,
+// which carry no length.
+template <class F>
+void for_each_length(AlignedBox<double>& b, F&& f) {
+    for (int i = 0; i < 3; ++i) f(b.min[i]), f(b.max[i]);
 }
-inline void update_max(double& m, const AlignedBox<double>& b) { update_max(m, b.min), update_max(m, b.max); }
-inline void update_max(double& m, const CanonicalBox<double>& b) { update_max(m, b.extents); }
-template <class Box>  // OrientedBox, Parallelepiped: the centre and the extents (the axes carry no length)
-void update_max(double& m, const Box& b) {
-    update_max(m, b.center), update_max(m, b.extents);
+template <class F>
+void for_each_length(CanonicalBox<double>& b, F&& f) {
+    for (int i = 0; i < 3; ++i) f(b.extents[i]);
+}
+template <class Box, class F>  // OrientedBox, Parallelepiped
+void for_each_length(Box& b, F&& f) {
+    for (int i = 0; i < 3; ++i) f(b.center[i]), f(b.extents[i]);
+}
+template <class F>
+void for_each_length(Cylinder<double>& c, F&& f) {
+    for (int i = 0; i < 3; ++i) f(c.center[i]);
+    f(c.radius), f(c.height);
 }
 // The largest length of a query: every box length, the cylinder's centre, radius and height.
 template <class Box>
-double largest_length(const Box& b, const Cylinder<double>& c) {
+double largest_length(Box b, Cylinder<double> c) {
     double m = 0;
-    update_max(m, b);
-    update_max(m, c.center);
-    update_max(m, c.radius);
-    update_max(m, c.height);
+    auto update = [&m](double& x) { m = std::max(m, std::fabs(x)); };
+    for_each_length(b, update);
+    for_each_length(c, update);
     return m;
+}
+inline void update_max(double& m, const Vec3<double>& v) {
+    for (int i = 0; i < 3; ++i) m = std::max(m, std::fabs(v[i]));
 }
 
 // x·2^k rounded as any product is (so exact unless it leaves the normal range), for |k| ≤ 2044: by
@@ -59,30 +70,6 @@ inline double times_two_to(double x, int k) {
     const int half = k / 2;
     return x * power(half) * power(k - half);
 }
-inline Vec3<double> times_two_to(const Vec3<double>& v, int k) {
-    return {times_two_to(v[0], k), times_two_to(v[1], k), times_two_to(v[2], k)};
-}
-// Every length of the query times 2^k, the axis kept (the axes of a frame too).
-inline AlignedBox<double> times_two_to(const AlignedBox<double>& b, int k) {
-    return {times_two_to(b.min, k), times_two_to(b.max, k)};
-}
-inline CanonicalBox<double> times_two_to(const CanonicalBox<double>& b, int k) { return {times_two_to(b.extents, k)}; }
-template <class Box>  // OrientedBox, Parallelepiped
-Box times_two_to(const Box& b, int k) {
-    return {times_two_to(b.center, k), b.axes, times_two_to(b.extents, k)};
-}
-inline Cylinder<double> times_two_to(const Cylinder<double>& c, int k) {
-    return {times_two_to(c.center, k), c.axis, times_two_to(c.radius, k), times_two_to(c.height, k)};
-}
-inline bool same_lengths(const AlignedBox<double>& a, const AlignedBox<double>& b) { return a.min == b.min && a.max == b.max; }
-inline bool same_lengths(const CanonicalBox<double>& a, const CanonicalBox<double>& b) { return a.extents == b.extents; }
-template <class Box>
-bool same_lengths(const Box& a, const Box& b) {
-    return a.center == b.center && a.extents == b.extents;
-}
-inline bool same_lengths(const Cylinder<double>& a, const Cylinder<double>& b) {
-    return a.center == b.center && a.radius == b.radius && a.height == b.height;
-}
 
 // The query with every length times 2^k, k bringing the largest to [1, 2), when that is exact for
 // every length: scaled back, a value comes back exactly only when its scaling rounded nothing (the way
@@ -91,9 +78,17 @@ template <class Box>
 bool rescaled_exactly(Box& box, Cylinder<double>& cyl, double m) {
     if (!(m > 0) || !(m < std::numeric_limits<double>::infinity())) return false;
     const int k = -std::ilogb(m);
-    const Box b = times_two_to(box, k);
-    const Cylinder<double> c = times_two_to(cyl, k);
-    if (!same_lengths(times_two_to(b, -k), box) || !same_lengths(times_two_to(c, -k), cyl)) return false;
+    bool exact = true;
+    auto scale = [k, &exact](double& x) {
+        const double y = times_two_to(x, k);
+        exact &= times_two_to(y, -k) == x;
+        x = y;
+    };
+    Box b = box;
+    Cylinder<double> c = cyl;
+    for_each_length(b, scale);
+    for_each_length(c, scale);
+    if (!exact) return false;
     box = b, cyl = c;
     return true;
 }
@@ -132,14 +127,6 @@ template <class Box>
 bool has_zero_size(const Box& b, const Cylinder<double>& c) {
     return b.extents[0] == 0 || b.extents[1] == 0 || b.extents[2] == 0 || c.radius == 0 || c.height == 0;
 }
-
-// Stage 0's error bounds for each box kind (filtered/semi_static.hpp).
-template <class Box>
-inline constexpr const semi_static::Kappas& kappas = semi_static::canonical_kappas;
-template <>
-inline constexpr const semi_static::Kappas& kappas<AlignedBox<double>> = semi_static::aligned_kappas;
-template <>
-inline constexpr const semi_static::Kappas& kappas<OrientedBox<double>> = semi_static::oriented_kappas;
 
 // ---- Speed hints: they choose the order of rows, never an answer. ----
 
@@ -224,22 +211,24 @@ public:
     // a rounded answer that changes when the cylinder grows or shrinks by 2^-30 of the scale.
     bool near() {
         return memo(near_, [this] {
-            return in_range && semi_static::near_touching(p, kappas<Box>) && answer_moves(box, cyl, facts().scale);
+            return in_range && semi_static::near_touching(p, semi_static::kappas_of<Box>) && answer_moves(box, cyl, facts().scale);
         });
     }
     // Looks near touching by either hint (the axis's distance from the box near r counts too); a query
     // out of stage 0's range is looked at scaled to about 1.
     bool looks_near() {
         return memo(looks_near_, [this] {
-            if (in_range) return witness_search::near_touching(p, kappas<Box>) || answer_moves(box, cyl, facts().scale);
+            if (in_range) return witness_search::near_touching(p, semi_static::kappas_of<Box>) || answer_moves(box, cyl, facts().scale);
             Box b = box;
             Cylinder<double> c = cyl;
             const double m = facts().scale;
             if (!(m > 0) || !(m < std::numeric_limits<double>::infinity())) return true;
             const int k = -std::ilogb(m);
-            b = times_two_to(b, k), c = times_two_to(c, k);
+            auto scale = [k](double& x) { x = times_two_to(x, k); };
+            for_each_length(b, scale);
+            for_each_length(c, scale);
             semi_static::Problem q;
-            return !semi_static::problem(b, c, q) || witness_search::near_touching(q, kappas<Box>) ||
+            return !semi_static::problem(b, c, q) || witness_search::near_touching(q, semi_static::kappas_of<Box>) ||
                    answer_moves(b, c, largest_length(b, c));
         });
     }

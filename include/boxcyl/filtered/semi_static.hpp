@@ -1,4 +1,4 @@
-// Stage 0 of the filtered exact query: a semi-static filter in plain double.
+// Stage 0 of the exact default (row semi_static): a semi-static filter in plain double.
 //
 // A handful of cheap geometric tests decide most queries far from touching before the
 // linear-inequalities method runs at all:
@@ -9,27 +9,12 @@
 //           cylinder inside the box (X: that axis point itself, and the point of its cross-section
 //           0.9·r towards the box centre) — the latter for segments and disks too.
 // Each test is one polynomial in the inputs evaluated in plain double; it decides only when the
-// computed value exceeds a bound B = (κ_ε·ε + κ_g·g)·L^k on its error, where L is a length scale of
-// the query (every input length is ≤ L/2), k the test's degree in lengths, ε = 2^-52 the rounding
-// unit, g an oriented frame's distance from orthonormal (0 for other boxes), and κ_ε, κ_g constants
-// computed at compile time by evaluating the very same template expression on StaticBound
-// (number/static_bound.hpp) from the input model of the box kind below. So every bound is derived by
-// code (docs/robustness.md §9), and a test costs one or two extra flops and a comparison.
-// Anything undecided goes on to stage 1 (filtered.hpp), which is slower but tighter.
-//
-// Exactness argument. Misses are certified on a problem that contains the exact one, hits on one
-// contained in it, and a witness point Q is always exactly a point of the box (clamping a double to
-// [min, max] is exact; for oriented boxes Q is given by box coordinates x with |x_m| ≤ e_m exactly).
-// An oriented box with a rounded frame A is compared with the box of the orthonormal polar factor Q_A
-// of A = Q_A·S, which is within Hausdorff distance γ = g·|e|₁ of it (g ≥ ‖AᵀA − I‖₂ ≥ ‖A − Q_A‖₂):
-// the cylinder grown by γ (radius and half-height) certifies misses, shrunk by γ certifies hits, as in
-// stage 1 (docs/robustness.md §4). The computed canonical data differ from the ideal problem's (Q_Aᵀ
-// applied exactly) by the input model's errors, in units ε·L and g·L.
-//
-// Range: stage 0 runs only when L ∈ [2^-200, 2^200] (else stage 1 scales the problem). Then every
-// quantity of degree ≤ 4 stays far from overflow, and each rounding in the subnormal range adds at
-// most 2^-1074·(4L)^(k−j)/L^k ≤ 2^-266 (in units of L^k) to a bound of degree k: the "+ 1" slack of
-// every κ_ε (one unit of ε·L^k) covers 2^214 of them.
+// computed value exceeds a bound B = (κ_ε·ε + κ_g·g)·L^k on its error (L a length scale of the query,
+// k the test's degree in lengths, ε = 2^-52, g an oriented frame's distance from orthonormal), with κ_ε,
+// κ_g computed at compile time by evaluating the very same template expression on StaticBound
+// (number/static_bound.hpp) from the box kind's input model below. Misses are certified on a problem
+// containing the exact one, hits on one contained in it; a rounded frame is widened by γ = g·|e|₁. It
+// runs only for L ∈ [2^-200, 2^200]. docs/robustness/stage0.md has the derivation.
 #pragma once
 
 #include <algorithm>  // std::max, std::min
@@ -39,6 +24,7 @@
 #include <cmath>      // std::fabs, std::ilogb, std::scalbn, std::sqrt
 #include <limits>     // infinity
 #include <optional>   // undecided
+#include <type_traits>  // std::is_same_v: the witnesses of each box kind
 #include <utility>    // std::swap
 
 #include "boxcyl/geometry/box.hpp"
@@ -161,21 +147,9 @@ constexpr T chord_box_margin(const T& ci, const T& ei, const T& t, const T& di, 
 }
 
 // ---- Input models: magnitude (units of L) and error (units of ε·L and g·L) of the computed data. ----
-//
-// L = 2·max|input length|: every input length is ≤ L/2. u = axis/|axis| computed after an exact
-// power-of-two scaling (|u_i| ≤ 1, error ≤ 3.6ε|u_i|: γ3 for the squared norm, half of it through the
-// sqrt, one rounding each for the sqrt and the quotient; a dropped component's error is < 2^-250).
-//   canonical: c, e, r, H = h/2 exact; v = fl(clamp(c, ±e) − c): |v| ≤ L, one rounding.
-//   aligned:   K = fl(min/2 + max/2) (error ≤ εL/2), c = fl(C − K) (|c| ≤ L, error ≤ 1.5ε·L + ε²),
-//              e = fl(max/2 − min/2) (error ≤ εL/2); v = fl(Q − C) with Q exactly in the box.
-//   oriented:  δ = fl(C − K) (|δ_j| ≤ L, error ≤ εL); c = fl(A_i·δ) against the ideal Q_A,iᵀδ:
-//              |c_i| ≤ |δ|₂ ≤ √3·L, error ≤ |A_i|·√3εL + γ3·|A_i||δ| + g·√3L ≤ 7εL + 1.7321gL
-//              (|A_i| ≤ 1.0005); d_i = fl(A_i·u): error ≤ |A_i|·3.6ε + γ3·|A_i| + g ≤ 7ε + g;
-//              r ± γ, H ± γ, e − γ with γ ≤ 2^-10·1.5L the double used, one rounding each; v = fl(x − c) with
-//              x exact box coordinates: |v| ≤ (0.5 + √3)L, error c's + one rounding.
-// The cylinder-side witnesses' t and z are doubles chosen by the filter, exact by definition:
-// |t| ≤ H ≤ 0.26L, and |z_i| ≤ 2L (z = s·(−c − t·d) with s ≤ 1, |z_i| ≤ |c_i| + |t| ≤ 2L, or a searched
-// offset checked against 2L). A separating direction n is exact too, scaled to |n_i| ≤ 1 (degree 0).
+// L = 2·max|input length|. docs/robustness/stage0.md derives each entry (the unit axis's 3.6ε, the
+// aligned centre's rounding, an oriented frame's 7ε + g, the witnesses' |t| ≤ 0.26L and |z_i| ≤ 2L,
+// a separating direction scaled to |n_i| ≤ 1).
 struct InputModel {
     StaticBound c, d, e, r, h, v;
     StaticBound t{0.26, 0}, z{2, 0}, n{1, 0};
@@ -640,17 +614,23 @@ inline Vec3<double> witness_offset(const Problem& p, int w, const AlignedBox<dou
 
 // ---- Stage 0: the answer, or nullopt when undecided. ----
 
-// On a problem computed by problem() for the same box and cylinder (the query builds it once and
-// hands it on to the witness search). The tests pass other κ (zero: the decisions of the computed
-// values alone) through the generic decide() above.
-inline std::optional<bool> decide(const Problem& p, const CanonicalBox<double>&, const Cylinder<double>&) {
-    return decide(p, canonical_kappas, [&p](int w) { return witness_offset(p, w); });
-}
-inline std::optional<bool> decide(const Problem& p, const AlignedBox<double>& b, const Cylinder<double>& cyl) {
-    return decide(p, aligned_kappas, [&](int w) { return witness_offset(p, w, b, cyl); });
-}
-inline std::optional<bool> decide(const Problem& p, const OrientedBox<double>&, const Cylinder<double>&) {
-    return decide(p, oriented_kappas, [&p](int w) { return witness_offset(p, w); });
+// The κ of each box kind.
+template <class Box>
+inline constexpr const Kappas& kappas_of = canonical_kappas;
+template <>
+inline constexpr const Kappas& kappas_of<AlignedBox<double>> = aligned_kappas;
+template <>
+inline constexpr const Kappas& kappas_of<OrientedBox<double>> = oriented_kappas;
+
+// On a problem computed by problem() for the same box and cylinder (the query builds it once and hands
+// it on to the witness search). The tests pass other κ (zero: the computed values alone, unsound)
+// through the generic decide() above.
+template <class Box>
+std::optional<bool> decide(const Problem& p, const Box& b, const Cylinder<double>& cyl) {
+    if constexpr (std::is_same_v<Box, AlignedBox<double>>)
+        return decide(p, aligned_kappas, [&](int w) { return witness_offset(p, w, b, cyl); });
+    else
+        return decide(p, kappas_of<Box>, [&p](int w) { return witness_offset(p, w); });
 }
 
 }  // namespace boxcyl::filtered::semi_static

@@ -21,9 +21,7 @@
 //      no single point has a margin. Certificates are tested after steps 1, 2, 4, 8, 16 of each phase.
 // Box points of a rotated box are tested in world coordinates (WorldPoints: the parallelepiped as
 // given against the cylinder as given), so a disk needs no inner cylinder there.
-// Measured on bench_query's random set (docs/robustness.md §9): of the 310 queries (7.6%) that
-// stage 0 leaves, stage 0b decides 293; what it leaves — segments against rotated flat boxes, thin
-// overlaps and near-touching pairs — goes on to stage 1.
+// What it leaves (segments against rotated flat boxes, thin overlaps, near-touching pairs) goes on.
 //
 // The thorough search, `certain_hit` (after stage 1, before exact arithmetic): alternating projections
 // from the box point nearest to C with the cylinder shrunk by the depth (1 − s)·min(H, r) along and
@@ -35,6 +33,7 @@
 #include <algorithm>  // std::min, std::max
 #include <cmath>      // std::sqrt, std::fabs
 #include <optional>   // undecided
+#include <type_traits>  // per box kind
 
 #include "boxcyl/filtered/semi_static.hpp"
 
@@ -260,27 +259,25 @@ inline bool near_touching(const semi_static::Problem& p, const semi_static::Kapp
 }
 
 // Stage 0b on a problem computed by semi_static::problem() for the same box and cylinder: the answer,
-// or nullopt when undecided.
-inline std::optional<bool> decide(const semi_static::Problem& p, const CanonicalBox<double>&, const Cylinder<double>&) {
-    return detail::search_nearest(p, semi_static::canonical_kappas, detail::offset_in(p));
-}
-inline std::optional<bool> decide(const semi_static::Problem& p, const AlignedBox<double>& b, const Cylinder<double>& cyl) {
-    return detail::search_nearest(p, semi_static::aligned_kappas, detail::offset_in(p, b, cyl));
-}
-inline std::optional<bool> decide(const semi_static::Problem& p, const OrientedBox<double>& b, const Cylinder<double>& cyl) {
-    return detail::search_nearest(p, semi_static::oriented_kappas, detail::offset_in_world(p, b, cyl),
-                                  detail::WorldPoints{p, semi_static::world_kappas});
+// or nullopt when undecided. Box points of a rotated box are tested in world coordinates.
+template <class Box>
+std::optional<bool> decide(const semi_static::Problem& p, const Box& b, const Cylinder<double>& cyl) {
+    const semi_static::Kappas& k = semi_static::kappas_of<Box>;
+    if constexpr (std::is_same_v<Box, OrientedBox<double>>)
+        return detail::search_nearest(p, k, detail::offset_in_world(p, b, cyl), detail::WorldPoints{p, semi_static::world_kappas});
+    else if constexpr (std::is_same_v<Box, AlignedBox<double>>)
+        return detail::search_nearest(p, k, detail::offset_in(p, b, cyl));
+    else
+        return detail::search_nearest(p, k, detail::offset_in(p));
 }
 
 // The thorough hit search on a computed problem (false: no certificate found).
-inline bool certain_hit(const semi_static::Problem& p, const CanonicalBox<double>&, const Cylinder<double>&) {
-    return detail::search_thorough(p, semi_static::canonical_kappas, detail::offset_in(p));
-}
-inline bool certain_hit(const semi_static::Problem& p, const AlignedBox<double>& b, const Cylinder<double>& cyl) {
-    return detail::search_thorough(p, semi_static::aligned_kappas, detail::offset_in(p, b, cyl));
-}
-inline bool certain_hit(const semi_static::Problem& p, const OrientedBox<double>&, const Cylinder<double>&) {
-    return detail::search_thorough(p, semi_static::oriented_kappas, detail::offset_in(p));
+template <class Box>
+bool certain_hit(const semi_static::Problem& p, const Box& b, const Cylinder<double>& cyl) {
+    if constexpr (std::is_same_v<Box, AlignedBox<double>>)
+        return detail::search_thorough(p, semi_static::aligned_kappas, detail::offset_in(p, b, cyl));
+    else
+        return detail::search_thorough(p, semi_static::kappas_of<Box>, detail::offset_in(p));
 }
 
 }  // namespace boxcyl::filtered::witness_search

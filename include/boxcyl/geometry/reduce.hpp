@@ -1,6 +1,6 @@
 // The reductions to the canonical frame: aligned and oriented boxes become the canonical box, the cylinder is
 // moved into the box's frame. Generic over T: exact for exact T, rounded (once per operation) for
-// float/double (the filtered query bounds that rounding: docs/robustness.md).
+// float/double (the exact default bounds that rounding: docs/robustness/enclosures.md).
 #pragma once
 
 #include <algorithm>  // std::max

@@ -2,7 +2,7 @@
 // certified filter: value v and bound e with |exact − v| ≤ e for the real number the
 // computation stands for. Every operation is a handful of branch-free flops and inlines, several
 // times cheaper than outward-rounded intervals (interval.hpp, the second stage), at the price of
-// slightly wider bounds. docs/robustness.md §3b derives every bound below; in short:
+// slightly wider bounds. docs/robustness/enclosures.md derives every bound below; in short:
 //
 //  * u = 2^-52 bounds the relative rounding error of one operation in every IEEE rounding mode (one
 //    ulp, not half), so the bounds do not depend on the rounding mode. For a normal result r, the
@@ -24,7 +24,7 @@
 //    stop at DBL_MAX the same way. So every result whose |v| + e reaches DBL_MAX gets e = ∞ (a
 //    result that large is useless anyway): every comparison that involves it is undecided.
 //  * FMA contraction can only remove roundings, and every bound holds for the contracted evaluation
-//    too (docs/robustness.md §3b).
+//    too (docs/robustness/enclosures.md).
 //
 // Comparisons behave as Interval's: when the bounds cannot separate the operands the comparison is
 // undecided, returns false and records it in the current UncertaintyScope (interval.hpp).

@@ -1,10 +1,10 @@
-// A double-double with a running error bound: the enclosure type of the filtered query's middle stage
-// (filtered/middle.hpp). A value is the unevaluated sum hi + lo of two doubles (|lo| ≤ ulp(hi)), about
+// A double-double with a running error bound: the enclosure type of the exact default's middle stage
+// (the double-double rows of filtered/schedule.hpp). A value is the unevaluated sum hi + lo of two doubles (|lo| ≤ ulp(hi)), about
 // 106 significant bits, and a bound e with |exact − (hi + lo)| ≤ e for the real number the computation
 // stands for. It has the interface of Bounded and Interval (the generic §4 code runs on it unchanged),
 // at about 2^-100 relative error per operation instead of 2^-52: near-touching inputs whose gap is
-// one ulp of the input (about 2^-52 relative) are decided far above the noise. docs/robustness.md
-// (§ The middle stage) derives every bound; in short:
+// one ulp of the input (about 2^-52 relative) are decided far above the noise.
+// docs/robustness/enclosures.md derives every bound; in short:
 //
 //  * Round-to-nearest only. The error-free transformations (TwoSum, Fast2Sum, TwoProd) and the
 //    published error bounds of the double-word algorithms below assume it. The middle stage checks the

@@ -11,7 +11,7 @@
 // second error unit, for input errors that are not roundings (an oriented box's distance g from
 // orthonormal; 0 otherwise). Both units are assumed ≤ θ = 2^-9. The same template expression that a
 // filter evaluates in double, evaluated on StaticBounds in a constant expression, yields the two
-// coefficients of its error bound, so no bound is derived by hand (docs/robustness.md §9).
+// coefficients of its error bound, so no bound is derived by hand (docs/robustness/stage0.md).
 //
 // Per operation (a, b the operands; P = a bound of the computed result |x̃|/L^k, charged to ε as the
 // rounding ε·|x̃|; second-order terms err_a·err_b ≤ θ·(the larger unit) charged to that unit):
