@@ -320,6 +320,12 @@ help_version)
     for phrase in "--algorithm" "--arithmetic" "--threads" "--max-line-bytes" "inequalities" "oracle" "EXIT STATUS" "parallelepiped"; do
         contains "$work/out" "$phrase"
     done
+    # The algorithms are named by their methods, as the --algorithm values are, not by section numbers.
+    for phrase in "inequalities: the linear-inequalities method" "hull: the convex-hull method" \
+        "lcp: the LCP method (convex quadratic programming" "oracle: the exact oracle"; do
+        contains "$work/out" "$phrase"
+    done
+    grep -qi "section [0-9]" "$work/out" && fail "intersect --help names a section number"
     ;;
 ids)
     good='"box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 1, "height": 1}'
