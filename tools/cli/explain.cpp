@@ -12,6 +12,7 @@
 #include <fstream>    // input and output files
 #include <iostream>   // streams
 #include <iterator>   // std::istreambuf_iterator
+#include <limits>     // the double range, in amount()
 #include <numbers>    // std::numbers::pi
 #include <sstream>    // reading a whole stream
 #include <string>
@@ -57,6 +58,14 @@ std::string num(double x, int digits = 6) {
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.*g", digits, std::fabs(x));
     return (x < 0 ? "−" : "") + std::string(buf);
+}
+
+// A distance, gap or overlap for the sentences: as num(), but one beyond the double range (computed as
+// +∞) is "more than 1.79769e+308", and one that could not be computed at all says so (never "NaN").
+std::string amount(double x) {
+    if (std::isfinite(x)) return num(x);
+    if (x != x) return "(too large to compute in double precision)";
+    return std::string(x > 0 ? "" : "−") + "more than " + num(std::numeric_limits<double>::max());
 }
 
 // The fewest digits (6 to 17) at which values that differ also print differently: a box one ulp
@@ -189,7 +198,7 @@ std::string verdict_title(const Explanation& e) {
 
 // The sentences under the title: what the picture shows, in the picture's words.
 std::vector<std::string> verdict_lines(const Explanation& e) {
-    const std::string d = num(e.distance), r = num(e.radius);
+    const std::string d = amount(e.distance), r = num(e.radius);
     switch (e.what) {
         case Case::axis_through:
             return {"The cylinder's axis passes through the blue polygon (distance 0 ≤ radius " + r + "),",
@@ -197,7 +206,7 @@ std::vector<std::string> verdict_lines(const Explanation& e) {
         case Case::overlap:
             return {"The blue polygon comes within " + d + " of the axis, inside the orange disk of radius " + r +
                         ":",
-                    "overlap " + num(-e.gap()) + " (radius − distance)."};
+                    "overlap " + amount(-e.gap()) + " (radius − distance)."};
         case Case::touching:
             return {"The blue polygon touches the orange disk: distance = radius = " + r + ".",
                     "Both solids are closed, so touching counts as intersecting."};
@@ -215,14 +224,14 @@ std::vector<std::string> verdict_lines(const Explanation& e) {
                             " (see 'along the axis'), which double precision cannot tell apart."};
             if (e.exact_intersects)
                 return {"Exact answer: they touch or overlap. This picture is drawn in double precision and shows a gap of " +
-                            num(e.gap()) + ",",
+                            amount(e.gap()) + ",",
                         "which is rounding error: the solids are closer than double precision can draw."};
             return {"Exact answer: they do not meet. This picture is drawn in double precision and shows " +
-                        std::string(e.gap() < 0 ? "an overlap of " + num(-e.gap()) : "them touching") + ",",
+                        std::string(e.gap() < 0 ? "an overlap of " + amount(-e.gap()) : "them touching") + ",",
                     "but the true gap is smaller than double precision can draw."};
         case Case::gap:
             return {"The blue polygon stays " + d + " from the axis, outside the orange disk of radius " + r + ":",
-                    "gap " + num(e.gap()) + " (distance − radius)."};
+                    "gap " + amount(e.gap()) + " (distance − radius)."};
         case Case::outside_slab: {
             const bool above = e.box_axial_min > e.half_height;
             return {"No part of the box lies between the cylinder's end planes: the whole box is " +
@@ -322,7 +331,11 @@ void main_panel(Svg& svg, const Explanation& e, const Rect& r) {
     // Screen direction from the axis towards the closest point (to the right when there is none),
     // and its perpendicular; labels go beside lines, never on them.
     double dx = 1, dy = 0;
-    if (e.distance > 0) dx = e.closest.x / e.distance, dy = e.closest.y / e.distance;
+    if (e.distance > 0) {  // the direction of `closest`, scaled first so that a distance beyond the range still has one
+        const double m = std::max(std::fabs(e.closest.x), std::fabs(e.closest.y));
+        const double ux = e.closest.x / m, uy = e.closest.y / m, len = std::hypot(ux, uy);
+        dx = ux / len, dy = uy / len;
+    }
     const double sx = dx, sy = -dy;  // screen y points down
     const double nx = -sy, ny = sx;  // perpendicular
     auto anchor = [](double x) { return std::string(x > 0.35 ? "start" : x < -0.35 ? "end" : "middle"); };
@@ -352,8 +365,8 @@ void main_panel(Svg& svg, const Explanation& e, const Rect& r) {
         if (e.distance > 0) {
             const double bx = m.x(0) + sx * rpx, by = m.y(0) + sy * rpx;
             svg.line(bx, by, cx, cy, "stroke=\"" + std::string(red) + "\" stroke-width=\"3\"");
-            const std::string what = e.gap() > 0   ? "gap " + num(e.gap())
-                                     : e.gap() < 0 ? "overlap " + num(-e.gap())
+            const std::string what = e.gap() > 0   ? "gap " + amount(e.gap())
+                                     : e.gap() < 0 ? "overlap " + amount(-e.gap())
                                                    : "gap 0";
             label(svg, (bx + cx) / 2 - 16 * nx, (by + cy) / 2 - 16 * ny + 5, what, anchor(-nx), 15, true, red, lo, hi);
         }
@@ -362,7 +375,7 @@ void main_panel(Svg& svg, const Explanation& e, const Rect& r) {
         svg.raw("<g id=\"closest\">\n");
         svg.circle(cx, cy, 5.5, "fill=\"" + std::string(red) + "\" stroke=\"#fff\" stroke-width=\"1.5\"");
         if (e.distance > 0)  // at distance 0 the point is the axis point, and the title says so
-            label(svg, cx + 12 * sx + 16 * nx, cy + 12 * sy + 16 * ny + 5, "closest point, distance " + num(e.distance),
+            label(svg, cx + 12 * sx + 16 * nx, cy + 12 * sy + 16 * ny + 5, "closest point, distance " + amount(e.distance),
                   anchor(sx), 13, false, red, lo, hi);
         svg.raw("</g>\n");
     }

@@ -138,6 +138,23 @@ io)
     run 0 --help
     contains "$work/out" "explain"
     ;;
+extreme)
+    # Coordinates near the double range: distances right or "more than" the range, never NaN.
+    printf '%s\n' \
+      '{"id": "wide", "box": {"kind": "parallelepiped", "center": [0, -1e308, 0.5], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [1e308, 0, 0.25]}, "cylinder": {"center": [0, 0, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}}' \
+      '{"id": "far", "box": {"center": [1e308, 1e308, 0.5], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [0, 0, 0.5]}, "cylinder": {"center": [-0.5e308, -0.5e308, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}}' \
+      '{"id": "tiny", "box": {"kind": "parallelepiped", "center": [0, 1e-321, 0.5], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [1e-320, 0, 0.25]}, "cylinder": {"center": [0, 0, 0.5], "axis": [0, 0, 1], "radius": 2e-321, "height": 1}}' \
+      >"$work/in"
+    for i in 1 2 3; do
+        run 0 explain --line $i "$work/in" -o "$work/$i.svg"
+        well_formed "$work/$i.svg" || fail "line $i: not well-formed XML"
+        lacks "$work/$i.svg" "NaN"
+        lacks "$work/$i.svg" "nan"
+    done
+    contains "$work/1.svg" ">gap 1e+308 (distance − radius).<"
+    contains "$work/2.svg" ">gap more than 1.79769e+308 (distance − radius).<"
+    contains "$work/3.svg" ">Intersects<"
+    ;;
 *)
     echo "unknown case $case_name" >&2
     exit 2
