@@ -36,9 +36,12 @@ constexpr const char* help_body = R"(INPUT
                               "axes": [[x,y,z],[x,y,z],[x,y,z]], "extents": [a,b,c]}
             ("kind" is optional for the other two: "aligned" or "oriented")
   CYLINDER  {"center": [x,y,z], "axis": [x,y,z], "radius": r, "height": h}  (r, h >= 0)
-  Other keys are ignored. A number is read as the nearest double (correctly rounded), so
+  No other key is accepted: a key the format does not have makes the line bad, and the
+  message names it with the accepted key nearest to it ("cylinder.heigth: unknown key; did
+  you mean "height"?"). A number is read as the nearest double (correctly rounded), so
   values written with 17 significant digits round-trip exactly; integers are numbers too.
-  A number beyond the double range (e.g. 1e400) makes the line bad, as do duplicate keys.
+  A number beyond the double range (e.g. 1e400) makes the line bad, as do duplicate keys,
+  a NUL byte, and anything but blanks after the object.
 
 SEMANTICS
   Both solids are closed: touching counts as intersecting. The cylinder is the set of

@@ -88,6 +88,7 @@ std::string read_grid(const json& root, Grid& g) {
     const auto it = root.find("grid");
     if (it == root.end()) return "grid: missing";
     if (!it->is_object()) return "grid: expected an object";
+    if (auto e = check_keys_field(*it, "grid", {"origin", "cell_size", "counts"}); !e.empty()) return e;
     if (auto e = read_vec3_field(*it, "origin", "grid.origin", g.origin); !e.empty()) return e;
     if (auto e = read_vec3_field(*it, "cell_size", "grid.cell_size", g.cell_size); !e.empty()) return e;
     return read_counts(*it, g.counts);
@@ -139,6 +140,7 @@ LineAnswer answer_grid_line_unguarded(std::string_view text, std::size_t line_nu
     Grid grid;
     Cylinder<double> cylinder;
     const ObjectLine o = parse_object_line(text, line_number, [&](const json& root) -> std::string {
+        if (auto e = check_keys_field(root, "", {"id", "grid", "cylinder"}); !e.empty()) return e;
         if (auto e = read_grid(root, grid); !e.empty()) return e;
         if (auto e = read_cylinder_field(root, cylinder); !e.empty()) return e;
         if (const Validity v = validate(grid); !v.ok()) return v.message();

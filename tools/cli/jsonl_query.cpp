@@ -9,7 +9,7 @@
 // 64 bits are converted with a (correctly rounded) cast, larger ones go through strtod.
 #include "jsonl_query.hpp"
 
-#include <algorithm>           // std::max
+#include <algorithm>           // std::max, std::min
 #include <array>               // read_line's chunk
 #include <condition_variable>  // process_stream's hand-offs between threads
 #include <cstdint>             // integer SAX events
@@ -71,7 +71,8 @@ public:
         return true;
     }
 
-    bool parse_error(std::size_t, const std::string&, const nlohmann::json::exception& ex) {
+    bool parse_error(std::size_t position, const std::string&, const nlohmann::json::exception& ex) {
+        error_position_ = position;
         // 406 is "number overflow": strtod gave ±Inf, i.e. the literal is beyond the double range.
         if (ex.id == 406) {
             const std::string where = path();
@@ -84,6 +85,8 @@ public:
 
     const std::string& error() const { return error_; }
     const std::string& id_text() const { return id_text_; }
+    // Bytes read when the parser reported its error (the offending byte included).
+    std::size_t error_position() const { return error_position_; }
 
 private:
     struct Frame {
@@ -189,6 +192,7 @@ private:
     std::size_t used_ = 0;
     std::vector<Frame> stack_;
     std::string error_;
+    std::size_t error_position_ = 0;
     std::string id_text_;
 };
 
@@ -220,6 +224,79 @@ struct DismantleOnExit {
 // Serialises a string as a JSON string; invalid UTF-8 (possible in echoed input) becomes U+FFFD.
 std::string json_string(const std::string& s) {
     return json(s).dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+// Restricted Damerau–Levenshtein distance (insertions, deletions, substitutions, transpositions of
+// neighbours) between `a` and `b`.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> prev2(b.size() + 1), prev(b.size() + 1), cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) cur[j] = std::min(cur[j], prev2[j - 2] + 1);
+        }
+        std::swap(prev2, prev);
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+std::string ascii_lower(std::string_view s) {
+    std::string r(s);
+    for (char& c : r)
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    return r;
+}
+
+// The accepted key an unknown one most likely meant: within 1 edit (2 for keys of 5 letters or more),
+// ignoring case; else an accepted key of 3 letters or more that it contains ("half_height" holds
+// "height"); else none.
+std::string_view likely_key(std::string_view key, std::initializer_list<std::string_view> accepted) {
+    if (key.size() > 64) return {};
+    const std::string k = ascii_lower(key);
+    std::string_view best;
+    std::size_t best_distance = k.size() <= 4 ? 2 : 3;  // more than that is no match
+    for (std::string_view a : accepted)
+        if (const std::size_t d = edit_distance(k, a); d < best_distance) best = a, best_distance = d;
+    if (!best.empty()) return best;
+    for (std::string_view a : accepted)
+        if (a.size() >= 3 && k.find(a) != std::string::npos && a.size() > best.size()) best = a;
+    return best;
+}
+
+// "" when every key of the object `obj` is one of `accepted`, else "<field>.<key>: unknown key; did you
+// mean ...? (accepted: ...)" for the first unknown one (in alphabetical order). `field` is the
+// object's name ("cylinder"), empty for the line's top level.
+std::string check_keys(const json& obj, const std::string& field, std::initializer_list<std::string_view> accepted) {
+    for (const auto& member : obj.get_ref<const json::object_t&>()) {
+        const std::string& key = member.first;
+        bool known = false;
+        for (std::string_view a : accepted) known = known || key == a;
+        if (known) continue;
+        // A key is any JSON string: a long one is named by its start.
+        std::string shown = key.size() > 64 ? key.substr(0, 64) + "..." : key;
+        std::string m = (field.empty() ? shown : field + "." + shown) + ": unknown key";
+        if (const std::string_view guess = likely_key(key, accepted); !guess.empty()) {
+            m += "; did you mean \"" + std::string(guess) + "\"";
+            if (guess == "height" && ascii_lower(key).find("half") != std::string::npos)
+                m += " (the full height, end to end, not half of it)";
+            if (guess == "extents" && ascii_lower(key).find("half") != std::string::npos)
+                m += " (half the edge lengths, as you wrote)";
+            m += "?";
+        }
+        m += " (accepted: ";
+        bool first = true;
+        for (std::string_view a : accepted) {
+            m += first ? "" : ", ";
+            m += a;
+            first = false;
+        }
+        return m + ")";
+    }
+    return {};
 }
 
 // Structure checks. Each returns "" when fine, else "<field>: <reason>".
@@ -264,6 +341,7 @@ std::string read_box(const json& root, AnyBox& out) {
     if (it == root.end()) return "box: missing";
     const json& b = *it;
     if (!b.is_object()) return "box: expected an object";
+    if (auto e = check_keys(b, "box", {"kind", "min", "max", "center", "axes", "extents"}); !e.empty()) return e;
     const bool aligned = b.contains("min") || b.contains("max");
     const bool oriented = b.contains("center") || b.contains("axes") || b.contains("extents");
     if (const auto kind = b.find("kind"); kind != b.end()) {
@@ -304,6 +382,7 @@ std::string read_cylinder(const json& root, Cylinder<double>& c) {
     if (it == root.end()) return "cylinder: missing";
     const json& j = *it;
     if (!j.is_object()) return "cylinder: expected an object";
+    if (auto e = check_keys(j, "cylinder", {"center", "axis", "radius", "height"}); !e.empty()) return e;
     if (auto e = read_vec3(j, "center", "cylinder.center", c.center); !e.empty()) return e;
     if (auto e = read_vec3(j, "axis", "cylinder.axis", c.axis); !e.empty()) return e;
     if (auto e = read_number(j, "radius", "cylinder.radius", c.radius); !e.empty()) return e;
@@ -350,6 +429,11 @@ ObjectLine parse_object_line(std::string_view text, std::size_t line_number,
     DomBuilder builder(root, std::size_t{64} * 1024 + 4 * text.size());
     const DismantleOnExit dismantle_root(root);
     const bool parsed = json::sax_parse(text.begin(), text.end(), &builder);
+    // nlohmann's lexer takes a NUL byte for the end of the input: `{...}\0junk` would parse as `{...}`.
+    // A NUL byte is never valid JSON text (inside a string it must be written \u0000), so the line is
+    // bad, unless the parse failed before reaching it (then that error comes first).
+    const std::size_t nul = text.find('\0');
+    const bool nul_first = nul != std::string_view::npos && (parsed || builder.error_position() > nul);
     // The id is echoed whenever a valid one was read, even if the line fails later (a scalar enters
     // the DOM whole, so a present id is complete even in a partly parsed line).
     bool id_ok = true;
@@ -362,6 +446,11 @@ ObjectLine parse_object_line(std::string_view text, std::size_t line_number,
             else
                 id_ok = false;
         }
+    }
+    if (nul_first) {
+        r.error = where + "invalid JSON: column " + std::to_string(nul + 1) +
+                  ": a NUL byte (not allowed in JSON text; inside a string write \\u0000)";
+        return r;
     }
     if (!parsed) {
         r.error = where + builder.error();
@@ -381,6 +470,10 @@ ObjectLine parse_object_line(std::string_view text, std::size_t line_number,
 
 std::string read_cylinder_field(const json& root, Cylinder<double>& out) { return read_cylinder(root, out); }
 
+std::string check_keys_field(const json& obj, const std::string& field, std::initializer_list<std::string_view> accepted) {
+    return check_keys(obj, field, accepted);
+}
+
 std::string read_vec3_field(const json& obj, const char* key, const std::string& field, Vec3<double>& out) {
     return read_vec3(obj, key, field, out);
 }
@@ -388,6 +481,7 @@ std::string read_vec3_field(const json& obj, const char* key, const std::string&
 ParsedLine parse_line(std::string_view text, std::size_t line_number) {
     Query q;
     const ObjectLine o = parse_object_line(text, line_number, [&q](const json& root) -> std::string {
+        if (auto e = check_keys(root, "", {"id", "box", "cylinder"}); !e.empty()) return e;
         if (auto e = read_box(root, q.box); !e.empty()) return e;
         if (auto e = read_cylinder(root, q.cylinder); !e.empty()) return e;
         const Validity vb = std::visit([](const auto& b) { return validate(b); }, q.box);

@@ -6,6 +6,7 @@
 
 #include <cstddef>      // std::size_t
 #include <functional>   // parse_object_line's field reader
+#include <initializer_list>  // accepted keys
 #include <istream>      // std::istream (process_lines)
 #include <ostream>      // std::ostream
 #include <optional>     // a line may not yield a query
@@ -56,6 +57,10 @@ ObjectLine parse_object_line(std::string_view text, std::size_t line_number,
 // the structure only; validate() the result.
 std::string read_cylinder_field(const nlohmann::json& root, Cylinder<double>& out);  // root["cylinder"]
 std::string read_vec3_field(const nlohmann::json& obj, const char* key, const std::string& field, Vec3<double>& out);
+// Every key of the object `obj` must be one of `accepted`: "" or "<field>.<key>: unknown key; did you
+// mean "<nearest>"? (accepted: ...)". `field` names the object ("" for the top level).
+std::string check_keys_field(const nlohmann::json& obj, const std::string& field,
+                             std::initializer_list<std::string_view> accepted);
 
 // A query that is valid in double may not survive rounding to float (overflow to ±Inf, an axis that
 // underflows to zero, ...). When `opt.rounds_to_float`, says which field breaks; otherwise ok().

@@ -246,8 +246,9 @@ threads)
     run 2 intersect --threads many "$work/good"
     ;;
 hostile_bytes)
-    # Raw bytes through the executable: invalid UTF-8, NUL, CR-only line, a 10 MB line, a truncated
-    # last line. One output line each, all valid UTF-8, the good lines answered, exit 1.
+    # Raw bytes through the executable: invalid UTF-8, NUL, CR-only line, a 10 MB line (of blanks
+    # inside a good query), a truncated last line. One output line each, all valid UTF-8, the good
+    # lines answered, exit 1.
     good='{"id": 1, "box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [2, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}}'
     {
         printf '%s\n' "$good"
@@ -256,7 +257,7 @@ hostile_bytes)
         printf '{"id": 2\000, "box": 1}\n'
         printf '\r\r\n'
         head -c 10485760 /dev/zero | tr '\0' '['; printf '\n'
-        printf '{"id": 3, "pad": "'; head -c 10485760 /dev/zero | tr '\0' 'x'; printf '"%s\n' "${good#\{\"id\": 1}"
+        printf '{"id": 3,'; head -c 10485760 /dev/zero | tr '\0' ' '; printf '%s\n' "${good#\{\"id\": 1,}"
         printf '%s' "${good:0:60}"
     } >"$work/in"
     run 1 intersect "$work/in"
@@ -556,11 +557,12 @@ memory_limit)
         check_lines "256 MiB line, --threads $t" '{"error": "line 2: line is longer than 16777216 bytes (--max-line-bytes)"}'
     done
     # The same line allowed by --max-line-bytes: read, then its parse (which copies the string twice)
-    # runs out of memory or, where it fits, finds no box; an error line in place either way.
+    # runs out of memory or, where it fits, finds a key the format does not have; an error line in
+    # place either way.
     for t in 1 2; do
         run_limited 1 intersect --threads "$t" --max-line-bytes 2000000000
         check_lines "256 MiB line allowed, --threads $t" \
-            '{\("id": 2, \)\?"error": "line 2: \(out of memory \(reading\|answering\) the line\|box: missing\)"}'
+            '{\("id": 2, \)\?"error": "line 2: \(out of memory \(reading\|answering\) the line\|pad: unknown key (accepted: id, box, cylinder)\)"}'
     done
     # 96 MiB of small values ("[],"): the parse would need ~1 GiB; refused by the parse budget
     # (4 bytes per byte of the line) or by memory running out, the other lines answered either way.
@@ -608,6 +610,73 @@ grid_max_cells)
     contains "$work/out" "--max-cells"
     contains "$work/out" "--max-line-bytes"
     run 2 grid --max-cells -1 "$work/in"
+    ;;
+nul_and_trailing_bytes)
+    # A valid query followed by a NUL byte or by anything but blanks is a bad line, never answered as
+    # the query before it.
+    good='{"id": 1, "box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [2, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}}'
+    {
+        printf '%s\000 junk\n' "$good"
+        printf '%s\000\n' "$good"
+        printf '%s junk\n' "$good"
+        printf '%s }\n' "$good"
+        printf '%s \t\r\n' "$good"
+        printf '{"id": 6, "box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [2, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1\000}}\n'
+    } >"$work/in"
+    for t in 1 2; do
+        run 1 intersect --threads $t "$work/in"
+        [[ $(wc -l <"$work/out") == 6 ]] || fail "got $(wc -l <"$work/out") output lines for 6 input lines"
+        col=$((${#good} + 1))
+        sed -n 1p "$work/out" | grep -qxF "{\"id\": 1, \"error\": \"line 1: invalid JSON: column $col: a NUL byte (not allowed in JSON text; inside a string write \\\\u0000)\"}" || fail "line 1: $(sed -n 1p "$work/out")"
+        sed -n 2p "$work/out" | grep -q "^{\"id\": 1, \"error\": \"line 2: invalid JSON: column $col: a NUL byte" || fail "line 2: $(sed -n 2p "$work/out")"
+        sed -n 3p "$work/out" | grep -q '^{"id": 1, "error": "line 3: invalid JSON: .*expected end of input' || fail "line 3: $(sed -n 3p "$work/out")"
+        sed -n 4p "$work/out" | grep -q '^{"id": 1, "error": "line 4: invalid JSON: .*expected end of input' || fail "line 4: $(sed -n 4p "$work/out")"
+        sed -n 5p "$work/out" | grep -qx '{"id": 1, "intersect": true}' || fail "line 5: $(sed -n 5p "$work/out")"
+        sed -n 6p "$work/out" | grep -q '^{"id": 6, "error": "line 6: invalid JSON: column [0-9]*: a NUL byte' || fail "line 6: $(sed -n 6p "$work/out")"
+    done
+    g='{"grid": {"origin": [0, 0, 0], "cell_size": [1, 1, 1], "counts": [1, 1, 1]}, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 1, "height": 1}}'
+    printf '%s\000 junk\n' "$g" >"$work/grid"
+    run 1 grid "$work/grid"
+    contains "$work/out" "\"error\": \"line 1: invalid JSON: column $((${#g} + 1)): a NUL byte"
+    ;;
+unknown_keys)
+    # A key the format does not have makes the line bad, named with the key nearest to it; every
+    # object the tool reads (the line, box, cylinder, grid).
+    b='"box": {"min": [0, 0, 0], "max": [1, 1, 1]}'
+    c='"center": [2, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1'
+    {
+        echo "{\"id\": 1, $b, \"cylinder\": {$c, \"height\": 1, \"heigth\": 5}}"
+        echo "{\"id\": 2, $b, \"cylinder\": {$c, \"half_height\": 0.5}}"
+        echo "{\"id\": 3, \"box\": {\"min\": [0, 0, 0], \"max\": [1, 1, 1], \"colour\": \"red\"}, \"cylinder\": {$c, \"height\": 1}}"
+        echo "{\"id\": 4, \"comment\": \"x\", $b, \"cylinder\": {$c, \"height\": 1}}"
+        echo "{\"id\": 5, \"boxx\": {}, $b, \"cylinder\": {$c, \"height\": 1}}"
+        echo "{\"id\": 6, \"box\": {\"kind\": \"oriented\", \"center\": [0, 0, 0], \"axis\": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], \"extents\": [1, 1, 1]}, \"cylinder\": {$c, \"height\": 1}}"
+        echo "{\"id\": 7, $b, \"cylinder\": {$c, \"height\": 1}}"
+    } >"$work/in"
+    {
+        echo '{"id": 1, "error": "line 1: cylinder.heigth: unknown key; did you mean \"height\"? (accepted: center, axis, radius, height)"}'
+        echo '{"id": 2, "error": "line 2: cylinder.half_height: unknown key; did you mean \"height\" (the full height, end to end, not half of it)? (accepted: center, axis, radius, height)"}'
+        echo '{"id": 3, "error": "line 3: box.colour: unknown key (accepted: kind, min, max, center, axes, extents)"}'
+        echo '{"id": 4, "error": "line 4: comment: unknown key (accepted: id, box, cylinder)"}'
+        echo '{"id": 5, "error": "line 5: boxx: unknown key; did you mean \"box\"? (accepted: id, box, cylinder)"}'
+        echo '{"id": 6, "error": "line 6: box.axis: unknown key; did you mean \"axes\"? (accepted: kind, min, max, center, axes, extents)"}'
+        echo '{"id": 7, "intersect": true}'
+    } >"$work/want"
+    run 1 intersect "$work/in"
+    same_bytes "$work/out" "$work/want"
+    g='"grid": {"origin": [0, 0, 0], "cell_size": [1, 1, 1], "counts": [1, 1, 1]'
+    {
+        echo "{$g, \"cellsize\": [1, 1, 1]}, \"cylinder\": {\"center\": [0, 0, 0], \"axis\": [0, 0, 1], \"radius\": 1, \"height\": 1}}"
+        echo "{$g}, \"cylinder\": {\"center\": [0, 0, 0], \"axis\": [0, 0, 1], \"radius\": 1, \"heigth\": 1}}"
+        echo "{$g}, \"box\": {}, \"cylinder\": {\"center\": [0, 0, 0], \"axis\": [0, 0, 1], \"radius\": 1, \"height\": 1}}"
+    } >"$work/in"
+    {
+        echo '{"error": "line 1: grid.cellsize: unknown key; did you mean \"cell_size\"? (accepted: origin, cell_size, counts)"}'
+        echo '{"error": "line 2: cylinder.heigth: unknown key; did you mean \"height\"? (accepted: center, axis, radius, height)"}'
+        echo '{"error": "line 3: box: unknown key (accepted: id, grid, cylinder)"}'
+    } >"$work/want"
+    run 1 grid "$work/in"
+    same_bytes "$work/out" "$work/want"
     ;;
 *)
     echo "unknown case $case_name" >&2
