@@ -66,8 +66,13 @@ std::string check_keys_field(const nlohmann::json& obj, const std::string& field
 // underflows to zero, ...). When `opt.rounds_to_float`, says which field breaks; otherwise ok().
 Validity check_arithmetic(const Query& q, const RunOptions& opt);
 
-// The one place the tool asks the library (boxcyl::intersects from boxcyl/query.hpp).
+// The one place the tool asks the library (boxcyl::intersects). In float or double arithmetic the
+// linear-inequalities and LCP methods take a box's axes as an orthonormal frame; a box whose axes are
+// further from orthonormal than that arithmetic's rounding (needs_hull_for_frame: |Ai·Aj − δij| above
+// 2^-49 in double, 2^-20 in float) is answered by the convex-hull method instead, in the same
+// arithmetic, for the parallelepiped its axes span exactly as given.
 bool run_query(const Query& q, const QueryOptions& opt);
+bool needs_hull_for_frame(const Query& q, const QueryOptions& opt);
 
 // Output lines, without the newline. `id` is JSON text or empty (no "id" key).
 std::string format_answer(const std::string& id, bool intersect);

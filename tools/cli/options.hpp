@@ -41,8 +41,13 @@ inline constexpr std::array<ArithmeticChoice, 4> arithmetic_choices{{
     {"filtered", Arithmetic::filtered,
      "the exact answer (default): a certified double-interval filter decides most queries, exact "
      "arithmetic the rest; with hull and lcp it means exact"},
-    {"float", Arithmetic::float32, "32-bit floats: inputs are rounded to float first"},
-    {"double", Arithmetic::float64, "plain 64-bit doubles, unfiltered (may misjudge inputs within a tiny gap of touching)"},
+    {"float", Arithmetic::float32,
+     "32-bit floats: inputs are rounded to float first; otherwise as double (axes beyond 2^-20 of "
+     "orthonormal: the convex-hull method)"},
+    {"double", Arithmetic::float64,
+     "plain 64-bit doubles, unfiltered (may misjudge inputs within a tiny gap of touching); a box whose "
+     "axes are further than 2^-49 from orthonormal (|Ai.Aj - delta_ij|) is answered by the convex-hull "
+     "method, for the parallelepiped its axes span, whatever --algorithm says"},
     {"exact", Arithmetic::exact,
      "rationals and a + b*sqrt(d): exact for the inputs as given; the inequalities and lcp methods "
      "refuse oriented boxes whose axes are not exactly orthonormal (use hull or oracle)"},

@@ -678,6 +678,30 @@ unknown_keys)
     run 1 grid "$work/in"
     same_bytes "$work/out" "$work/want"
     ;;
+skewed_frames)
+    # An oriented box whose axes are 4e-5 from orthonormal (valid: within 1e-4) is the parallelepiped
+    # they span: near the corner (1000.04, 1000) its face x0 = 1000 lies 0.04 beyond x = 1000. A
+    # cylinder overlapping that face by 0.02 intersects; one 0.02 short of it does not. Every algorithm
+    # in every arithmetic agrees (in float and double the axes send the query to the convex-hull method).
+    box='"box": {"center": [0, 0, 0], "axes": [[1, 0, 0], [4e-5, 1, 0], [0, 0, 1]], "extents": [1000, 1000, 1000]}'
+    {
+        echo "{\"id\": \"overlap 0.02\", $box, \"cylinder\": {\"center\": [1000.51996, 999, 0], \"axis\": [0, 0, 1], \"radius\": 0.5, \"height\": 10}}"
+        echo "{\"id\": \"gap 0.02\", $box, \"cylinder\": {\"center\": [1000.55996, 999, 0], \"axis\": [0, 0, 1], \"radius\": 0.5, \"height\": 10}}"
+        echo "{\"id\": \"kind parallelepiped\", \"box\": {\"kind\": \"parallelepiped\", \"center\": [0, 0, 0], \"axes\": [[1, 0, 0], [4e-5, 1, 0], [0, 0, 1]], \"extents\": [1000, 1000, 1000]}, \"cylinder\": {\"center\": [1000.51996, 999, 0], \"axis\": [0, 0, 1], \"radius\": 0.5, \"height\": 10}}"
+    } >"$work/in"
+    printf '%s\n' '{"id": "overlap 0.02", "intersect": true}' '{"id": "gap 0.02", "intersect": false}' \
+        '{"id": "kind parallelepiped", "intersect": true}' >"$work/want"
+    run 0 intersect --algorithm oracle "$work/in"
+    same_bytes "$work/out" "$work/want"
+    for alg in inequalities hull lcp; do
+        for ari in filtered double float; do
+            run 0 intersect --algorithm $alg --arithmetic $ari "$work/in"
+            same_bytes "$work/out" "$work/want"
+        done
+    done
+    run 0 intersect --help
+    contains "$work/out" "2^-49"
+    ;;
 *)
     echo "unknown case $case_name" >&2
     exit 2

@@ -5,7 +5,7 @@
 
 #include <bit>           // std::bit_cast for bit-exact comparison
 #include <charconv>      // std::to_chars for 17-digit printing
-#include <cmath>         // std::signbit
+#include <cmath>         // std::signbit, std::sqrt
 #include <cstdint>       // bit patterns
 #include <random>        // fixed-seed random doubles
 #include <sstream>       // process_stream on strings
@@ -746,6 +746,59 @@ TEST(JsonlParallelepiped, GoodLinesAndAnswers) {
         EXPECT_EQ(answer_line("{\"id\": 2, " + box + R"(, "cylinder": {"center": [6, 8, 0], "axis": [0, 0, 1], "radius": 4.999, "height": 2}})", 2, opt).text,
                   R"({"id": 2, "intersect": false})") << alg;
     }
+}
+
+// --- rounded arithmetic on frames that are not orthonormal ---
+
+// An oriented box whose axes are 4e-5 from orthonormal (valid: within 1e-4) is the parallelepiped they
+// span: its face x0 = 1000 passes x = 1000.03996 at y = 999. A cylinder overlapping it by 0.02 meets
+// the box in every algorithm and arithmetic: in float and double the linear-inequalities and LCP
+// methods, which take the axes as an orthonormal frame (they would see a gap of 0.02), hand the query
+// to the convex-hull method.
+TEST(JsonlFrames, AxesOffOrthonormalAreAnsweredForTheParallelepipedTheySpan) {
+    const std::string box =
+        R"("box": {"center": [0, 0, 0], "axes": [[1, 0, 0], [4e-5, 1, 0], [0, 0, 1]], "extents": [1000, 1000, 1000]})";
+    const std::string hit = "{" + box + R"(, "cylinder": {"center": [1000.51996, 999, 0], "axis": [0, 0, 1], "radius": 0.5, "height": 10}})";
+    const std::string miss = "{" + box + R"(, "cylinder": {"center": [1000.55996, 999, 0], "axis": [0, 0, 1], "radius": 0.5, "height": 10}})";
+    for (const char* alg : {"inequalities", "hull", "lcp", "oracle"})
+        for (const char* ari : {"filtered", "double", "float"}) {
+            const RunOptions opt = make_run_options(alg, ari);
+            EXPECT_EQ(answer_line(hit, 1, opt).text, R"({"intersect": true})") << alg << " " << ari;
+            EXPECT_EQ(answer_line(miss, 1, opt).text, R"({"intersect": false})") << alg << " " << ari;
+        }
+    const ParsedLine p = parse_line(hit, 1);
+    ASSERT_TRUE(p.query) << p.error;
+    EXPECT_TRUE(needs_hull_for_frame(*p.query, make_run_options("inequalities", "double").query));
+    EXPECT_TRUE(needs_hull_for_frame(*p.query, make_run_options("lcp", "float").query));
+    EXPECT_FALSE(needs_hull_for_frame(*p.query, make_run_options("hull", "double").query));
+    EXPECT_FALSE(needs_hull_for_frame(*p.query, make_run_options("inequalities", "filtered").query));
+    EXPECT_FALSE(needs_hull_for_frame(*p.query, make_run_options("oracle", "double").query));
+}
+
+// Axes orthonormal to within rounding (rotations computed in double, or rounded to float) keep the
+// chosen method; an aligned box always does.
+TEST(JsonlFrames, RotationsComputedInDoubleKeepTheChosenMethod) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const RunOptions d = make_run_options("inequalities", "double"), f = make_run_options("lcp", "float");
+    for (int k = 0; k < 2000; ++k) {
+        double w = u(rng), a = u(rng), b = u(rng), c = u(rng);
+        const double s = std::sqrt(w * w + a * a + b * b + c * c);
+        w /= s, a /= s, b /= s, c /= s;
+        Query q{OrientedBox<double>{{0, 0, 0},
+                                    {Vec3<double>{1 - 2 * (b * b + c * c), 2 * (a * b + w * c), 2 * (a * c - w * b)},
+                                     Vec3<double>{2 * (a * b - w * c), 1 - 2 * (a * a + c * c), 2 * (b * c + w * a)},
+                                     Vec3<double>{2 * (a * c + w * b), 2 * (b * c - w * a), 1 - 2 * (a * a + b * b)}},
+                                    {1, 1, 1}},
+                Cylinder<double>{{0, 0, 0}, {0, 0, 1}, 1, 1}};
+        EXPECT_FALSE(needs_hull_for_frame(q, d.query)) << k;
+        EXPECT_FALSE(needs_hull_for_frame(q, f.query)) << k;
+        q.box = Parallelepiped<double>{std::get<OrientedBox<double>>(q.box).center, std::get<OrientedBox<double>>(q.box).axes,
+                                       {1, 1, 1}};
+        EXPECT_FALSE(needs_hull_for_frame(q, d.query)) << k;
+    }
+    const Query aligned{AlignedBox<double>{{0, 0, 0}, {1, 1, 1}}, Cylinder<double>{{0, 0, 0}, {0, 0, 1}, 1, 1}};
+    EXPECT_FALSE(needs_hull_for_frame(aligned, d.query));
 }
 
 }  // namespace
