@@ -7,7 +7,7 @@
 #include <cstdint>     // std::int64_t, std::uint64_t
 #include <cstring>     // std::strerror
 #include <exception>   // failures of the library call
-#include <fstream>     // input files
+#include <memory>      // the input file
 #include <istream>     // std::getline
 #include <limits>      // the int64 range
 #include <new>         // std::bad_alloc
@@ -54,11 +54,6 @@ OUTPUT
   whose answer has more than --max-cells cells (default 1000000) gets the error line
   "line N: the answer has more than M cells ...", found without listing them all; lines
   longer than --max-line-bytes, and lines memory does not suffice for, as for intersect.
-
-EXIT STATUS
-  0  every line was a good query (also for empty input)
-  1  at least one line was bad
-  2  usage error: unknown option, unreadable file
 
 EXAMPLE
   echo '{"grid":{"origin":[0,0,0],"cell_size":[1,1,1],"counts":[4,4,4]},"cylinder":{"center":[1,2,2],"axis":[1,0,0],"radius":0,"height":1}}' | boxcyl grid
@@ -179,7 +174,7 @@ LineAnswer answer_grid_line(std::string_view text, std::size_t line_number, cons
     }
 }
 
-std::size_t process_grid_stream(std::istream& in, std::ostream& out, const GridOptions& opt) {
+StreamCounts process_grid_stream(std::istream& in, std::ostream& out, const GridOptions& opt) {
     return process_lines(in, out, opt.max_line_bytes,
                          [&opt](std::string_view line, std::size_t n) { return answer_grid_line(line, n, opt); });
 }
@@ -187,7 +182,7 @@ std::size_t process_grid_stream(std::istream& in, std::ostream& out, const GridO
 void add_grid_command(CLI::App& app, GridCommand& cmd) {
     cmd.app = app.add_subcommand(
         "grid", "For each input line (a grid and a cylinder), list the grid cells the cylinder intersects");
-    cmd.app->footer(grid_help);
+    cmd.app->footer(std::string(grid_help) + "\n" + exit_status_help);
     cmd.app->add_option("file", cmd.file, "JSON Lines input; '-' or none: standard input");
     add_max_line_bytes_option(*cmd.app, cmd.options.max_line_bytes);
     cmd.app->add_option("--max-cells", cmd.options.max_cells,
@@ -202,15 +197,13 @@ int run_grid(const GridCommand& cmd, std::istream& in, std::ostream& out, std::o
     err << "boxcyl: grid needs the exact backend (GMP); this build has none\n";
     return exit_usage;
 #else
-    auto run_on = [&](std::istream& input) {
-        const std::size_t bad = process_grid_stream(input, out, cmd.options);
-        if (input.bad()) return exit_usage;  // a read error: the output is incomplete
-        return bad == 0 ? exit_ok : exit_bad_lines;
-    };
-    if (cmd.file == "-") return run_on(in);
-    std::optional<std::ifstream> f = open_input(cmd.file, err);
-    if (!f) return exit_usage;
-    return run_on(*f);
+    std::unique_ptr<std::istream> f;
+    if (cmd.file != "-") {
+        f = open_input(cmd.file, err);
+        if (!f) return exit_usage;
+    }
+    std::istream& input = f ? *f : in;
+    return end_of_run(process_grid_stream(input, out, cmd.options), input, input_name(cmd.file), out, err);
 #endif
 }
 

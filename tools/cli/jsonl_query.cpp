@@ -18,6 +18,7 @@
 #include <istream>             // std::istream::getline
 #include <memory>              // blocks
 #include <new>                 // std::bad_alloc
+#include <system_error>        // threads that cannot be started
 #include <mutex>               // process_stream's shared state
 #include <ostream>             // output lines
 #include <thread>              // process_stream's workers
@@ -524,8 +525,10 @@ std::string format_error(const std::string& id, const std::string& message) {
     return s;
 }
 
-LineRead read_line(std::istream& in, std::string& line, std::size_t max_bytes, std::ostream* flush_if_long) {
+LineRead read_line(std::istream& in, std::string& line, std::size_t max_bytes, std::ostream* flush_if_long,
+                   bool* ended_by_newline) {
     line.clear();
+    if (ended_by_newline) *ended_by_newline = false;
     // istream::getline into a fixed buffer, chunk by chunk: the bytes beyond max_bytes are read and
     // dropped, never kept (std::getline would grow the string to the whole line).
     std::array<char, std::size_t{64} * 1024> chunk;
@@ -557,17 +560,23 @@ LineRead read_line(std::istream& in, std::string& line, std::size_t max_bytes, s
                 }
             }
         }
-        if (!full) return status;  // newline or end of input
+        if (!full) {  // newline or end of input
+            if (ended_by_newline) *ended_by_newline = newline;
+            return status;
+        }
         in.clear(in.rdstate() & ~std::ios::failbit);
     }
 }
 
-LineAnswer unread_line_answer(LineRead r, std::size_t line_number, std::size_t max_bytes) {
+std::string unread_line_message(LineRead r, std::size_t line_number, std::size_t max_bytes) {
     const std::string where = "line " + std::to_string(line_number) + ": ";
     if (r == LineRead::too_long)
-        return {format_error({}, where + "line is longer than " + std::to_string(max_bytes) + " bytes (--max-line-bytes)"),
-                false};
-    return {format_error({}, where + "out of memory reading the line"), false};
+        return where + "line is longer than " + std::to_string(max_bytes) + " bytes (--max-line-bytes)";
+    return where + "out of memory reading the line";
+}
+
+LineAnswer unread_line_answer(LineRead r, std::size_t line_number, std::size_t max_bytes) {
+    return {format_error({}, unread_line_message(r, line_number, max_bytes)), false};
 }
 
 namespace {
@@ -601,7 +610,7 @@ LineAnswer answer_line(std::string_view text, std::size_t line_number, const Run
 
 namespace {
 
-std::size_t process_stream_serial(std::istream& in, std::ostream& out, const RunOptions& opt) {
+StreamCounts process_stream_serial(std::istream& in, std::ostream& out, const RunOptions& opt) {
     return process_lines(in, out, opt.max_line_bytes,
                          [&opt](std::string_view line, std::size_t n) { return answer_line(line, n, opt); });
 }
@@ -627,7 +636,7 @@ struct Block {
 // This thread reads and cuts the input into blocks; `threads` workers answer blocks in any order; one
 // writer thread writes the answered blocks strictly in input order. Reading, answering and writing
 // overlap, and at most 2 * threads blocks exist between reader and writer (memory bound).
-std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads) {
+StreamCounts process_stream_parallel(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads) {
     const std::size_t max_in_flight = 2 * std::size_t{threads};
     std::mutex m;
     std::condition_variable work_ready;  // workers: a block in `todo`, or the end
@@ -637,6 +646,7 @@ std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const R
     std::deque<Block*> todo;                       // not yet taken by a worker
     bool end_of_input = false;
     std::exception_ptr failure;
+    bool write_failed = false;  // `out` went bad: the reader stops, the writer writes no more
     std::size_t bad = 0;  // the writer's
 
     auto worker = [&] {
@@ -685,6 +695,7 @@ std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const R
                     lk.unlock();
                     out.flush();
                     lk.lock();
+                    if (!out) write_failed = true;
                     front_done.wait(lk, ready);
                 }
                 if (in_flight.empty()) return;
@@ -693,17 +704,21 @@ std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const R
                 if (b->failure && !failure) failure = b->failure;
             }
             space.notify_one();
-            if (failure) continue;  // written so far: a prefix of the output; the caller rethrows
+            if (failure || write_failed) continue;  // written so far: a prefix of the output
             out.write(b->out.data(), static_cast<std::streamsize>(b->out.size()));
             bad += b->bad;
+            if (!out) {
+                std::lock_guard lk(m);
+                write_failed = true;
+            }
         }
     };
 
     // Hands `b` to the workers once there is room; false when the run must stop.
     const auto dispatch = [&](std::unique_ptr<Block>& b) {
         std::unique_lock lk(m);
-        space.wait(lk, [&] { return in_flight.size() < max_in_flight || failure; });
-        if (failure) return false;
+        space.wait(lk, [&] { return in_flight.size() < max_in_flight || failure || write_failed; });
+        if (failure || write_failed) return false;
         todo.push_back(b.get());
         in_flight.push_back(std::move(b));
         b = std::make_unique<Block>();
@@ -727,19 +742,40 @@ std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const R
         if (writing.joinable()) writing.join();
         in.tie(tied);
     };
+    std::size_t line_number = 0;
     try {
-        pool.reserve(threads);
-        for (unsigned i = 0; i < threads; ++i) pool.emplace_back(worker);
-        writing = std::thread(writer);
+        try {
+            pool.reserve(threads);
+            for (unsigned i = 0; i < threads; ++i) pool.emplace_back(worker);
+            writing = std::thread(writer);
+        } catch (const std::system_error& e) {
+            throw ThreadsUnavailable("cannot start the threads of --threads " + std::to_string(threads) + ": " +
+                                     e.what());
+        }
         auto block = std::make_unique<Block>();
-        std::size_t line_number = 0;
         std::string line;
+        // A read that waits in the middle of a line hands over the lines before it first.
+        std::exception_ptr hook_failure;
+        const BeforeWait hand_over(in, [&] {
+            try {
+                if (!block->lines.empty()) dispatch(block);
+            } catch (...) {
+                hook_failure = std::current_exception();
+            }
+        });
         for (;;) {
             // Hand over a partial block before a read could block: an interactive caller waits for it.
             if (!block->lines.empty() && (in.rdbuf() == nullptr || in.rdbuf()->in_avail() <= 0) && !dispatch(block))
                 break;
-            const LineRead r = read_line(in, line, opt.max_line_bytes);
-            if (r == LineRead::end) {
+            // A stop signal: the lines read in full are answered (the partial block too), no more are read.
+            if (stop_signal() != 0) {
+                if (!block->lines.empty()) dispatch(block);
+                break;
+            }
+            bool newline = false;
+            const LineRead r = read_line(in, line, opt.max_line_bytes, nullptr, &newline);
+            if (hook_failure) std::rethrow_exception(hook_failure);
+            if (r == LineRead::end || (!newline && stop_signal() != 0)) {
                 if (!block->lines.empty()) dispatch(block);
                 break;
             }
@@ -763,12 +799,12 @@ std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const R
     finish();
     out.flush();
     if (failure) std::rethrow_exception(failure);
-    return bad;
+    return {line_number, bad};
 }
 
 }  // namespace
 
-std::size_t process_stream(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads) {
+StreamCounts answer_stream(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads) {
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
     return threads == 1 ? process_stream_serial(in, out, opt) : process_stream_parallel(in, out, opt, threads);
 }

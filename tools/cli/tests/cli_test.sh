@@ -611,6 +611,163 @@ grid_max_cells)
     contains "$work/out" "--max-line-bytes"
     run 2 grid --max-cells -1 "$work/in"
     ;;
+write_errors)
+    # A write error is reported and exits 3, never 0 with the answers lost: a full device, and a
+    # closed standard output (the tool keeps descriptor 1 taken, so no file it opens lands there).
+    g='{"grid": {"origin": [0, 0, 0], "cell_size": [1, 1, 1], "counts": [2, 2, 2]}, "cylinder": {"center": [1, 1, 1], "axis": [0, 0, 1], "radius": 0.5, "height": 1}}'
+    printf '%s\n' "$g" "$g" >"$work/grid.jsonl"
+    # expect_write_error WHAT: rc 3 and a message naming the write failure.
+    expect_write_error() {
+        [[ $rc == 3 ]] || fail "$1: exited $rc, expected 3; stderr: $(head -c 300 "$work/err")"
+        grep -q "^boxcyl: cannot write standard output: " "$work/err" || fail "$1: no message: $(head -c 300 "$work/err")"
+    }
+    if [[ -w /dev/full ]]; then
+        for args in "intersect" "intersect --threads 2" "intersect --threads 3 --algorithm oracle"; do
+            # shellcheck disable=SC2086
+            "$exe" $args "$examples/queries.jsonl" >/dev/full 2>"$work/err"
+            rc=$?
+            expect_write_error "$args >/dev/full"
+            contains "$work/err" "No space left on device"
+        done
+        "$exe" grid "$work/grid.jsonl" >/dev/full 2>"$work/err"
+        rc=$?
+        expect_write_error "grid >/dev/full"
+        "$exe" intersect <"$examples/queries.jsonl" >/dev/full 2>"$work/err"
+        rc=$?
+        expect_write_error "intersect (stdin) >/dev/full"
+        "$exe" --help >/dev/full 2>"$work/err"
+        rc=$?
+        expect_write_error "--help >/dev/full"
+        # A large output fails in mid-run: the tool stops reading (it does not answer the rest in vain).
+        bash "$(dirname "$0")/gen_queries.sh" 50000 3 >"$work/big"
+        "$exe" intersect "$work/big" >/dev/full 2>"$work/err"
+        rc=$?
+        expect_write_error "50000 lines >/dev/full"
+        contains "$work/err" "stopped after"
+    fi
+    for args in "intersect" "intersect --threads 2"; do
+        # shellcheck disable=SC2086
+        "$exe" $args "$examples/queries.jsonl" >&- 2>"$work/err"
+        rc=$?
+        expect_write_error "$args >&-"
+    done
+    "$exe" grid "$work/grid.jsonl" >&- 2>"$work/err"
+    rc=$?
+    expect_write_error "grid >&-"
+    ;;
+read_errors)
+    # A read error is reported and exits 3 (reading a directory given as standard input: EISDIR).
+    for args in "intersect" "intersect --threads 2" "grid"; do
+        # shellcheck disable=SC2086
+        "$exe" $args <"$work" >"$work/out" 2>"$work/err"
+        rc=$?
+        [[ $rc == 3 ]] || fail "$args <dir: exited $rc, expected 3"
+        contains "$work/err" "boxcyl: cannot read standard input: Is a directory"
+    done
+    ;;
+threads_unavailable)
+    # Threads that cannot be started (here: their stacks do not fit an address-space limit) are not a
+    # usage error: a message and exit 4, nothing read. An AddressSanitizer build cannot start under an
+    # address-space limit (its shadow memory): skipped there.
+    if nm "$exe" 2>/dev/null | grep -q __asan_init; then
+        echo "threads_unavailable: skipped (AddressSanitizer build)"
+        exit 0
+    fi
+    bash -c 'ulimit -v 600000 || exit 97; exec "$@"' limited "$exe" intersect --threads 1024 "$examples/queries.jsonl" \
+        >"$work/out" 2>"$work/err"
+    rc=$?
+    [[ $rc == 4 ]] || fail "--threads 1024 under ulimit -v 600000: exited $rc, expected 4; stderr: $(head -c 300 "$work/err")"
+    contains "$work/err" "boxcyl: cannot start the threads of --threads 1024: "
+    [[ -s $work/out ]] && fail "output although nothing was answered"
+    run 0 --help
+    contains "$work/out" "4  out of resources"
+    ;;
+signals)
+    # SIGTERM / SIGINT: reading stops; every line read in full is answered and written, in input order,
+    # each with its newline; a line cut short is not answered; exit 128 + the signal, and a message.
+    mkfifo "$work/fifo" || exit 2
+    n=3000
+    bash "$(dirname "$0")/gen_queries.sh" $n 5 >"$work/in"
+    run 0 intersect "$work/in"
+    mv "$work/out" "$work/all"
+    # start ARGS...: the tool on the FIFO in the background (pid in $pid), the FIFO open on fd 3.
+    start() {
+        "$exe" "$@" <"$work/fifo" >"$work/out" 2>"$work/err" &
+        pid=$!
+        exec 3>"$work/fifo"
+    }
+    # stop SIGNAL RC: signals the tool, waits for it, checks its exit status.
+    stop() {
+        kill -s "$1" "$pid"
+        wait "$pid"
+        rc=$?
+        exec 3>&-
+        [[ $rc == "$2" ]] || fail "$1: exited $rc, expected $2; stderr: $(head -c 300 "$work/err")"
+    }
+    # wait_lines N: until the output has N lines (at most 30 s).
+    wait_lines() {
+        for _ in $(seq 1 600); do
+            [[ $(wc -l <"$work/out") -ge $1 ]] && return 0
+            sleep 0.05
+        done
+        return 1
+    }
+    # answered_prefix: the output is the answers to the first K lines, complete and in order, K as
+    # the message says.
+    answered_prefix() {
+        local k
+        k=$(sed -n 's/.*the \([0-9]*\) lines read in full are answered.*/\1/p' "$work/err")
+        [[ -n $k ]] || { fail "$1: no 'stopped by' message: $(head -c 300 "$work/err")"; return; }
+        head -n "$k" "$work/all" >"$work/want"
+        same_bytes "$work/out" "$work/want"
+    }
+    for args in "intersect" "intersect --threads 3"; do
+        # 1. Idle when the signal comes: the 40 lines sent are answered, the partial 41st is not.
+        # shellcheck disable=SC2086
+        start $args
+        head -n 40 "$work/in" >&3
+        wait_lines 40 || fail "$args: the first 40 answers did not come"
+        sed -n 41p "$work/in" | head -c 50 >&3
+        sleep 0.5
+        stop TERM 143
+        head -n 40 "$work/all" >"$work/want"
+        same_bytes "$work/out" "$work/want"
+        contains "$work/err" "boxcyl: stopped by SIGTERM: the 40 lines read in full are answered"
+        # 2. Busy when the signal comes: whatever was read in full is answered, nothing else.
+        # shellcheck disable=SC2086
+        start $args
+        cat "$work/in" >&3 &
+        feeder=$!
+        sleep 0.3
+        stop TERM 143
+        wait "$feeder" 2>/dev/null
+        answered_prefix "$args, busy"
+        # 3. SIGINT (job control on, so that the background tool does not ignore it).
+        set -m
+        # shellcheck disable=SC2086
+        start $args
+        set +m
+        head -n 7 "$work/in" >&3
+        wait_lines 7 || fail "$args: the first 7 answers did not come"
+        stop INT 130
+        head -n 7 "$work/all" >"$work/want"
+        same_bytes "$work/out" "$work/want"
+        contains "$work/err" "boxcyl: stopped by SIGINT"
+    done
+    # grid: the same; the answers to the two lines come while part of the third waits (they are
+    # handed over before a read that waits).
+    g='{"grid": {"origin": [0, 0, 0], "cell_size": [1, 1, 1], "counts": [2, 2, 2]}, "cylinder": {"center": [1, 1, 1], "axis": [0, 0, 1], "radius": 0.5, "height": 1}}'
+    start grid
+    printf '%s\n%s\n%s' "$g" "$g" "${g:0:30}" >&3
+    wait_lines 2 || fail "grid: the first 2 answers did not come"
+    sleep 0.3
+    stop TERM 143
+    printf '%s\n' '{"cells": [[0, 0, 0], [0, 0, 1], [0, 1, 0], [0, 1, 1], [1, 0, 0], [1, 0, 1], [1, 1, 0], [1, 1, 1]], "count": 8}' \
+        '{"cells": [[0, 0, 0], [0, 0, 1], [0, 1, 0], [0, 1, 1], [1, 0, 0], [1, 0, 1], [1, 1, 0], [1, 1, 1]], "count": 8}' >"$work/want"
+    same_bytes "$work/out" "$work/want"
+    run 0 --help
+    contains "$work/out" "143 for SIGTERM"
+    ;;
 nul_and_trailing_bytes)
     # A valid query followed by a NUL byte or by anything but blanks is a bad line, never answered as
     # the query before it.

@@ -3,18 +3,22 @@
 // (truncated lines, invalid UTF-8, huge lines, duplicate keys, numbers out of range).
 #include <gtest/gtest.h>
 
+#include <algorithm>     // std::equal
 #include <bit>           // std::bit_cast for bit-exact comparison
 #include <charconv>      // std::to_chars for 17-digit printing
 #include <cmath>         // std::signbit, std::sqrt
+#include <csignal>       // SIGTERM, SIGINT
 #include <cstdint>       // bit patterns
 #include <random>        // fixed-seed random doubles
 #include <sstream>       // process_stream on strings
+#include <streambuf>     // inputs cut short by a stop signal, outputs that fail
 #include <string>
 #include <system_error>  // std::errc
 #include <vector>
 
 #include <nlohmann/json.hpp>  // outputs must be valid JSON (and so valid UTF-8)
 
+#include "io.hpp"
 #include "jsonl_query.hpp"
 #include "options.hpp"
 
@@ -799,6 +803,93 @@ TEST(JsonlFrames, RotationsComputedInDoubleKeepTheChosenMethod) {
     }
     const Query aligned{AlignedBox<double>{{0, 0, 0}, {1, 1, 1}}, Cylinder<double>{{0, 0, 0}, {0, 0, 1}, 1, 1}};
     EXPECT_FALSE(needs_hull_for_frame(aligned, d.query));
+}
+
+// --- stop signals: the lines read in full are answered, in order; a line cut short is not ---
+
+// Serves `text` in pieces ending at the given offsets; after the last piece, "receives" SIGTERM and
+// ends the input, as the tool's reader does on a stop signal.
+class SignalAfter : public std::streambuf {
+public:
+    SignalAfter(std::string text, std::vector<std::size_t> cuts) : text_(std::move(text)), cuts_(std::move(cuts)) {}
+
+protected:
+    int_type underflow() override {
+        if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
+        if (next_ >= cuts_.size()) {
+            set_stop_signal_for_testing(SIGTERM);
+            return traits_type::eof();
+        }
+        char* base = text_.data();
+        setg(base + begin_, base + begin_, base + cuts_[next_]);
+        begin_ = cuts_[next_++];
+        return gptr() < egptr() ? traits_type::to_int_type(*gptr()) : underflow();
+    }
+
+private:
+    std::string text_;
+    std::vector<std::size_t> cuts_;
+    std::size_t next_ = 0, begin_ = 0;
+};
+
+TEST(JsonlStream, StopSignalAnswersTheLinesReadInFullAndNoMore) {
+    const RunOptions opt = make_run_options("inequalities", "filtered");
+    const std::string input = mixed_input(3 * stream_block_lines + 17, true);
+    std::istringstream whole(input);
+    std::ostringstream all;
+    process_stream(whole, all, opt, 1);
+    const std::vector<std::string> want = lines_of(all.str());
+    // Offsets of the line starts.
+    std::vector<std::size_t> starts{0};
+    for (std::size_t i = 0; i < input.size(); ++i)
+        if (input[i] == '\n') starts.push_back(i + 1);
+    for (const std::size_t k : {std::size_t{0}, std::size_t{1}, std::size_t{100}, stream_block_lines + 3}) {
+        for (const bool cut_mid_line : {false, true}) {
+            // Lines 1..k in full, then (maybe) half of line k + 1, then the signal.
+            std::vector<std::size_t> cuts;
+            for (std::size_t i = 1; i <= k; ++i) cuts.push_back(starts[i]);
+            if (cut_mid_line) cuts.push_back(starts[k] + (starts[k + 1] - starts[k]) / 2);
+            for (const unsigned threads : {1u, 3u}) {
+                SignalAfter buf(input, cuts);
+                std::istream in(&buf);
+                std::ostringstream out;
+                const StreamCounts c = answer_stream(in, out, opt, threads);
+                set_stop_signal_for_testing(0);
+                EXPECT_EQ(c.lines, k) << k << " lines, cut " << cut_mid_line << ", " << threads << " threads";
+                const std::vector<std::string> got = lines_of(out.str());
+                ASSERT_EQ(got.size(), k) << k << " lines, cut " << cut_mid_line << ", " << threads << " threads";
+                EXPECT_TRUE(std::equal(got.begin(), got.end(), want.begin())) << k << " lines, " << threads << " threads";
+                EXPECT_TRUE(out.str().empty() || out.str().back() == '\n');
+            }
+        }
+    }
+    // A signal already received: nothing is read.
+    set_stop_signal_for_testing(SIGINT);
+    std::istringstream in(input);
+    std::ostringstream out;
+    EXPECT_EQ(answer_stream(in, out, opt, 1).lines, 0u);
+    EXPECT_EQ(answer_stream(in, out, opt, 2).lines, 0u);
+    set_stop_signal_for_testing(0);
+    EXPECT_EQ(out.str(), "");
+}
+
+// A stream that fails to write stops the run: the rest of the input is not read.
+TEST(JsonlStream, WriteErrorStopsReading) {
+    class Failing : public std::streambuf {
+    protected:
+        int_type overflow(int_type) override { return traits_type::eof(); }
+    };
+    const RunOptions opt = make_run_options("inequalities", "filtered");
+    const std::string input = mixed_input(12 * stream_block_lines, true);
+    for (const unsigned threads : {1u, 2u}) {
+        Failing buf;
+        std::ostream out(&buf);
+        std::istringstream in(input);
+        const StreamCounts c = answer_stream(in, out, opt, threads);
+        EXPECT_TRUE(out.bad());
+        // One line (threads == 1); at most the blocks in flight and the one being filled (threads > 1).
+        EXPECT_LE(c.lines, threads == 1 ? 1 : (2 * threads + 2) * stream_block_lines) << threads << " threads";
+    }
 }
 
 }  // namespace
