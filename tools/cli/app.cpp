@@ -259,7 +259,7 @@ int run_app_unguarded(int argc, const char* const* argv, std::istream& in, std::
 
     RunOptions options = make_run_options(algorithm, arithmetic);
     options.max_line_bytes = max_line_bytes;
-#if !defined(BOXCYL_HAS_EXACT)
+#if !defined(BOXCYL_CLI_EXACT)
     if (options.query.algorithm == Algorithm::oracle) {
         err << "boxcyl: --algorithm oracle needs the exact backend (GMP); this build has none\n";
         return exit_usage;

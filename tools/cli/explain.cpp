@@ -762,7 +762,7 @@ int write_file(const std::string& name, const std::string& svg, std::ostream& er
 }  // namespace
 
 int run_explain(const ExplainCommand& cmd, std::istream& in, std::ostream& out, std::ostream& err) {
-#if !defined(BOXCYL_HAS_EXACT)
+#if !defined(BOXCYL_CLI_EXACT)
     (void)cmd, (void)in, (void)out;
     err << "boxcyl: explain needs the exact backend (GMP) for its verdict; this build has none\n";
     return exit_usage;
@@ -812,7 +812,9 @@ int run_explain(const ExplainCommand& cmd, std::istream& in, std::ostream& out, 
         return exit_bad_lines;
     }
     const Query& q = *p.query;
-    const Explanation e = std::visit([&](const auto& box) { return explain::compute(box, q.cylinder); }, q.box);
+    // The verdict is the default query's (exact), as `intersect` gives it.
+    const bool verdict = run_query(q, QueryOptions{});
+    const Explanation e = std::visit([&](const auto& box) { return explain::compute(box, q.cylinder, verdict); }, q.box);
     const std::string svg = render(e, p.id, input_lines(q));
 
     if (!cmd.output.empty()) return write_file(cmd.output, svg, err);

@@ -1,5 +1,6 @@
 // See grid.hpp. The grid and the counts are read here; everything else (JSON rules, the id, the
-// cylinder, error lines) is jsonl_query's, and the geometry is the library's (boxcyl/grid.hpp).
+// cylinder, error lines) is jsonl_query's, and the geometry is the library's (boxcyl/grid.hpp, called
+// through the compiled library).
 #include "grid.hpp"
 
 #include <algorithm>   // std::sort
@@ -20,8 +21,8 @@
 
 #include "app.hpp"  // exit codes
 #include "boxcyl/geometry/validate.hpp"
-#if defined(BOXCYL_HAS_EXACT)
-#include "boxcyl/grid.hpp"
+#if defined(BOXCYL_CLI_EXACT)
+#include "boxcyl/compiled.hpp"  // for_each_cell, from libboxcyl
 #endif
 
 namespace boxcyl::cli {
@@ -62,7 +63,7 @@ EXAMPLE
 
 using json = nlohmann::json;
 
-#if defined(BOXCYL_HAS_EXACT)
+#if defined(BOXCYL_CLI_EXACT)
 std::string read_counts(const json& g, std::array<std::int64_t, 3>& out) {
     const auto it = g.find("counts");
     if (it == g.end()) return "grid.counts: missing";
@@ -112,7 +113,7 @@ std::string format_cells(const std::string& id, const std::vector<CellIndex>& ce
 
 namespace {
 
-#if defined(BOXCYL_HAS_EXACT)
+#if defined(BOXCYL_CLI_EXACT)
 // Thrown out of the grid walk when the answer would exceed --max-cells.
 struct TooManyCells {};
 
@@ -131,7 +132,7 @@ std::vector<CellIndex> bounded_cells(const Grid& grid, const Cylinder<double>& c
 #endif
 
 LineAnswer answer_grid_line_unguarded(std::string_view text, std::size_t line_number, const GridOptions& opt) {
-#if defined(BOXCYL_HAS_EXACT)
+#if defined(BOXCYL_CLI_EXACT)
     Grid grid;
     Cylinder<double> cylinder;
     const ObjectLine o = parse_object_line(text, line_number, [&](const json& root) -> std::string {
@@ -192,7 +193,7 @@ void add_grid_command(CLI::App& app, GridCommand& cmd) {
 }
 
 int run_grid(const GridCommand& cmd, std::istream& in, std::ostream& out, std::ostream& err) {
-#if !defined(BOXCYL_HAS_EXACT)
+#if !defined(BOXCYL_CLI_EXACT)
     (void)cmd, (void)in, (void)out;
     err << "boxcyl: grid needs the exact backend (GMP); this build has none\n";
     return exit_usage;

@@ -4,7 +4,11 @@
 #include <cmath>    // std::fabs
 #include <variant>  // std::visit over the box kinds
 
-#include "boxcyl/query.hpp"
+#if defined(BOXCYL_CLI_EXACT)
+#include "boxcyl/compiled.hpp"  // libboxcyl: the queries compiled once, every algorithm and arithmetic
+#else
+#include "boxcyl/query.hpp"  // no exact backend: the templates, float and double only
+#endif
 #include "jsonl_query.hpp"
 
 namespace boxcyl::cli {
