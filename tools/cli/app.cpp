@@ -154,7 +154,8 @@ const char* const exit_status_help = R"(EXIT STATUS
   3  input/output error: reading the input or writing the output failed (message on
      standard error; the output is incomplete)
   4  out of resources: the threads of --threads could not be started, or memory ran out
-     outside any one line (message on standard error)
+     outside any one line, or another failure stopped the run (message on standard error;
+     the answers written before it stand, in input order)
   128+N  stopped by signal N: 130 for SIGINT, 143 for SIGTERM. Reading stops; every line
      read in full is answered and written, in input order (a line cut short by the signal
      is not); a second signal ends the tool at once

@@ -19,7 +19,8 @@ inline constexpr int exit_ok = 0;         // every line was a good query
 inline constexpr int exit_bad_lines = 1;  // some line was bad (it got an "error" line)
 inline constexpr int exit_usage = 2;      // unknown option or value, a file that cannot be opened
 inline constexpr int exit_io = 3;         // reading the input or writing the output failed
-inline constexpr int exit_resources = 4;  // threads could not be started, or memory ran out outside any line
+inline constexpr int exit_resources = 4;  // threads could not be started, memory ran out outside any line, or
+                                          // another failure stopped the run
 inline constexpr int exit_signal_base = 128;  // + the signal: stopped by SIGINT (130) or SIGTERM (143)
 
 // The EXIT STATUS section of the subcommands' --help.
