@@ -644,12 +644,13 @@ TEST_P(BatchKernels, CheckedBoxes) {
             }
             EXPECT_EQ(index, at) << "oriented, spoil " << k;
         }
-    // Parallelepipeds: is_valid per box.
+    // Parallelepipeds: is_valid per box (with the scalar kernel, the only one they have).
     std::vector<Parallelepiped<double>> p;
     for (const OrientedBox<double>& b : s.oriented) p.push_back({b.center, b.axes, b.extents});
     p[90].extents[1] = -1;
     try {
-        batch::intersects(s.cylinder, std::span<const Parallelepiped<double>>(p), std::span<std::uint64_t>(mask), checked);
+        batch::intersects(s.cylinder, std::span<const Parallelepiped<double>>(p), std::span<std::uint64_t>(mask),
+                          {1, batch::Kernel::compiled, true});
         ADD_FAILURE() << "parallelepipeds: no InvalidBox";
     } catch (const batch::InvalidBox& e) {
         EXPECT_EQ(e.index, 90u);
@@ -669,6 +670,55 @@ TEST_P(BatchKernels, RowsAtEveryOffset) {
         compare(s.cylinder, rows, boxes, want, rows.size(), 1, "offset " + std::to_string(offset), ca);
     }
     print("rows at offsets 0..8", ca, co);
+}
+
+// Parallelepipeds have no SIMD kernel: Stats says what ran (the header's scalar query, one lane),
+// automatic and compiled run it, and asking for AVX2 or AVX-512 throws rather than run something else,
+// whether or not this CPU has them.
+TEST(Batch, ParallelepipedsReportTheScalarKernelAndRefuseSimdOnes) {
+    const Cylinder<double> c{{0, 0, 0}, {0, 0, 1}, 1, 2};
+    const std::vector<Parallelepiped<double>> boxes{
+        {{0, 0, 0}, {{{1, 0, 0}, {1, 1, 0}, {0, 0, 1}}}, {0.5, 0.5, 0.5}},
+        {{0, 0, 5}, {{{1, 0, 0}, {0, 1, 0}, {0, 1, 1}}}, {0.5, 0.5, 0.5}},
+    };
+    const std::vector<Parallelepiped<float>> fboxes{
+        {{0, 0, 0}, {{{1, 0, 0}, {1, 1, 0}, {0, 0, 1}}}, {0.5f, 0.5f, 0.5f}},
+        {{0, 0, 5}, {{{1, 0, 0}, {0, 1, 0}, {0, 1, 1}}}, {0.5f, 0.5f, 0.5f}},
+    };
+    std::vector<std::uint64_t> mask(1);
+    std::unique_ptr<bool[]> bools(new bool[2]);
+    for (batch::Kernel k : {batch::Kernel::automatic, batch::Kernel::compiled}) {
+        mask[0] = 0;
+        const batch::Stats st =
+            batch::intersects(c, std::span<const Parallelepiped<double>>(boxes), std::span<std::uint64_t>(mask), {1, k});
+        EXPECT_EQ(mask[0], 1u) << batch::name(k);  // box 0 holds the centre; box 1 is above the top
+        EXPECT_EQ(st.kernel, batch::Kernel::compiled) << batch::name(k);
+        EXPECT_EQ(st.lanes, 1u) << batch::name(k);
+        EXPECT_EQ(st.boxes, 2u);
+        const batch::Stats sf =
+            batch::intersects(c, std::span<const Parallelepiped<float>>(fboxes), std::span<bool>(bools.get(), 2), {2, k});
+        EXPECT_TRUE(bools[0]);
+        EXPECT_FALSE(bools[1]);
+        EXPECT_EQ(sf.kernel, batch::Kernel::compiled) << batch::name(k);
+        EXPECT_EQ(sf.lanes, 1u) << batch::name(k);
+    }
+    for (batch::Kernel k : {batch::Kernel::avx2, batch::Kernel::avx512}) {
+        EXPECT_THROW(batch::intersects(c, std::span<const Parallelepiped<double>>(boxes), std::span<std::uint64_t>(mask),
+                                       {1, k}),
+                     std::invalid_argument)
+            << batch::name(k);
+        EXPECT_THROW(batch::intersects(c, std::span<const Parallelepiped<double>>(boxes), std::span<bool>(bools.get(), 2),
+                                       {1, k}),
+                     std::invalid_argument)
+            << batch::name(k);
+        EXPECT_THROW(batch::intersects(c, std::span<const Parallelepiped<float>>(fboxes), std::span<std::uint64_t>(mask),
+                                       {1, k}),
+                     std::invalid_argument)
+            << batch::name(k);
+        EXPECT_THROW(batch::intersects(c, std::span<const Parallelepiped<double>>(), std::span<std::uint64_t>(), {1, k}),
+                     std::invalid_argument)
+            << batch::name(k) << " (empty batch)";
+    }
 }
 
 TEST(Batch, MismatchedLengthsAndShortOutputsThrow) {

@@ -20,7 +20,9 @@
 //                     library's own struct, so existing arrays need no copy; the filter gathers each
 //                     vector of lanes from it.
 //   Parallelepiped<T> any axes (std::span<const Parallelepiped<T>>), T = float or double: no SIMD filter,
-//                     the scalar default query per box, over the threads (batch/parallelepiped.hpp).
+//                     the scalar default query per box, over the threads (batch/parallelepiped.hpp):
+//                     Stats::kernel is Kernel::compiled with Stats::lanes = 1, and Options::kernel
+//                     avx2 or avx512 throws std::invalid_argument (there is no such kernel for them).
 // Output: a bit mask (bit i of word i/64 is box i; the unused high bits of the last word are cleared;
 // at least (N + 63)/64 words) or one bool per box. Stats::exact_lanes counts the boxes that the filter
 // left to the scalar query.

@@ -96,7 +96,8 @@ Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<float>
                  std::span<std::uint64_t> mask, const Options& opt = {});
 Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<float>> boxes, std::span<bool> out,
                  const Options& opt = {});
-// Parallelepipeds: the scalar default query per box over the threads (no SIMD filter).
+// Parallelepipeds: the scalar default query per box over the threads (no SIMD filter): Stats::kernel is
+// Kernel::compiled, lanes 1; Options::kernel avx2 or avx512 throws std::invalid_argument.
 Stats intersects(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes,
                  std::span<std::uint64_t> mask, const Options& opt = {});
 Stats intersects(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes, std::span<bool> out,

@@ -1,21 +1,24 @@
 // See app.hpp. CLI11 parses the command line; jsonl_query does the work.
 #include "app.hpp"
 
-#include <cerrno>      // errno after a failed open
-#include <cstring>     // std::strerror
-#include <exception>   // the last-resort handler
-#include <filesystem>  // refuse directories (they "open" but read nothing)
-#include <fstream>     // input files
-#include <iostream>    // the standard streams
-#include <limits>      // option ranges
-#include <string>      // help text
-#include <vector>      // option value lists
+#include <cerrno>        // errno after a failed open
+#include <csignal>       // signal names
+#include <cstring>       // std::strerror
+#include <exception>     // the last-resort handler
+#include <filesystem>    // refuse directories (they "open" but read nothing)
+#include <iostream>      // std::cerr
+#include <limits>        // option ranges
+#include <new>           // std::bad_alloc
+#include <string>        // help text
+#include <system_error>  // threads that cannot be started
+#include <vector>        // option value lists
 
 #include <CLI/CLI.hpp>
 
 #include "boxcyl/version.hpp"
 #include "explain.hpp"
 #include "grid.hpp"
+#include "io.hpp"
 #include "jsonl_query.hpp"
 #include "options.hpp"
 
@@ -36,9 +39,12 @@ constexpr const char* help_body = R"(INPUT
                               "axes": [[x,y,z],[x,y,z],[x,y,z]], "extents": [a,b,c]}
             ("kind" is optional for the other two: "aligned" or "oriented")
   CYLINDER  {"center": [x,y,z], "axis": [x,y,z], "radius": r, "height": h}  (r, h >= 0)
-  Other keys are ignored. A number is read as the nearest double (correctly rounded), so
+  No other key is accepted: a key the format does not have makes the line bad, and the
+  message names it with the accepted key nearest to it ("cylinder.heigth: unknown key; did
+  you mean "height"?"). A number is read as the nearest double (correctly rounded), so
   values written with 17 significant digits round-trip exactly; integers are numbers too.
-  A number beyond the double range (e.g. 1e400) makes the line bad, as do duplicate keys.
+  A number beyond the double range (e.g. 1e400) makes the line bad, as do duplicate keys,
+  a NUL byte, and anything but blanks after the object.
 
 SEMANTICS
   Both solids are closed: touching counts as intersecting. The cylinder is the set of
@@ -63,11 +69,6 @@ OUTPUT
   "line 2: line is longer than N bytes ...") or a line that memory did not suffice to
   answer ("line 2: out of memory answering the line"); the tool reports it and goes on
   with the next line.
-
-EXIT STATUS
-  0  every line was a good query (also for empty input)
-  1  at least one line was bad
-  2  usage error: unknown option or value, unreadable file
 
 EXAMPLE
   boxcyl intersect examples/queries.jsonl
@@ -128,19 +129,94 @@ std::string missing_subcommand_message(CLI::App& app) {
     return "boxcyl: unknown subcommand '" + first + "'; valid subcommands: " + valid;
 }
 
-int run_on(std::istream& input, std::ostream& out, const RunOptions& options, unsigned threads) {
-    const std::size_t bad = process_stream(input, out, options, threads);
-    if (input.bad()) return exit_usage;  // a read error: the output is incomplete
-    return bad == 0 ? exit_ok : exit_bad_lines;
+const char* signal_name(int sig) {
+    if (sig == SIGINT) return "SIGINT";
+    if (sig == SIGTERM) return "SIGTERM";
+    return "a signal";
 }
+
+// The help goes to `out`: a failed write of it is an error too.
+int help_written(int code, std::ostream& out, std::ostream& err) {
+    out.flush();
+    if (out) return code;
+    err << "boxcyl: cannot write standard output: " << describe_error(stream_error(out), "write error") << "\n";
+    return exit_io;
+}
+
+int run_app_unguarded(int argc, const char* const* argv, std::istream& in, std::ostream& out, std::ostream& err);
 
 }  // namespace
 
+const char* const exit_status_help = R"(EXIT STATUS
+  0  every line was a good query (also for empty input)
+  1  at least one line was bad
+  2  usage error: unknown option or value, a file that cannot be opened
+  3  input/output error: reading the input or writing the output failed (message on
+     standard error; the output is incomplete)
+  4  out of resources: the threads of --threads could not be started, or memory ran out
+     outside any one line, or another failure stopped the run (message on standard error;
+     the answers written before it stand, in input order)
+  128+N  stopped by signal N: 130 for SIGINT, 143 for SIGTERM. Reading stops; every line
+     read in full is answered and written, in input order (a line cut short by the signal
+     is not); a second signal ends the tool at once
+)";
+
+std::string describe_error(int error, const char* fallback) { return error != 0 ? std::strerror(error) : fallback; }
+
+std::string input_name(const std::string& file) { return file == "-" ? "standard input" : "'" + file + "'"; }
+
+int end_of_run(const StreamCounts& counts, const std::istream& in, const std::string& name, std::ostream& out,
+               std::ostream& err) {
+    out.flush();
+    if (!out) {
+        err << "boxcyl: cannot write standard output: " << describe_error(stream_error(out), "write error")
+            << " (stopped after " << counts.lines << " input lines; their answers may be lost)\n";
+        return exit_io;
+    }
+    if (in.bad()) {
+        err << "boxcyl: cannot read " << name << ": " << describe_error(stream_error(in), "read error") << " (the "
+            << counts.lines << " lines before the error are answered; the rest is not)\n";
+        return exit_io;
+    }
+    if (const int sig = stop_signal(); sig != 0) {
+        err << "boxcyl: stopped by " << signal_name(sig) << ": the " << counts.lines
+            << " lines read in full are answered, in order; the rest of the input was not read\n";
+        return exit_signal_base + sig;
+    }
+    return counts.bad == 0 ? exit_ok : exit_bad_lines;
+}
+
 int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& out, std::ostream& err) {
+    try {
+        return run_app_unguarded(argc, argv, in, out, err);
+    } catch (const ThreadsUnavailable& e) {
+        out.flush();
+        err << "boxcyl: " << e.what() << " (nothing was read; try fewer threads)\n";
+        return exit_resources;
+    } catch (const std::system_error& e) {
+        out.flush();
+        err << "boxcyl: stopped: " << e.what() << " (the answers written so far stand, in input order)\n";
+        return exit_resources;
+    } catch (const std::bad_alloc&) {
+        // Lines report their own failures (memory included); this is memory outside any one line.
+        out.flush();
+        err << "boxcyl: stopped: out of memory outside any one line (the answers written so far stand, in input "
+               "order)\n";
+        return exit_resources;
+    } catch (const std::exception& e) {
+        out.flush();
+        err << "boxcyl: stopped: " << e.what() << " (the answers written so far stand, in input order)\n";
+        return exit_resources;
+    }
+}
+
+namespace {
+
+int run_app_unguarded(int argc, const char* const* argv, std::istream& in, std::ostream& out, std::ostream& err) {
     CLI::App app{"boxcyl " BOXCYL_VERSION_STRING
                  ": exact box-cylinder intersection queries (does a finite cylinder intersect a box?)",
                  "boxcyl"};
-    app.footer(options_section() + help_body);
+    app.footer(options_section() + help_body + "\n" + exit_status_help);
     app.set_version_flag("--version", "boxcyl " BOXCYL_VERSION_STRING, "Print the version and exit");
     app.require_subcommand(1);
 
@@ -150,7 +226,7 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
     unsigned threads = 1;
     CLI::App* intersect = app.add_subcommand(
         "intersect", "Answer one query per input line: does the cylinder intersect the box?");
-    intersect->footer(help_body);  // its options are listed by CLI11 above it
+    intersect->footer(std::string(help_body) + "\n" + exit_status_help);  // its options are listed by CLI11 above it
     intersect->add_option("--algorithm", algorithm,
                           describe("Algorithm (default " + std::string(default_algorithm) + "):", algorithm_choices))
         ->check(CLI::IsMember(names_of(algorithm_choices)));
@@ -176,7 +252,7 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
             return exit_usage;
         }
         const int code = app.exit(e, out, err);
-        return code == 0 ? exit_ok : exit_usage;
+        return help_written(code == 0 ? exit_ok : exit_usage, out, err);
     }
 
     if (explain.app->parsed()) return run_explain(explain, in, out, err);
@@ -184,18 +260,22 @@ int run_app(int argc, const char* const* argv, std::istream& in, std::ostream& o
 
     RunOptions options = make_run_options(algorithm, arithmetic);
     options.max_line_bytes = max_line_bytes;
-#if !defined(BOXCYL_HAS_EXACT)
+#if !defined(BOXCYL_CLI_EXACT)
     if (options.query.algorithm == Algorithm::oracle) {
         err << "boxcyl: --algorithm oracle needs the exact backend (GMP); this build has none\n";
         return exit_usage;
     }
 #endif
-    if (file == "-") return run_on(in, out, options, threads);
-
-    std::optional<std::ifstream> f = open_input(file, err);
-    if (!f) return exit_usage;
-    return run_on(*f, out, options, threads);
+    std::unique_ptr<std::istream> f;
+    if (file != "-") {
+        f = open_input(file, err);
+        if (!f) return exit_usage;
+    }
+    std::istream& input = f ? *f : in;
+    return end_of_run(answer_stream(input, out, options, threads), input, input_name(file), out, err);
 }
+
+}  // namespace
 
 void add_max_line_bytes_option(CLI::App& sub, std::size_t& value) {
     sub.add_option("--max-line-bytes", value,
@@ -204,33 +284,32 @@ void add_max_line_bytes_option(CLI::App& sub, std::size_t& value) {
         ->check(CLI::Range(std::size_t{1}, std::numeric_limits<std::size_t>::max() / 2));
 }
 
-std::optional<std::ifstream> open_input(const std::string& file, std::ostream& err) {
+std::unique_ptr<std::istream> open_input(const std::string& file, std::ostream& err) {
     std::error_code ec;
     if (std::filesystem::is_directory(file, ec)) {
         err << "boxcyl: cannot read '" << file << "': is a directory\n";
-        return std::nullopt;
+        return nullptr;
     }
-    std::ifstream f(file, std::ios::binary);
+    std::unique_ptr<InputFd> f = open_input_fd(file);
     if (!f) {
         err << "boxcyl: cannot open '" << file << "': " << std::strerror(errno) << "\n";
-        return std::nullopt;
+        return nullptr;
     }
     return f;
 }
 
 int run_app(int argc, const char* const* argv) {
-    // Unsynchronised streams buffer properly; process_stream flushes whenever input runs dry.
-    std::ios::sync_with_stdio(false);
-    std::cin.tie(nullptr);  // no flush per read: process_stream decides
-    try {
-        return run_app(argc, argv, std::cin, std::cout, std::cerr);
-    } catch (const std::exception& e) {
-        // Lines report their own failures (memory included); this is what is left, e.g. no memory
-        // for a thread. The answers written so far stand, in order.
-        std::cout.flush();
-        std::cerr << "boxcyl: stopped: " << e.what() << "\n";
-        return exit_usage;
-    }
+    guard_standard_descriptors();
+    install_stop_handlers();
+    // The tool's own streams over descriptors 0 and 1: they keep the errno of a failed read or write
+    // (app.hpp's messages say it) and a stop signal wakes the reader. The answers flush whenever input
+    // runs dry (process_stream decides).
+    InputFd in(0);
+    OutputFd out(1);
+    std::cerr.tie(&out);  // a message comes after the answers before it
+    const int code = run_app(argc, argv, in, out, std::cerr);
+    std::cerr.tie(nullptr);
+    return code;
 }
 
 }  // namespace boxcyl::cli

@@ -9,11 +9,12 @@
 #include <cmath>      // std::isfinite, std::cos, std::sin
 #include <cstdio>     // std::snprintf
 #include <cstring>    // std::strerror
-#include <fstream>    // input and output files
-#include <iostream>   // streams
-#include <iterator>   // std::istreambuf_iterator
+#include <istream>    // the input
+#include <limits>     // the double range (amount), skipping whole lines
+#include <memory>     // the input file
 #include <numbers>    // std::numbers::pi
-#include <sstream>    // reading a whole stream
+#include <ostream>    // the output
+#include <sstream>    // several_lines
 #include <string>
 #include <type_traits>  // the box kind in input_lines
 #include <variant>    // std::visit over the box kinds
@@ -21,7 +22,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include <fcntl.h>   // open (the -o file)
+#include <unistd.h>  // close
+
 #include "app.hpp"
+#include "io.hpp"
 #include "jsonl_query.hpp"
 
 namespace boxcyl::cli {
@@ -57,6 +62,14 @@ std::string num(double x, int digits = 6) {
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.*g", digits, std::fabs(x));
     return (x < 0 ? "−" : "") + std::string(buf);
+}
+
+// A distance, gap or overlap for the sentences: as num(), but one beyond the double range (computed as
+// +∞) is "more than 1.79769e+308", and one that could not be computed at all says so (never "NaN").
+std::string amount(double x) {
+    if (std::isfinite(x)) return num(x);
+    if (x != x) return "(too large to compute in double precision)";
+    return std::string(x > 0 ? "" : "−") + "more than " + num(std::numeric_limits<double>::max());
 }
 
 // The fewest digits (6 to 17) at which values that differ also print differently: a box one ulp
@@ -189,7 +202,7 @@ std::string verdict_title(const Explanation& e) {
 
 // The sentences under the title: what the picture shows, in the picture's words.
 std::vector<std::string> verdict_lines(const Explanation& e) {
-    const std::string d = num(e.distance), r = num(e.radius);
+    const std::string d = amount(e.distance), r = num(e.radius);
     switch (e.what) {
         case Case::axis_through:
             return {"The cylinder's axis passes through the blue polygon (distance 0 ≤ radius " + r + "),",
@@ -197,7 +210,7 @@ std::vector<std::string> verdict_lines(const Explanation& e) {
         case Case::overlap:
             return {"The blue polygon comes within " + d + " of the axis, inside the orange disk of radius " + r +
                         ":",
-                    "overlap " + num(-e.gap()) + " (radius − distance)."};
+                    "overlap " + amount(-e.gap()) + " (radius − distance)."};
         case Case::touching:
             return {"The blue polygon touches the orange disk: distance = radius = " + r + ".",
                     "Both solids are closed, so touching counts as intersecting."};
@@ -215,14 +228,14 @@ std::vector<std::string> verdict_lines(const Explanation& e) {
                             " (see 'along the axis'), which double precision cannot tell apart."};
             if (e.exact_intersects)
                 return {"Exact answer: they touch or overlap. This picture is drawn in double precision and shows a gap of " +
-                            num(e.gap()) + ",",
+                            amount(e.gap()) + ",",
                         "which is rounding error: the solids are closer than double precision can draw."};
             return {"Exact answer: they do not meet. This picture is drawn in double precision and shows " +
-                        std::string(e.gap() < 0 ? "an overlap of " + num(-e.gap()) : "them touching") + ",",
+                        std::string(e.gap() < 0 ? "an overlap of " + amount(-e.gap()) : "them touching") + ",",
                     "but the true gap is smaller than double precision can draw."};
         case Case::gap:
             return {"The blue polygon stays " + d + " from the axis, outside the orange disk of radius " + r + ":",
-                    "gap " + num(e.gap()) + " (distance − radius)."};
+                    "gap " + amount(e.gap()) + " (distance − radius)."};
         case Case::outside_slab: {
             const bool above = e.box_axial_min > e.half_height;
             return {"No part of the box lies between the cylinder's end planes: the whole box is " +
@@ -322,7 +335,11 @@ void main_panel(Svg& svg, const Explanation& e, const Rect& r) {
     // Screen direction from the axis towards the closest point (to the right when there is none),
     // and its perpendicular; labels go beside lines, never on them.
     double dx = 1, dy = 0;
-    if (e.distance > 0) dx = e.closest.x / e.distance, dy = e.closest.y / e.distance;
+    if (e.distance > 0) {  // the direction of `closest`, scaled first so that a distance beyond the range still has one
+        const double m = std::max(std::fabs(e.closest.x), std::fabs(e.closest.y));
+        const double ux = e.closest.x / m, uy = e.closest.y / m, len = std::hypot(ux, uy);
+        dx = ux / len, dy = uy / len;
+    }
     const double sx = dx, sy = -dy;  // screen y points down
     const double nx = -sy, ny = sx;  // perpendicular
     auto anchor = [](double x) { return std::string(x > 0.35 ? "start" : x < -0.35 ? "end" : "middle"); };
@@ -352,8 +369,8 @@ void main_panel(Svg& svg, const Explanation& e, const Rect& r) {
         if (e.distance > 0) {
             const double bx = m.x(0) + sx * rpx, by = m.y(0) + sy * rpx;
             svg.line(bx, by, cx, cy, "stroke=\"" + std::string(red) + "\" stroke-width=\"3\"");
-            const std::string what = e.gap() > 0   ? "gap " + num(e.gap())
-                                     : e.gap() < 0 ? "overlap " + num(-e.gap())
+            const std::string what = e.gap() > 0   ? "gap " + amount(e.gap())
+                                     : e.gap() < 0 ? "overlap " + amount(-e.gap())
                                                    : "gap 0";
             label(svg, (bx + cx) / 2 - 16 * nx, (by + cy) / 2 - 16 * ny + 5, what, anchor(-nx), 15, true, red, lo, hi);
         }
@@ -362,7 +379,7 @@ void main_panel(Svg& svg, const Explanation& e, const Rect& r) {
         svg.raw("<g id=\"closest\">\n");
         svg.circle(cx, cy, 5.5, "fill=\"" + std::string(red) + "\" stroke=\"#fff\" stroke-width=\"1.5\"");
         if (e.distance > 0)  // at distance 0 the point is the axis point, and the title says so
-            label(svg, cx + 12 * sx + 16 * nx, cy + 12 * sy + 16 * ny + 5, "closest point, distance " + num(e.distance),
+            label(svg, cx + 12 * sx + 16 * nx, cy + 12 * sy + 16 * ny + 5, "closest point, distance " + amount(e.distance),
                   anchor(sx), 13, false, red, lo, hi);
         svg.raw("</g>\n");
     }
@@ -634,10 +651,30 @@ std::string render(const Explanation& e, const std::string& label, const std::ve
     return svg.s;
 }
 
-std::string read_all(std::istream& in) {
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+// The whole input, when it is at most `max_bytes` long: false when it is longer (then only part of it
+// was read). A read error leaves `in` bad.
+bool read_all(std::istream& in, std::size_t max_bytes, std::string& text) {
+    text.clear();
+    std::array<char, std::size_t{64} * 1024> chunk;
+    while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0) {
+        const auto got = static_cast<std::size_t>(in.gcount());
+        if (text.size() + got > max_bytes) return false;
+        text.append(chunk.data(), got);
+    }
+    return true;
+}
+
+// Skips whole lines of `in` until `line` (from 1) is next, without keeping them; the number of lines
+// skipped (fewer when the input ends first).
+std::size_t skip_lines(std::istream& in, std::size_t line) {
+    std::size_t skipped = 0;
+    while (skipped + 1 < line && stop_signal() == 0) {
+        in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+        if (in.gcount() == 0) break;  // end of input (or a read error)
+        ++skipped;
+        if (in.eof()) break;  // a last line without newline
+    }
+    return skipped;
 }
 
 // More than one line with something on it (a JSON Lines file given without --line, most likely).
@@ -662,8 +699,10 @@ void add_explain_command(CLI::App& app, ExplainCommand& cmd) {
     cmd.app->add_option("file", cmd.file,
                         "One query (a JSON object as `intersect` reads, may span lines); '-' or none: standard input");
     cmd.app->add_option("-o,--output", cmd.output, "Write the SVG to this file (default: standard output)");
-    cmd.app->add_option("--line", cmd.line, "Take the query on line N (from 1) of a JSON Lines input")
+    cmd.app->add_option("--line", cmd.line,
+                        "Take the query on line N (from 1) of a JSON Lines input; only lines 1 to N are read")
         ->check(CLI::PositiveNumber);
+    add_max_line_bytes_option(*cmd.app, cmd.max_line_bytes);
     cmd.app->footer(
         "EXAMPLE\n"
         "  boxcyl explain --line 4 examples/queries.jsonl -o gap.svg\n"
@@ -671,50 +710,98 @@ void add_explain_command(CLI::App& app, ExplainCommand& cmd) {
         "\"radius\":1,\"height\":1}}' | boxcyl explain > picture.svg\n\n"
         "The verdict is the exact answer (as `boxcyl intersect` gives by default); the drawing is in double\n"
         "precision and says so when the two differ (inputs within rounding of touching).\n\n"
+        "With --line N only the first N lines of the input are read.\n\n"
         "EXIT STATUS\n"
         "  0  the picture was written\n"
         "  1  the query is bad (the message `intersect` would give, on standard error)\n"
-        "  2  usage error: unknown option, unreadable input, unwritable output\n");
+        "  2  usage error: unknown option, an input that cannot be opened, an output file that\n"
+        "     cannot be created\n"
+        "  3  input/output error: reading the input or writing the picture failed (message on\n"
+        "     standard error)\n"
+        "  128+N  stopped by signal N (130 SIGINT, 143 SIGTERM) before the query was read\n");
 }
 
+namespace {
+
+// What to say and return when reading the input failed or a stop signal came: 0 when neither.
+int input_failure(const std::istream& input, const std::string& name, std::ostream& err) {
+    if (input.bad()) {
+        err << "boxcyl: cannot read " << name << ": " << describe_error(stream_error(input), "read error") << "\n";
+        return exit_io;
+    }
+    if (const int sig = stop_signal(); sig != 0) {
+        err << "boxcyl: stopped by a signal before the query was read; no picture written\n";
+        return exit_signal_base + sig;
+    }
+    return 0;
+}
+
+// Writes `svg` to the file `name`, or says why not: exit_usage when it cannot be created, exit_io when
+// writing it fails.
+int write_file(const std::string& name, const std::string& svg, std::ostream& err) {
+    const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        err << "boxcyl: cannot write '" << name << "': " << std::strerror(errno) << "\n";
+        return exit_usage;
+    }
+    int error = 0;
+    {
+        OutputFd f(fd);
+        f << svg;
+        f.flush();
+        if (!f) error = f.buffer().error() != 0 ? f.buffer().error() : EIO;
+    }
+    if (::close(fd) != 0 && error == 0) error = errno;
+    if (error != 0) {
+        err << "boxcyl: cannot write '" << name << "': " << std::strerror(error) << "\n";
+        return exit_io;
+    }
+    return exit_ok;
+}
+
+}  // namespace
+
 int run_explain(const ExplainCommand& cmd, std::istream& in, std::ostream& out, std::ostream& err) {
-#if !defined(BOXCYL_HAS_EXACT)
+#if !defined(BOXCYL_CLI_EXACT)
     (void)cmd, (void)in, (void)out;
     err << "boxcyl: explain needs the exact backend (GMP) for its verdict; this build has none\n";
     return exit_usage;
 #else
-    std::string text;
-    if (cmd.file == "-") {
-        text = read_all(in);
-        if (in.bad()) {
-            err << "boxcyl: cannot read standard input\n";
-            return exit_usage;
-        }
-    } else {
-        std::optional<std::ifstream> f = open_input(cmd.file, err);
-        if (!f) return exit_usage;
-        text = read_all(*f);
+    std::unique_ptr<std::istream> file;
+    if (cmd.file != "-") {
+        file = open_input(cmd.file, err);
+        if (!file) return exit_usage;
     }
+    std::istream& input = file ? *file : in;
+    const std::string name = input_name(cmd.file);
 
-    // The query text and the line number its messages name.
-    std::string query_text = text;
+    // The query text and the line number its messages name. With --line N only the lines up to N are
+    // read: the input may go on for ever (a pipe) or be far larger than the line.
+    std::string query_text;
     std::size_t line_number = 1;
     if (cmd.line > 0) {
-        std::istringstream lines(text);
-        std::string l;
-        std::size_t n = 0;
-        bool found = false;
-        while (std::getline(lines, l))
-            if (++n == cmd.line) {
-                found = true;
-                break;
-            }
-        if (!found) {
-            err << "boxcyl: line " << cmd.line << ": no such line (the input has " << n << ")\n";
+        const std::size_t skipped = skip_lines(input, cmd.line);
+        if (const int code = input_failure(input, name, err)) return code;
+        LineRead r = LineRead::end;
+        if (skipped + 1 == cmd.line) r = read_line(input, query_text, cmd.max_line_bytes);
+        if (const int code = input_failure(input, name, err)) return code;
+        if (r == LineRead::end) {
+            err << "boxcyl: line " << cmd.line << ": no such line (the input has " << skipped << ")\n";
             return exit_bad_lines;
         }
-        query_text = l;
+        if (r != LineRead::line) {
+            err << "boxcyl: " << unread_line_message(r, cmd.line, cmd.max_line_bytes) << "\n";
+            return exit_bad_lines;
+        }
         line_number = cmd.line;
+    } else {
+        const bool whole = read_all(input, cmd.max_line_bytes, query_text);
+        if (const int code = input_failure(input, name, err)) return code;
+        if (!whole) {
+            err << "boxcyl: " << name << " is longer than " << cmd.max_line_bytes
+                << " bytes (--max-line-bytes); for a JSON Lines file choose one query with --line N\n";
+            return exit_bad_lines;
+        }
     }
 
     const ParsedLine p = parse_line(query_text, line_number);
@@ -725,24 +812,17 @@ int run_explain(const ExplainCommand& cmd, std::istream& in, std::ostream& out, 
         return exit_bad_lines;
     }
     const Query& q = *p.query;
-    const Explanation e = std::visit([&](const auto& box) { return explain::compute(box, q.cylinder); }, q.box);
+    // The verdict is the default query's (exact), as `intersect` gives it.
+    const bool verdict = run_query(q, QueryOptions{});
+    const Explanation e = std::visit([&](const auto& box) { return explain::compute(box, q.cylinder, verdict); }, q.box);
     const std::string svg = render(e, p.id, input_lines(q));
 
-    if (cmd.output.empty()) {
-        out << svg;
-        out.flush();
-        return out ? exit_ok : exit_usage;
-    }
-    std::ofstream f(cmd.output, std::ios::binary | std::ios::trunc);
-    if (!f) {
-        err << "boxcyl: cannot write '" << cmd.output << "': " << std::strerror(errno) << "\n";
-        return exit_usage;
-    }
-    f << svg;
-    f.close();
-    if (!f) {
-        err << "boxcyl: cannot write '" << cmd.output << "'\n";
-        return exit_usage;
+    if (!cmd.output.empty()) return write_file(cmd.output, svg, err);
+    out << svg;
+    out.flush();
+    if (!out) {
+        err << "boxcyl: cannot write standard output: " << describe_error(stream_error(out), "write error") << "\n";
+        return exit_io;
     }
     return exit_ok;
 #endif

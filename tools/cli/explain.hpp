@@ -9,6 +9,7 @@
 #include <vector>   // text lines
 
 #include "boxcyl/explain/explanation.hpp"
+#include "options.hpp"  // default_max_line_bytes
 
 namespace CLI {
 class App;
@@ -32,14 +33,16 @@ struct ExplainCommand {
     std::string file = "-";   // input; "-": standard input
     std::string output;       // -o: output file; empty: standard output
     std::size_t line = 0;     // --line N: take line N of a JSON Lines input; 0: the input is one query
+    std::size_t max_line_bytes = default_max_line_bytes;  // the longest line (or whole input) read
 };
 
 // Registers `explain` on the top-level app; `cmd` must outlive the parse.
 void add_explain_command(CLI::App& app, ExplainCommand& cmd);
 
-// Runs `explain` after parsing: reads the query (from `in` for "-"), writes the SVG. Exit codes as in
-// app.hpp: 0 done; 1 a bad query (the same message as `intersect` gives, on stderr); 2 usage error
-// (unreadable input, unwritable output, no exact backend).
+// Runs `explain` after parsing: reads the query (from `in` for "-"; with --line N only lines 1 to N),
+// writes the SVG. Exit codes as in app.hpp: 0 done; 1 a bad query (the same message as `intersect`
+// gives, on stderr); 2 usage error (an input that cannot be opened, an output that cannot be created,
+// no exact backend); 3 a read or write error; 128 + a stop signal that came before the query was read.
 int run_explain(const ExplainCommand& cmd, std::istream& in, std::ostream& out, std::ostream& err);
 
 }  // namespace boxcyl::cli

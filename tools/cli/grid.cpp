@@ -1,5 +1,6 @@
 // See grid.hpp. The grid and the counts are read here; everything else (JSON rules, the id, the
-// cylinder, error lines) is jsonl_query's, and the geometry is the library's (boxcyl/grid.hpp).
+// cylinder, error lines) is jsonl_query's, and the geometry is the library's (boxcyl/grid.hpp, called
+// through the compiled library).
 #include "grid.hpp"
 
 #include <algorithm>   // std::sort
@@ -7,7 +8,7 @@
 #include <cstdint>     // std::int64_t, std::uint64_t
 #include <cstring>     // std::strerror
 #include <exception>   // failures of the library call
-#include <fstream>     // input files
+#include <memory>      // the input file
 #include <istream>     // std::getline
 #include <limits>      // the int64 range
 #include <new>         // std::bad_alloc
@@ -20,8 +21,8 @@
 
 #include "app.hpp"  // exit codes
 #include "boxcyl/geometry/validate.hpp"
-#if defined(BOXCYL_HAS_EXACT)
-#include "boxcyl/grid.hpp"
+#if defined(BOXCYL_CLI_EXACT)
+#include "boxcyl/compiled.hpp"  // for_each_cell, from libboxcyl
 #endif
 
 namespace boxcyl::cli {
@@ -55,11 +56,6 @@ OUTPUT
   "line N: the answer has more than M cells ...", found without listing them all; lines
   longer than --max-line-bytes, and lines memory does not suffice for, as for intersect.
 
-EXIT STATUS
-  0  every line was a good query (also for empty input)
-  1  at least one line was bad
-  2  usage error: unknown option, unreadable file
-
 EXAMPLE
   echo '{"grid":{"origin":[0,0,0],"cell_size":[1,1,1],"counts":[4,4,4]},"cylinder":{"center":[1,2,2],"axis":[1,0,0],"radius":0,"height":1}}' | boxcyl grid
   {"cells": [[0, 1, 1], [0, 1, 2], [0, 2, 1], [0, 2, 2], [1, 1, 1], [1, 1, 2], [1, 2, 1], [1, 2, 2]], "count": 8}
@@ -67,7 +63,7 @@ EXAMPLE
 
 using json = nlohmann::json;
 
-#if defined(BOXCYL_HAS_EXACT)
+#if defined(BOXCYL_CLI_EXACT)
 std::string read_counts(const json& g, std::array<std::int64_t, 3>& out) {
     const auto it = g.find("counts");
     if (it == g.end()) return "grid.counts: missing";
@@ -88,6 +84,7 @@ std::string read_grid(const json& root, Grid& g) {
     const auto it = root.find("grid");
     if (it == root.end()) return "grid: missing";
     if (!it->is_object()) return "grid: expected an object";
+    if (auto e = check_keys_field(*it, "grid", {"origin", "cell_size", "counts"}); !e.empty()) return e;
     if (auto e = read_vec3_field(*it, "origin", "grid.origin", g.origin); !e.empty()) return e;
     if (auto e = read_vec3_field(*it, "cell_size", "grid.cell_size", g.cell_size); !e.empty()) return e;
     return read_counts(*it, g.counts);
@@ -116,7 +113,7 @@ std::string format_cells(const std::string& id, const std::vector<CellIndex>& ce
 
 namespace {
 
-#if defined(BOXCYL_HAS_EXACT)
+#if defined(BOXCYL_CLI_EXACT)
 // Thrown out of the grid walk when the answer would exceed --max-cells.
 struct TooManyCells {};
 
@@ -135,10 +132,11 @@ std::vector<CellIndex> bounded_cells(const Grid& grid, const Cylinder<double>& c
 #endif
 
 LineAnswer answer_grid_line_unguarded(std::string_view text, std::size_t line_number, const GridOptions& opt) {
-#if defined(BOXCYL_HAS_EXACT)
+#if defined(BOXCYL_CLI_EXACT)
     Grid grid;
     Cylinder<double> cylinder;
     const ObjectLine o = parse_object_line(text, line_number, [&](const json& root) -> std::string {
+        if (auto e = check_keys_field(root, "", {"id", "grid", "cylinder"}); !e.empty()) return e;
         if (auto e = read_grid(root, grid); !e.empty()) return e;
         if (auto e = read_cylinder_field(root, cylinder); !e.empty()) return e;
         if (const Validity v = validate(grid); !v.ok()) return v.message();
@@ -177,7 +175,7 @@ LineAnswer answer_grid_line(std::string_view text, std::size_t line_number, cons
     }
 }
 
-std::size_t process_grid_stream(std::istream& in, std::ostream& out, const GridOptions& opt) {
+StreamCounts process_grid_stream(std::istream& in, std::ostream& out, const GridOptions& opt) {
     return process_lines(in, out, opt.max_line_bytes,
                          [&opt](std::string_view line, std::size_t n) { return answer_grid_line(line, n, opt); });
 }
@@ -185,7 +183,7 @@ std::size_t process_grid_stream(std::istream& in, std::ostream& out, const GridO
 void add_grid_command(CLI::App& app, GridCommand& cmd) {
     cmd.app = app.add_subcommand(
         "grid", "For each input line (a grid and a cylinder), list the grid cells the cylinder intersects");
-    cmd.app->footer(grid_help);
+    cmd.app->footer(std::string(grid_help) + "\n" + exit_status_help);
     cmd.app->add_option("file", cmd.file, "JSON Lines input; '-' or none: standard input");
     add_max_line_bytes_option(*cmd.app, cmd.options.max_line_bytes);
     cmd.app->add_option("--max-cells", cmd.options.max_cells,
@@ -195,20 +193,18 @@ void add_grid_command(CLI::App& app, GridCommand& cmd) {
 }
 
 int run_grid(const GridCommand& cmd, std::istream& in, std::ostream& out, std::ostream& err) {
-#if !defined(BOXCYL_HAS_EXACT)
+#if !defined(BOXCYL_CLI_EXACT)
     (void)cmd, (void)in, (void)out;
     err << "boxcyl: grid needs the exact backend (GMP); this build has none\n";
     return exit_usage;
 #else
-    auto run_on = [&](std::istream& input) {
-        const std::size_t bad = process_grid_stream(input, out, cmd.options);
-        if (input.bad()) return exit_usage;  // a read error: the output is incomplete
-        return bad == 0 ? exit_ok : exit_bad_lines;
-    };
-    if (cmd.file == "-") return run_on(in);
-    std::optional<std::ifstream> f = open_input(cmd.file, err);
-    if (!f) return exit_usage;
-    return run_on(*f);
+    std::unique_ptr<std::istream> f;
+    if (cmd.file != "-") {
+        f = open_input(cmd.file, err);
+        if (!f) return exit_usage;
+    }
+    std::istream& input = f ? *f : in;
+    return end_of_run(process_grid_stream(input, out, cmd.options), input, input_name(cmd.file), out, err);
 #endif
 }
 

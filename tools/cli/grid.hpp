@@ -31,9 +31,10 @@ struct GridOptions {
 // than opt.max_cells cells, or memory runs out). Never throws. `line_number` counts from 1.
 LineAnswer answer_grid_line(std::string_view text, std::size_t line_number, const GridOptions& opt = {});
 
-// Reads `in` line by line, writes one output line per input line in order; returns the number of bad
-// lines. Flushes whenever no more input is buffered (as process_stream does).
-std::size_t process_grid_stream(std::istream& in, std::ostream& out, const GridOptions& opt = {});
+// Reads `in` line by line, writes one output line per input line in order; returns the counts. Flushes
+// whenever no more input is buffered, and stops early on a write error or a stop signal (as
+// process_stream does).
+StreamCounts process_grid_stream(std::istream& in, std::ostream& out, const GridOptions& opt = {});
 
 // The `grid` subcommand's command-line state.
 struct GridCommand {
@@ -46,7 +47,7 @@ struct GridCommand {
 void add_grid_command(CLI::App& app, GridCommand& cmd);
 
 // Runs `grid` after parsing. Exit codes as in app.hpp: 0 every line good, 1 some line bad, 2 usage
-// error (unreadable input, no exact backend).
+// error (unreadable input, no exact backend), 3 a read or write error, 128 + a stop signal.
 int run_grid(const GridCommand& cmd, std::istream& in, std::ostream& out, std::ostream& err);
 
 }  // namespace boxcyl::cli

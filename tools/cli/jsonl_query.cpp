@@ -9,7 +9,7 @@
 // 64 bits are converted with a (correctly rounded) cast, larger ones go through strtod.
 #include "jsonl_query.hpp"
 
-#include <algorithm>           // std::max
+#include <algorithm>           // std::max, std::min
 #include <array>               // read_line's chunk
 #include <condition_variable>  // process_stream's hand-offs between threads
 #include <cstdint>             // integer SAX events
@@ -18,6 +18,7 @@
 #include <istream>             // std::istream::getline
 #include <memory>              // blocks
 #include <new>                 // std::bad_alloc
+#include <system_error>        // threads that cannot be started
 #include <mutex>               // process_stream's shared state
 #include <ostream>             // output lines
 #include <thread>              // process_stream's workers
@@ -71,7 +72,8 @@ public:
         return true;
     }
 
-    bool parse_error(std::size_t, const std::string&, const nlohmann::json::exception& ex) {
+    bool parse_error(std::size_t position, const std::string&, const nlohmann::json::exception& ex) {
+        error_position_ = position;
         // 406 is "number overflow": strtod gave ±Inf, i.e. the literal is beyond the double range.
         if (ex.id == 406) {
             const std::string where = path();
@@ -84,6 +86,8 @@ public:
 
     const std::string& error() const { return error_; }
     const std::string& id_text() const { return id_text_; }
+    // Bytes read when the parser reported its error (the offending byte included).
+    std::size_t error_position() const { return error_position_; }
 
 private:
     struct Frame {
@@ -189,6 +193,7 @@ private:
     std::size_t used_ = 0;
     std::vector<Frame> stack_;
     std::string error_;
+    std::size_t error_position_ = 0;
     std::string id_text_;
 };
 
@@ -220,6 +225,79 @@ struct DismantleOnExit {
 // Serialises a string as a JSON string; invalid UTF-8 (possible in echoed input) becomes U+FFFD.
 std::string json_string(const std::string& s) {
     return json(s).dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+// Restricted Damerau–Levenshtein distance (insertions, deletions, substitutions, transpositions of
+// neighbours) between `a` and `b`.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> prev2(b.size() + 1), prev(b.size() + 1), cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) cur[j] = std::min(cur[j], prev2[j - 2] + 1);
+        }
+        std::swap(prev2, prev);
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+std::string ascii_lower(std::string_view s) {
+    std::string r(s);
+    for (char& c : r)
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    return r;
+}
+
+// The accepted key an unknown one most likely meant: within 1 edit (2 for keys of 5 letters or more),
+// ignoring case; else an accepted key of 3 letters or more that it contains ("half_height" holds
+// "height"); else none.
+std::string_view likely_key(std::string_view key, std::initializer_list<std::string_view> accepted) {
+    if (key.size() > 64) return {};
+    const std::string k = ascii_lower(key);
+    std::string_view best;
+    std::size_t best_distance = k.size() <= 4 ? 2 : 3;  // more than that is no match
+    for (std::string_view a : accepted)
+        if (const std::size_t d = edit_distance(k, a); d < best_distance) best = a, best_distance = d;
+    if (!best.empty()) return best;
+    for (std::string_view a : accepted)
+        if (a.size() >= 3 && k.find(a) != std::string::npos && a.size() > best.size()) best = a;
+    return best;
+}
+
+// "" when every key of the object `obj` is one of `accepted`, else "<field>.<key>: unknown key; did you
+// mean ...? (accepted: ...)" for the first unknown one (in alphabetical order). `field` is the
+// object's name ("cylinder"), empty for the line's top level.
+std::string check_keys(const json& obj, const std::string& field, std::initializer_list<std::string_view> accepted) {
+    for (const auto& member : obj.get_ref<const json::object_t&>()) {
+        const std::string& key = member.first;
+        bool known = false;
+        for (std::string_view a : accepted) known = known || key == a;
+        if (known) continue;
+        // A key is any JSON string: a long one is named by its start.
+        std::string shown = key.size() > 64 ? key.substr(0, 64) + "..." : key;
+        std::string m = (field.empty() ? shown : field + "." + shown) + ": unknown key";
+        if (const std::string_view guess = likely_key(key, accepted); !guess.empty()) {
+            m += "; did you mean \"" + std::string(guess) + "\"";
+            if (guess == "height" && ascii_lower(key).find("half") != std::string::npos)
+                m += " (the full height, end to end, not half of it)";
+            if (guess == "extents" && ascii_lower(key).find("half") != std::string::npos)
+                m += " (half the edge lengths, as you wrote)";
+            m += "?";
+        }
+        m += " (accepted: ";
+        bool first = true;
+        for (std::string_view a : accepted) {
+            m += first ? "" : ", ";
+            m += a;
+            first = false;
+        }
+        return m + ")";
+    }
+    return {};
 }
 
 // Structure checks. Each returns "" when fine, else "<field>: <reason>".
@@ -264,6 +342,7 @@ std::string read_box(const json& root, AnyBox& out) {
     if (it == root.end()) return "box: missing";
     const json& b = *it;
     if (!b.is_object()) return "box: expected an object";
+    if (auto e = check_keys(b, "box", {"kind", "min", "max", "center", "axes", "extents"}); !e.empty()) return e;
     const bool aligned = b.contains("min") || b.contains("max");
     const bool oriented = b.contains("center") || b.contains("axes") || b.contains("extents");
     if (const auto kind = b.find("kind"); kind != b.end()) {
@@ -304,6 +383,7 @@ std::string read_cylinder(const json& root, Cylinder<double>& c) {
     if (it == root.end()) return "cylinder: missing";
     const json& j = *it;
     if (!j.is_object()) return "cylinder: expected an object";
+    if (auto e = check_keys(j, "cylinder", {"center", "axis", "radius", "height"}); !e.empty()) return e;
     if (auto e = read_vec3(j, "center", "cylinder.center", c.center); !e.empty()) return e;
     if (auto e = read_vec3(j, "axis", "cylinder.axis", c.axis); !e.empty()) return e;
     if (auto e = read_number(j, "radius", "cylinder.radius", c.radius); !e.empty()) return e;
@@ -350,6 +430,11 @@ ObjectLine parse_object_line(std::string_view text, std::size_t line_number,
     DomBuilder builder(root, std::size_t{64} * 1024 + 4 * text.size());
     const DismantleOnExit dismantle_root(root);
     const bool parsed = json::sax_parse(text.begin(), text.end(), &builder);
+    // nlohmann's lexer takes a NUL byte for the end of the input: `{...}\0junk` would parse as `{...}`.
+    // A NUL byte is never valid JSON text (inside a string it must be written \u0000), so the line is
+    // bad, unless the parse failed before reaching it (then that error comes first).
+    const std::size_t nul = text.find('\0');
+    const bool nul_first = nul != std::string_view::npos && (parsed || builder.error_position() > nul);
     // The id is echoed whenever a valid one was read, even if the line fails later (a scalar enters
     // the DOM whole, so a present id is complete even in a partly parsed line).
     bool id_ok = true;
@@ -362,6 +447,11 @@ ObjectLine parse_object_line(std::string_view text, std::size_t line_number,
             else
                 id_ok = false;
         }
+    }
+    if (nul_first) {
+        r.error = where + "invalid JSON: column " + std::to_string(nul + 1) +
+                  ": a NUL byte (not allowed in JSON text; inside a string write \\u0000)";
+        return r;
     }
     if (!parsed) {
         r.error = where + builder.error();
@@ -381,6 +471,10 @@ ObjectLine parse_object_line(std::string_view text, std::size_t line_number,
 
 std::string read_cylinder_field(const json& root, Cylinder<double>& out) { return read_cylinder(root, out); }
 
+std::string check_keys_field(const json& obj, const std::string& field, std::initializer_list<std::string_view> accepted) {
+    return check_keys(obj, field, accepted);
+}
+
 std::string read_vec3_field(const json& obj, const char* key, const std::string& field, Vec3<double>& out) {
     return read_vec3(obj, key, field, out);
 }
@@ -388,6 +482,7 @@ std::string read_vec3_field(const json& obj, const char* key, const std::string&
 ParsedLine parse_line(std::string_view text, std::size_t line_number) {
     Query q;
     const ObjectLine o = parse_object_line(text, line_number, [&q](const json& root) -> std::string {
+        if (auto e = check_keys(root, "", {"id", "box", "cylinder"}); !e.empty()) return e;
         if (auto e = read_box(root, q.box); !e.empty()) return e;
         if (auto e = read_cylinder(root, q.cylinder); !e.empty()) return e;
         const Validity vb = std::visit([](const auto& b) { return validate(b); }, q.box);
@@ -430,8 +525,10 @@ std::string format_error(const std::string& id, const std::string& message) {
     return s;
 }
 
-LineRead read_line(std::istream& in, std::string& line, std::size_t max_bytes, std::ostream* flush_if_long) {
+LineRead read_line(std::istream& in, std::string& line, std::size_t max_bytes, std::ostream* flush_if_long,
+                   bool* ended_by_newline) {
     line.clear();
+    if (ended_by_newline) *ended_by_newline = false;
     // istream::getline into a fixed buffer, chunk by chunk: the bytes beyond max_bytes are read and
     // dropped, never kept (std::getline would grow the string to the whole line).
     std::array<char, std::size_t{64} * 1024> chunk;
@@ -463,17 +560,23 @@ LineRead read_line(std::istream& in, std::string& line, std::size_t max_bytes, s
                 }
             }
         }
-        if (!full) return status;  // newline or end of input
+        if (!full) {  // newline or end of input
+            if (ended_by_newline) *ended_by_newline = newline;
+            return status;
+        }
         in.clear(in.rdstate() & ~std::ios::failbit);
     }
 }
 
-LineAnswer unread_line_answer(LineRead r, std::size_t line_number, std::size_t max_bytes) {
+std::string unread_line_message(LineRead r, std::size_t line_number, std::size_t max_bytes) {
     const std::string where = "line " + std::to_string(line_number) + ": ";
     if (r == LineRead::too_long)
-        return {format_error({}, where + "line is longer than " + std::to_string(max_bytes) + " bytes (--max-line-bytes)"),
-                false};
-    return {format_error({}, where + "out of memory reading the line"), false};
+        return where + "line is longer than " + std::to_string(max_bytes) + " bytes (--max-line-bytes)";
+    return where + "out of memory reading the line";
+}
+
+LineAnswer unread_line_answer(LineRead r, std::size_t line_number, std::size_t max_bytes) {
+    return {format_error({}, unread_line_message(r, line_number, max_bytes)), false};
 }
 
 namespace {
@@ -507,7 +610,7 @@ LineAnswer answer_line(std::string_view text, std::size_t line_number, const Run
 
 namespace {
 
-std::size_t process_stream_serial(std::istream& in, std::ostream& out, const RunOptions& opt) {
+StreamCounts process_stream_serial(std::istream& in, std::ostream& out, const RunOptions& opt) {
     return process_lines(in, out, opt.max_line_bytes,
                          [&opt](std::string_view line, std::size_t n) { return answer_line(line, n, opt); });
 }
@@ -533,7 +636,7 @@ struct Block {
 // This thread reads and cuts the input into blocks; `threads` workers answer blocks in any order; one
 // writer thread writes the answered blocks strictly in input order. Reading, answering and writing
 // overlap, and at most 2 * threads blocks exist between reader and writer (memory bound).
-std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads) {
+StreamCounts process_stream_parallel(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads) {
     const std::size_t max_in_flight = 2 * std::size_t{threads};
     std::mutex m;
     std::condition_variable work_ready;  // workers: a block in `todo`, or the end
@@ -543,6 +646,7 @@ std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const R
     std::deque<Block*> todo;                       // not yet taken by a worker
     bool end_of_input = false;
     std::exception_ptr failure;
+    bool write_failed = false;  // `out` went bad: the reader stops, the writer writes no more
     std::size_t bad = 0;  // the writer's
 
     auto worker = [&] {
@@ -591,6 +695,7 @@ std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const R
                     lk.unlock();
                     out.flush();
                     lk.lock();
+                    if (!out) write_failed = true;
                     front_done.wait(lk, ready);
                 }
                 if (in_flight.empty()) return;
@@ -599,17 +704,21 @@ std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const R
                 if (b->failure && !failure) failure = b->failure;
             }
             space.notify_one();
-            if (failure) continue;  // written so far: a prefix of the output; the caller rethrows
+            if (failure || write_failed) continue;  // written so far: a prefix of the output
             out.write(b->out.data(), static_cast<std::streamsize>(b->out.size()));
             bad += b->bad;
+            if (!out) {
+                std::lock_guard lk(m);
+                write_failed = true;
+            }
         }
     };
 
     // Hands `b` to the workers once there is room; false when the run must stop.
     const auto dispatch = [&](std::unique_ptr<Block>& b) {
         std::unique_lock lk(m);
-        space.wait(lk, [&] { return in_flight.size() < max_in_flight || failure; });
-        if (failure) return false;
+        space.wait(lk, [&] { return in_flight.size() < max_in_flight || failure || write_failed; });
+        if (failure || write_failed) return false;
         todo.push_back(b.get());
         in_flight.push_back(std::move(b));
         b = std::make_unique<Block>();
@@ -633,19 +742,40 @@ std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const R
         if (writing.joinable()) writing.join();
         in.tie(tied);
     };
+    std::size_t line_number = 0;
     try {
-        pool.reserve(threads);
-        for (unsigned i = 0; i < threads; ++i) pool.emplace_back(worker);
-        writing = std::thread(writer);
+        try {
+            pool.reserve(threads);
+            for (unsigned i = 0; i < threads; ++i) pool.emplace_back(worker);
+            writing = std::thread(writer);
+        } catch (const std::system_error& e) {
+            throw ThreadsUnavailable("cannot start the threads of --threads " + std::to_string(threads) + ": " +
+                                     e.what());
+        }
         auto block = std::make_unique<Block>();
-        std::size_t line_number = 0;
         std::string line;
+        // A read that waits in the middle of a line hands over the lines before it first.
+        std::exception_ptr hook_failure;
+        const BeforeWait hand_over(in, [&] {
+            try {
+                if (!block->lines.empty()) dispatch(block);
+            } catch (...) {
+                hook_failure = std::current_exception();
+            }
+        });
         for (;;) {
             // Hand over a partial block before a read could block: an interactive caller waits for it.
             if (!block->lines.empty() && (in.rdbuf() == nullptr || in.rdbuf()->in_avail() <= 0) && !dispatch(block))
                 break;
-            const LineRead r = read_line(in, line, opt.max_line_bytes);
-            if (r == LineRead::end) {
+            // A stop signal: the lines read in full are answered (the partial block too), no more are read.
+            if (stop_signal() != 0) {
+                if (!block->lines.empty()) dispatch(block);
+                break;
+            }
+            bool newline = false;
+            const LineRead r = read_line(in, line, opt.max_line_bytes, nullptr, &newline);
+            if (hook_failure) std::rethrow_exception(hook_failure);
+            if (r == LineRead::end || (!newline && stop_signal() != 0)) {
                 if (!block->lines.empty()) dispatch(block);
                 break;
             }
@@ -669,12 +799,12 @@ std::size_t process_stream_parallel(std::istream& in, std::ostream& out, const R
     finish();
     out.flush();
     if (failure) std::rethrow_exception(failure);
-    return bad;
+    return {line_number, bad};
 }
 
 }  // namespace
 
-std::size_t process_stream(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads) {
+StreamCounts answer_stream(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads) {
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
     return threads == 1 ? process_stream_serial(in, out, opt) : process_stream_parallel(in, out, opt, threads);
 }

@@ -6,9 +6,11 @@
 
 #include <cstddef>      // std::size_t
 #include <functional>   // parse_object_line's field reader
+#include <initializer_list>  // accepted keys
 #include <istream>      // std::istream (process_lines)
 #include <ostream>      // std::ostream
 #include <optional>     // a line may not yield a query
+#include <stdexcept>    // ThreadsUnavailable
 #include <string>       // JSON text, messages
 #include <string_view>  // input lines
 #include <variant>      // aligned or oriented box, or parallelepiped
@@ -19,6 +21,7 @@
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
 #include "boxcyl/geometry/validate.hpp"
+#include "io.hpp"  // stop_signal
 #include "options.hpp"
 
 namespace boxcyl::cli {
@@ -56,13 +59,22 @@ ObjectLine parse_object_line(std::string_view text, std::size_t line_number,
 // the structure only; validate() the result.
 std::string read_cylinder_field(const nlohmann::json& root, Cylinder<double>& out);  // root["cylinder"]
 std::string read_vec3_field(const nlohmann::json& obj, const char* key, const std::string& field, Vec3<double>& out);
+// Every key of the object `obj` must be one of `accepted`: "" or "<field>.<key>: unknown key; did you
+// mean "<nearest>"? (accepted: ...)". `field` names the object ("" for the top level).
+std::string check_keys_field(const nlohmann::json& obj, const std::string& field,
+                             std::initializer_list<std::string_view> accepted);
 
 // A query that is valid in double may not survive rounding to float (overflow to ±Inf, an axis that
 // underflows to zero, ...). When `opt.rounds_to_float`, says which field breaks; otherwise ok().
 Validity check_arithmetic(const Query& q, const RunOptions& opt);
 
-// The one place the tool asks the library (boxcyl::intersects from boxcyl/query.hpp).
+// The one place the tool asks the library (boxcyl::intersects). In float or double arithmetic the
+// linear-inequalities and LCP methods take a box's axes as an orthonormal frame; a box whose axes are
+// further from orthonormal than that arithmetic's rounding (needs_hull_for_frame: |Ai·Aj − δij| above
+// 2^-49 in double, 2^-20 in float) is answered by the convex-hull method instead, in the same
+// arithmetic, for the parallelepiped its axes span exactly as given.
 bool run_query(const Query& q, const QueryOptions& opt);
+bool needs_hull_for_frame(const Query& q, const QueryOptions& opt);
 
 // Output lines, without the newline. `id` is JSON text or empty (no "id" key).
 std::string format_answer(const std::string& id, bool intersect);
@@ -92,47 +104,72 @@ enum class LineRead {
 
 // Reads one line of `in` into `line` (as std::getline does, a last line without newline included),
 // keeping at most `max_bytes` bytes of it. When the line reaches risky_line_bytes and `flush_if_long`
-// is set, flushes that stream first.
-LineRead read_line(std::istream& in, std::string& line, std::size_t max_bytes, std::ostream* flush_if_long = nullptr);
+// is set, flushes that stream first. `newline` (if given) says whether the line ended with its newline.
+LineRead read_line(std::istream& in, std::string& line, std::size_t max_bytes, std::ostream* flush_if_long = nullptr,
+                   bool* newline = nullptr);
 
-// The error line for a line that read_line could not keep (too_long or no_memory).
+// The error line for a line that read_line could not keep (too_long or no_memory), and its message.
 LineAnswer unread_line_answer(LineRead r, std::size_t line_number, std::size_t max_bytes);
+std::string unread_line_message(LineRead r, std::size_t line_number, std::size_t max_bytes);
+
+// What a run over a stream did: the input lines it answered (each with one output line) and how many
+// of them were bad.
+struct StreamCounts {
+    std::size_t lines = 0;
+    std::size_t bad = 0;
+};
 
 // The serial line loop shared by the subcommands: answer(line, line_number) → LineAnswer for each
 // input line, in order (lines longer than max_line_bytes get an error line instead); flushes `out`
 // before a read could block, so that a caller feeding lines one by one sees each answer, and before a
 // long line. `answer` must not throw (answer_line reports a resource error as the line's error).
-// Returns the number of bad lines.
+// Stops early, with every line read so far answered, when writing `out` fails (out.bad()) or a stop
+// signal arrives (stop_signal(); then a last line without its newline was cut short and is not
+// answered). Reading stops at a read error too (in.bad()).
 template <class Answer>
-std::size_t process_lines(std::istream& in, std::ostream& out, std::size_t max_line_bytes, Answer&& answer) {
-    std::size_t line_number = 0;
-    std::size_t bad = 0;
+StreamCounts process_lines(std::istream& in, std::ostream& out, std::size_t max_line_bytes, Answer&& answer) {
+    StreamCounts counts;
     std::string line;
-    for (;;) {
+    // Also before a read waits in the middle of a line (the answers before it are complete).
+    const BeforeWait flush_before_wait(in, [&out] { out.flush(); });
+    while (out && stop_signal() == 0) {
         if (in.rdbuf() == nullptr || in.rdbuf()->in_avail() <= 0) out.flush();
-        const LineRead r = read_line(in, line, max_line_bytes, &out);
-        if (r == LineRead::end) break;
-        ++line_number;
+        if (!out) break;
+        bool newline = false;
+        const LineRead r = read_line(in, line, max_line_bytes, &out, &newline);
+        if (r == LineRead::end || (!newline && stop_signal() != 0)) break;
+        const std::size_t line_number = ++counts.lines;
         const LineAnswer a = r == LineRead::line ? answer(std::string_view(line), line_number)
                                                  : unread_line_answer(r, line_number, max_line_bytes);
         out << a.text << '\n';
-        if (!a.good) ++bad;
+        if (!a.good) ++counts.bad;
         if (line.capacity() > risky_line_bytes) std::string().swap(line);  // do not keep a long line's memory
     }
     out.flush();
-    return bad;
+    return counts;
 }
 
-// Reads `in` line by line, writes one output line per input line in input order. Returns the number
-// of bad lines. Flushes `out` whenever no more input is buffered (threads == 1) or no further answer
+// Thrown by process_stream when the threads of threads > 1 cannot be started (std::system_error from
+// std::thread): nothing has been read or written then.
+struct ThreadsUnavailable : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Reads `in` line by line, writes one output line per input line in input order. Returns the counts
+// (process_stream: the number of bad lines). Flushes `out` whenever no more input is buffered (threads == 1) or no further answer
 // is ready (threads > 1), so that the tool also works as an interactive filter.
 // threads == 1: one line at a time, memory bounded by opt.max_line_bytes. threads > 1: that many
 // workers answer blocks of up to stream_block_lines lines (or stream_block_bytes bytes) while this
 // thread reads; at most 2 * threads blocks are in flight, so memory stays bounded too, and the
 // output is byte for byte the single-threaded one. A line of risky_line_bytes or more starts a block
 // of its own. threads == 0: std::thread::hardware_concurrency().
+// As process_lines, it stops early when writing fails or a stop signal arrives: every line read in full
+// by then is answered and written, in input order. Throws ThreadsUnavailable (see above).
 inline constexpr std::size_t stream_block_lines = 4096;
 inline constexpr std::size_t stream_block_bytes = std::size_t{1} << 20;
-std::size_t process_stream(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads = 1);
+StreamCounts answer_stream(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads = 1);
+inline std::size_t process_stream(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads = 1) {
+    return answer_stream(in, out, opt, threads).bad;
+}
 
 }  // namespace boxcyl::cli

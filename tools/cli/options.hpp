@@ -27,24 +27,30 @@ struct ArithmeticChoice {
 
 inline constexpr std::array<AlgorithmChoice, 4> algorithm_choices{{
     {"inequalities", Algorithm::inequalities, true,
-     "section 4 linear inequalities (default)"},
+     "the linear-inequalities method (default)"},
     {"hull", Algorithm::hull, true,
-     "section 3 clip, project, convex hull; exact with --arithmetic exact (any box)"},
+     "the convex-hull method (clip, project, hull); takes any parallelepiped; exact with --arithmetic exact"},
     {"lcp", Algorithm::lcp, true,
-     "section 2 convex QP solved as an LCP (Lemke); a floating-point failure is answered exactly"},
+     "the LCP method (convex quadratic programming solved as an LCP by Lemke's method); a "
+     "floating-point failure is answered exactly"},
     {"oracle", Algorithm::oracle, false,
-     "the exact reference; slow; exact for the inputs as given; ignores --arithmetic"},
+     "the exact oracle, the reference; slow; exact for the inputs as given; ignores --arithmetic"},
 }};
 
 inline constexpr std::array<ArithmeticChoice, 4> arithmetic_choices{{
     {"filtered", Arithmetic::filtered,
      "the exact answer (default): a certified double-interval filter decides most queries, exact "
      "arithmetic the rest; with hull and lcp it means exact"},
-    {"float", Arithmetic::float32, "32-bit floats: inputs are rounded to float first"},
-    {"double", Arithmetic::float64, "plain 64-bit doubles, unfiltered (may misjudge inputs within a tiny gap of touching)"},
+    {"float", Arithmetic::float32,
+     "32-bit floats: inputs are rounded to float first; otherwise as double (axes beyond 2^-20 of "
+     "orthonormal: the convex-hull method)"},
+    {"double", Arithmetic::float64,
+     "plain 64-bit doubles, unfiltered (may misjudge inputs within a tiny gap of touching); a box whose "
+     "axes are further than 2^-49 from orthonormal (|Ai.Aj - delta_ij|) is answered by the convex-hull "
+     "method, for the parallelepiped its axes span, whatever --algorithm says"},
     {"exact", Arithmetic::exact,
-     "rationals and a + b*sqrt(d): exact for the inputs as given; sections 2 and 4 refuse oriented "
-     "boxes whose axes are not exactly orthonormal (use hull or oracle)"},
+     "rationals and a + b*sqrt(d): exact for the inputs as given; the inequalities and lcp methods "
+     "refuse oriented boxes whose axes are not exactly orthonormal (use hull or oracle)"},
 }};
 
 inline constexpr std::string_view default_algorithm = "inequalities";

@@ -2,9 +2,12 @@
 //
 // No SIMD filter: each box is answered by the scalar default query (filtered.hpp, its
 // own certified stages and exact fallback), in contiguous 64-box blocks over the threads of
-// Options::threads (batch/split.hpp). So Options::kernel has no effect, Stats::kernel is
-// Kernel::compiled with Stats::lanes = 1, and Stats::exact_lanes counts the boxes that reached the
-// exact stage (as filtered::Result::exact_used). The answers are those of boxcyl::intersects(box, cyl).
+// Options::threads (batch/split.hpp). That is the header's own code, one box at a time: Stats::kernel
+// is Kernel::compiled with Stats::lanes = 1, for Options::kernel automatic or compiled. There is no
+// AVX2 or AVX-512 kernel for parallelepipeds: asking for one throws std::invalid_argument, as asking
+// for a kernel that is not available does, rather than run something else. Stats::exact_lanes counts
+// the boxes that reached the exact stage (as filtered::Result::exact_used). The answers are those of
+// boxcyl::intersects(box, cyl).
 #pragma once
 
 #if !defined(BOXCYL_HAS_EXACT)
@@ -15,7 +18,8 @@
 #include <cstddef>    // std::size_t
 #include <cstdint>    // std::uint64_t
 #include <span>       // inputs and outputs
-#include <stdexcept>  // std::invalid_argument for short outputs
+#include <stdexcept>  // std::invalid_argument for short outputs and SIMD kernels
+#include <string>     // its message
 #include <vector>     // per-thread counts
 
 #include "boxcyl/batch/split.hpp"
@@ -35,6 +39,10 @@ Parallelepiped<double> widened(const Parallelepiped<T>& b) {
 // emit(block, bits, count) for each 64-box block.
 template <class T, class Emit>
 Stats run(const Cylinder<double>& cyl, std::span<const Parallelepiped<T>> boxes, const Options& opt, Emit&& emit) {
+    if (opt.kernel != Kernel::automatic && opt.kernel != Kernel::compiled)
+        throw std::invalid_argument(std::string("boxcyl::batch::intersects: kernel '") + name(opt.kernel) +
+                                    "' does not exist for parallelepipeds: they are answered one at a time by the "
+                                    "scalar query (Kernel::compiled, or Kernel::automatic)");
     const std::size_t n = boxes.size(), blocks = (n + 63) / 64;
     const unsigned threads = split::thread_count(opt.threads, n);
     std::vector<std::size_t> exact(threads, 0);

@@ -27,7 +27,8 @@ struct AlignedBoxes {
 //              doubles with the default x86-64 flags: it runs on any x86-64).
 //   avx2       4 doubles (AVX2 + FMA), from boxcyl::batch_dispatch.
 //   avx512     8 doubles (AVX-512 F/DQ/VL/BW), from boxcyl::batch_dispatch.
-// Asking for avx2 or avx512 where it is not available throws std::invalid_argument (see available()).
+// Asking for avx2 or avx512 where it is not available throws std::invalid_argument (see available()),
+// and so does asking for them with parallelepipeds, which have no SIMD kernel (batch/parallelepiped.hpp).
 enum class Kernel { automatic, compiled, avx2, avx512 };
 
 constexpr const char* name(Kernel k) {

@@ -73,7 +73,8 @@ struct Explanation {
     bool drawable = true;  // false: a projected coordinate overflowed; nothing but the verdict is shown
 
     Point2 closest;       // the polygon point nearest to the origin (the axis); origin when inside
-    double distance = 0;  // |closest|: distance from the axis to box ∩ slab, in the plane ⊥ u
+    double distance = 0;  // |closest|: distance from the axis to box ∩ slab, in the plane ⊥ u (+∞ when it
+                          // exceeds the double range)
 
     bool exact_intersects = false;    // the verdict (exact)
     bool picture_intersects = false;  // what the double picture alone would say: !slab_empty && d ≤ r
@@ -114,8 +115,10 @@ inline Point2 nearest_on_segment(const Point2& a, const Point2& b) {
     return {a.x + t * vx, a.y + t * vy};
 }
 
-// The point of the solid convex polygon (as monotone_chain returns it) nearest to the origin.
-inline Point2 nearest_to_origin(const std::vector<Point2>& poly) {
+// The point of the solid convex polygon (as monotone_chain returns it) nearest to the origin. The
+// arithmetic below takes differences and products of coordinates: for a polygon scaled to coordinates
+// of about 1 (nearest_to_origin_scaled) none overflows or underflows.
+inline Point2 nearest_to_origin_unscaled(const std::vector<Point2>& poly) {
     const std::size_t n = poly.size();
     if (n == 1) return poly[0];
     if (n >= 3) {
@@ -133,6 +136,26 @@ inline Point2 nearest_to_origin(const std::vector<Point2>& poly) {
         if (std::hypot(p.x, p.y) < std::hypot(best.x, best.y)) best = p;
     }
     return best;
+}
+
+// The nearest point and its distance from the origin, computed on the polygon scaled by a power of two
+// (exactly) so that its largest coordinate is in [0.5, 1): coordinates near the double range would
+// otherwise overflow in the differences (∞ − ∞ = NaN), subnormal ones underflow in the products. The
+// point is scaled back exactly; the distance is +∞ only when it exceeds the double range.
+struct Nearest {
+    Point2 point;
+    double distance = 0;
+};
+inline Nearest nearest_to_origin(const std::vector<Point2>& poly) {
+    double m = 0;
+    for (const Point2& p : poly) m = std::max({m, std::fabs(p.x), std::fabs(p.y)});
+    if (m == 0) return {{0, 0}, 0};
+    const int e = std::ilogb(m) + 1;
+    std::vector<Point2> scaled;
+    scaled.reserve(poly.size());
+    for (const Point2& p : poly) scaled.push_back({std::scalbn(p.x, -e), std::scalbn(p.y, -e)});
+    const Point2 q = nearest_to_origin_unscaled(scaled);
+    return {{std::scalbn(q.x, e), std::scalbn(q.y, e)}, std::scalbn(std::hypot(q.x, q.y), e)};
 }
 
 inline Case classify(const Explanation& e) {
@@ -205,8 +228,9 @@ Explanation compute(const Box& box, const Cylinder<double>& cyl, bool exact_inte
 
     e.slab_empty = e.drawable && e.polygon.empty();
     if (!e.polygon.empty()) {
-        e.closest = detail::nearest_to_origin(e.polygon);
-        e.distance = std::hypot(e.closest.x, e.closest.y);
+        const detail::Nearest n = detail::nearest_to_origin(e.polygon);
+        e.closest = n.point;
+        e.distance = n.distance;
     }
     e.picture_intersects = e.drawable && !e.slab_empty && e.distance <= e.radius;
     e.exact_intersects = exact_intersects;

@@ -246,8 +246,9 @@ threads)
     run 2 intersect --threads many "$work/good"
     ;;
 hostile_bytes)
-    # Raw bytes through the executable: invalid UTF-8, NUL, CR-only line, a 10 MB line, a truncated
-    # last line. One output line each, all valid UTF-8, the good lines answered, exit 1.
+    # Raw bytes through the executable: invalid UTF-8, NUL, CR-only line, a 10 MB line (of blanks
+    # inside a good query), a truncated last line. One output line each, all valid UTF-8, the good
+    # lines answered, exit 1.
     good='{"id": 1, "box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [2, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}}'
     {
         printf '%s\n' "$good"
@@ -256,7 +257,7 @@ hostile_bytes)
         printf '{"id": 2\000, "box": 1}\n'
         printf '\r\r\n'
         head -c 10485760 /dev/zero | tr '\0' '['; printf '\n'
-        printf '{"id": 3, "pad": "'; head -c 10485760 /dev/zero | tr '\0' 'x'; printf '"%s\n' "${good#\{\"id\": 1}"
+        printf '{"id": 3,'; head -c 10485760 /dev/zero | tr '\0' ' '; printf '%s\n' "${good#\{\"id\": 1,}"
         printf '%s' "${good:0:60}"
     } >"$work/in"
     run 1 intersect "$work/in"
@@ -320,6 +321,12 @@ help_version)
     for phrase in "--algorithm" "--arithmetic" "--threads" "--max-line-bytes" "inequalities" "oracle" "EXIT STATUS" "parallelepiped"; do
         contains "$work/out" "$phrase"
     done
+    # The algorithms are named by their methods, as the --algorithm values are, not by section numbers.
+    for phrase in "inequalities: the linear-inequalities method" "hull: the convex-hull method" \
+        "lcp: the LCP method (convex quadratic programming" "oracle: the exact oracle"; do
+        contains "$work/out" "$phrase"
+    done
+    grep -qi "section [0-9]" "$work/out" && fail "intersect --help names a section number"
     ;;
 ids)
     good='"box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 1, "height": 1}'
@@ -550,11 +557,12 @@ memory_limit)
         check_lines "256 MiB line, --threads $t" '{"error": "line 2: line is longer than 16777216 bytes (--max-line-bytes)"}'
     done
     # The same line allowed by --max-line-bytes: read, then its parse (which copies the string twice)
-    # runs out of memory or, where it fits, finds no box; an error line in place either way.
+    # runs out of memory or, where it fits, finds a key the format does not have; an error line in
+    # place either way.
     for t in 1 2; do
         run_limited 1 intersect --threads "$t" --max-line-bytes 2000000000
         check_lines "256 MiB line allowed, --threads $t" \
-            '{\("id": 2, \)\?"error": "line 2: \(out of memory \(reading\|answering\) the line\|box: missing\)"}'
+            '{\("id": 2, \)\?"error": "line 2: \(out of memory \(reading\|answering\) the line\|pad: unknown key (accepted: id, box, cylinder)\)"}'
     done
     # 96 MiB of small values ("[],"): the parse would need ~1 GiB; refused by the parse budget
     # (4 bytes per byte of the line) or by memory running out, the other lines answered either way.
@@ -602,6 +610,254 @@ grid_max_cells)
     contains "$work/out" "--max-cells"
     contains "$work/out" "--max-line-bytes"
     run 2 grid --max-cells -1 "$work/in"
+    ;;
+write_errors)
+    # A write error is reported and exits 3, never 0 with the answers lost: a full device, and a
+    # closed standard output (the tool keeps descriptor 1 taken, so no file it opens lands there).
+    g='{"grid": {"origin": [0, 0, 0], "cell_size": [1, 1, 1], "counts": [2, 2, 2]}, "cylinder": {"center": [1, 1, 1], "axis": [0, 0, 1], "radius": 0.5, "height": 1}}'
+    printf '%s\n' "$g" "$g" >"$work/grid.jsonl"
+    # expect_write_error WHAT: rc 3 and a message naming the write failure.
+    expect_write_error() {
+        [[ $rc == 3 ]] || fail "$1: exited $rc, expected 3; stderr: $(head -c 300 "$work/err")"
+        grep -q "^boxcyl: cannot write standard output: " "$work/err" || fail "$1: no message: $(head -c 300 "$work/err")"
+    }
+    if [[ -w /dev/full ]]; then
+        for args in "intersect" "intersect --threads 2" "intersect --threads 3 --algorithm oracle"; do
+            # shellcheck disable=SC2086
+            "$exe" $args "$examples/queries.jsonl" >/dev/full 2>"$work/err"
+            rc=$?
+            expect_write_error "$args >/dev/full"
+            contains "$work/err" "No space left on device"
+        done
+        "$exe" grid "$work/grid.jsonl" >/dev/full 2>"$work/err"
+        rc=$?
+        expect_write_error "grid >/dev/full"
+        "$exe" intersect <"$examples/queries.jsonl" >/dev/full 2>"$work/err"
+        rc=$?
+        expect_write_error "intersect (stdin) >/dev/full"
+        "$exe" --help >/dev/full 2>"$work/err"
+        rc=$?
+        expect_write_error "--help >/dev/full"
+        # A large output fails in mid-run: the tool stops reading (it does not answer the rest in vain).
+        bash "$(dirname "$0")/gen_queries.sh" 50000 3 >"$work/big"
+        "$exe" intersect "$work/big" >/dev/full 2>"$work/err"
+        rc=$?
+        expect_write_error "50000 lines >/dev/full"
+        contains "$work/err" "stopped after"
+    fi
+    for args in "intersect" "intersect --threads 2"; do
+        # shellcheck disable=SC2086
+        "$exe" $args "$examples/queries.jsonl" >&- 2>"$work/err"
+        rc=$?
+        expect_write_error "$args >&-"
+    done
+    "$exe" grid "$work/grid.jsonl" >&- 2>"$work/err"
+    rc=$?
+    expect_write_error "grid >&-"
+    ;;
+read_errors)
+    # A read error is reported and exits 3 (reading a directory given as standard input: EISDIR).
+    for args in "intersect" "intersect --threads 2" "grid"; do
+        # shellcheck disable=SC2086
+        "$exe" $args <"$work" >"$work/out" 2>"$work/err"
+        rc=$?
+        [[ $rc == 3 ]] || fail "$args <dir: exited $rc, expected 3"
+        contains "$work/err" "boxcyl: cannot read standard input: Is a directory"
+    done
+    ;;
+threads_unavailable)
+    # Threads that cannot be started (here: their stacks do not fit an address-space limit) are not a
+    # usage error: a message and exit 4, nothing read. An AddressSanitizer build cannot start under an
+    # address-space limit (its shadow memory): skipped there.
+    if nm "$exe" 2>/dev/null | grep -q __asan_init; then
+        echo "threads_unavailable: skipped (AddressSanitizer build)"
+        exit 0
+    fi
+    bash -c 'ulimit -v 600000 || exit 97; exec "$@"' limited "$exe" intersect --threads 1024 "$examples/queries.jsonl" \
+        >"$work/out" 2>"$work/err"
+    rc=$?
+    [[ $rc == 4 ]] || fail "--threads 1024 under ulimit -v 600000: exited $rc, expected 4; stderr: $(head -c 300 "$work/err")"
+    contains "$work/err" "boxcyl: cannot start the threads of --threads 1024: "
+    [[ -s $work/out ]] && fail "output although nothing was answered"
+    run 0 --help
+    contains "$work/out" "4  out of resources"
+    ;;
+signals)
+    # SIGTERM / SIGINT: reading stops; every line read in full is answered and written, in input order,
+    # each with its newline; a line cut short is not answered; exit 128 + the signal, and a message.
+    mkfifo "$work/fifo" || exit 2
+    n=3000
+    bash "$(dirname "$0")/gen_queries.sh" $n 5 >"$work/in"
+    run 0 intersect "$work/in"
+    mv "$work/out" "$work/all"
+    # start ARGS...: the tool on the FIFO in the background (pid in $pid), the FIFO open on fd 3.
+    start() {
+        "$exe" "$@" <"$work/fifo" >"$work/out" 2>"$work/err" &
+        pid=$!
+        exec 3>"$work/fifo"
+    }
+    # stop SIGNAL RC: signals the tool, waits for it, checks its exit status.
+    stop() {
+        kill -s "$1" "$pid"
+        wait "$pid"
+        rc=$?
+        exec 3>&-
+        [[ $rc == "$2" ]] || fail "$1: exited $rc, expected $2; stderr: $(head -c 300 "$work/err")"
+    }
+    # wait_lines N: until the output has N lines (at most 30 s).
+    wait_lines() {
+        for _ in $(seq 1 600); do
+            [[ $(wc -l <"$work/out") -ge $1 ]] && return 0
+            sleep 0.05
+        done
+        return 1
+    }
+    # answered_prefix: the output is the answers to the first K lines, complete and in order, K as
+    # the message says.
+    answered_prefix() {
+        local k
+        k=$(sed -n 's/.*the \([0-9]*\) lines read in full are answered.*/\1/p' "$work/err")
+        [[ -n $k ]] || { fail "$1: no 'stopped by' message: $(head -c 300 "$work/err")"; return; }
+        head -n "$k" "$work/all" >"$work/want"
+        same_bytes "$work/out" "$work/want"
+    }
+    for args in "intersect" "intersect --threads 3"; do
+        # 1. Idle when the signal comes: the 40 lines sent are answered, the partial 41st is not.
+        # shellcheck disable=SC2086
+        start $args
+        head -n 40 "$work/in" >&3
+        wait_lines 40 || fail "$args: the first 40 answers did not come"
+        sed -n 41p "$work/in" | head -c 50 >&3
+        sleep 0.5
+        stop TERM 143
+        head -n 40 "$work/all" >"$work/want"
+        same_bytes "$work/out" "$work/want"
+        contains "$work/err" "boxcyl: stopped by SIGTERM: the 40 lines read in full are answered"
+        # 2. Busy when the signal comes: whatever was read in full is answered, nothing else.
+        # shellcheck disable=SC2086
+        start $args
+        cat "$work/in" >&3 &
+        feeder=$!
+        sleep 0.3
+        stop TERM 143
+        wait "$feeder" 2>/dev/null
+        answered_prefix "$args, busy"
+        # 3. SIGINT (job control on, so that the background tool does not ignore it).
+        set -m
+        # shellcheck disable=SC2086
+        start $args
+        set +m
+        head -n 7 "$work/in" >&3
+        wait_lines 7 || fail "$args: the first 7 answers did not come"
+        stop INT 130
+        head -n 7 "$work/all" >"$work/want"
+        same_bytes "$work/out" "$work/want"
+        contains "$work/err" "boxcyl: stopped by SIGINT"
+    done
+    # grid: the same; the answers to the two lines come while part of the third waits (they are
+    # handed over before a read that waits).
+    g='{"grid": {"origin": [0, 0, 0], "cell_size": [1, 1, 1], "counts": [2, 2, 2]}, "cylinder": {"center": [1, 1, 1], "axis": [0, 0, 1], "radius": 0.5, "height": 1}}'
+    start grid
+    printf '%s\n%s\n%s' "$g" "$g" "${g:0:30}" >&3
+    wait_lines 2 || fail "grid: the first 2 answers did not come"
+    sleep 0.3
+    stop TERM 143
+    printf '%s\n' '{"cells": [[0, 0, 0], [0, 0, 1], [0, 1, 0], [0, 1, 1], [1, 0, 0], [1, 0, 1], [1, 1, 0], [1, 1, 1]], "count": 8}' \
+        '{"cells": [[0, 0, 0], [0, 0, 1], [0, 1, 0], [0, 1, 1], [1, 0, 0], [1, 0, 1], [1, 1, 0], [1, 1, 1]], "count": 8}' >"$work/want"
+    same_bytes "$work/out" "$work/want"
+    run 0 --help
+    contains "$work/out" "143 for SIGTERM"
+    ;;
+nul_and_trailing_bytes)
+    # A valid query followed by a NUL byte or by anything but blanks is a bad line, never answered as
+    # the query before it.
+    good='{"id": 1, "box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [2, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}}'
+    {
+        printf '%s\000 junk\n' "$good"
+        printf '%s\000\n' "$good"
+        printf '%s junk\n' "$good"
+        printf '%s }\n' "$good"
+        printf '%s \t\r\n' "$good"
+        printf '{"id": 6, "box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [2, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1\000}}\n'
+    } >"$work/in"
+    for t in 1 2; do
+        run 1 intersect --threads $t "$work/in"
+        [[ $(wc -l <"$work/out") == 6 ]] || fail "got $(wc -l <"$work/out") output lines for 6 input lines"
+        col=$((${#good} + 1))
+        sed -n 1p "$work/out" | grep -qxF "{\"id\": 1, \"error\": \"line 1: invalid JSON: column $col: a NUL byte (not allowed in JSON text; inside a string write \\\\u0000)\"}" || fail "line 1: $(sed -n 1p "$work/out")"
+        sed -n 2p "$work/out" | grep -q "^{\"id\": 1, \"error\": \"line 2: invalid JSON: column $col: a NUL byte" || fail "line 2: $(sed -n 2p "$work/out")"
+        sed -n 3p "$work/out" | grep -q '^{"id": 1, "error": "line 3: invalid JSON: .*expected end of input' || fail "line 3: $(sed -n 3p "$work/out")"
+        sed -n 4p "$work/out" | grep -q '^{"id": 1, "error": "line 4: invalid JSON: .*expected end of input' || fail "line 4: $(sed -n 4p "$work/out")"
+        sed -n 5p "$work/out" | grep -qx '{"id": 1, "intersect": true}' || fail "line 5: $(sed -n 5p "$work/out")"
+        sed -n 6p "$work/out" | grep -q '^{"id": 6, "error": "line 6: invalid JSON: column [0-9]*: a NUL byte' || fail "line 6: $(sed -n 6p "$work/out")"
+    done
+    g='{"grid": {"origin": [0, 0, 0], "cell_size": [1, 1, 1], "counts": [1, 1, 1]}, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 1, "height": 1}}'
+    printf '%s\000 junk\n' "$g" >"$work/grid"
+    run 1 grid "$work/grid"
+    contains "$work/out" "\"error\": \"line 1: invalid JSON: column $((${#g} + 1)): a NUL byte"
+    ;;
+unknown_keys)
+    # A key the format does not have makes the line bad, named with the key nearest to it; every
+    # object the tool reads (the line, box, cylinder, grid).
+    b='"box": {"min": [0, 0, 0], "max": [1, 1, 1]}'
+    c='"center": [2, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1'
+    {
+        echo "{\"id\": 1, $b, \"cylinder\": {$c, \"height\": 1, \"heigth\": 5}}"
+        echo "{\"id\": 2, $b, \"cylinder\": {$c, \"half_height\": 0.5}}"
+        echo "{\"id\": 3, \"box\": {\"min\": [0, 0, 0], \"max\": [1, 1, 1], \"colour\": \"red\"}, \"cylinder\": {$c, \"height\": 1}}"
+        echo "{\"id\": 4, \"comment\": \"x\", $b, \"cylinder\": {$c, \"height\": 1}}"
+        echo "{\"id\": 5, \"boxx\": {}, $b, \"cylinder\": {$c, \"height\": 1}}"
+        echo "{\"id\": 6, \"box\": {\"kind\": \"oriented\", \"center\": [0, 0, 0], \"axis\": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], \"extents\": [1, 1, 1]}, \"cylinder\": {$c, \"height\": 1}}"
+        echo "{\"id\": 7, $b, \"cylinder\": {$c, \"height\": 1}}"
+    } >"$work/in"
+    {
+        echo '{"id": 1, "error": "line 1: cylinder.heigth: unknown key; did you mean \"height\"? (accepted: center, axis, radius, height)"}'
+        echo '{"id": 2, "error": "line 2: cylinder.half_height: unknown key; did you mean \"height\" (the full height, end to end, not half of it)? (accepted: center, axis, radius, height)"}'
+        echo '{"id": 3, "error": "line 3: box.colour: unknown key (accepted: kind, min, max, center, axes, extents)"}'
+        echo '{"id": 4, "error": "line 4: comment: unknown key (accepted: id, box, cylinder)"}'
+        echo '{"id": 5, "error": "line 5: boxx: unknown key; did you mean \"box\"? (accepted: id, box, cylinder)"}'
+        echo '{"id": 6, "error": "line 6: box.axis: unknown key; did you mean \"axes\"? (accepted: kind, min, max, center, axes, extents)"}'
+        echo '{"id": 7, "intersect": true}'
+    } >"$work/want"
+    run 1 intersect "$work/in"
+    same_bytes "$work/out" "$work/want"
+    g='"grid": {"origin": [0, 0, 0], "cell_size": [1, 1, 1], "counts": [1, 1, 1]'
+    {
+        echo "{$g, \"cellsize\": [1, 1, 1]}, \"cylinder\": {\"center\": [0, 0, 0], \"axis\": [0, 0, 1], \"radius\": 1, \"height\": 1}}"
+        echo "{$g}, \"cylinder\": {\"center\": [0, 0, 0], \"axis\": [0, 0, 1], \"radius\": 1, \"heigth\": 1}}"
+        echo "{$g}, \"box\": {}, \"cylinder\": {\"center\": [0, 0, 0], \"axis\": [0, 0, 1], \"radius\": 1, \"height\": 1}}"
+    } >"$work/in"
+    {
+        echo '{"error": "line 1: grid.cellsize: unknown key; did you mean \"cell_size\"? (accepted: origin, cell_size, counts)"}'
+        echo '{"error": "line 2: cylinder.heigth: unknown key; did you mean \"height\"? (accepted: center, axis, radius, height)"}'
+        echo '{"error": "line 3: box: unknown key (accepted: id, grid, cylinder)"}'
+    } >"$work/want"
+    run 1 grid "$work/in"
+    same_bytes "$work/out" "$work/want"
+    ;;
+skewed_frames)
+    # An oriented box whose axes are 4e-5 from orthonormal (valid: within 1e-4) is the parallelepiped
+    # they span: near the corner (1000.04, 1000) its face x0 = 1000 lies 0.04 beyond x = 1000. A
+    # cylinder overlapping that face by 0.02 intersects; one 0.02 short of it does not. Every algorithm
+    # in every arithmetic agrees (in float and double the axes send the query to the convex-hull method).
+    box='"box": {"center": [0, 0, 0], "axes": [[1, 0, 0], [4e-5, 1, 0], [0, 0, 1]], "extents": [1000, 1000, 1000]}'
+    {
+        echo "{\"id\": \"overlap 0.02\", $box, \"cylinder\": {\"center\": [1000.51996, 999, 0], \"axis\": [0, 0, 1], \"radius\": 0.5, \"height\": 10}}"
+        echo "{\"id\": \"gap 0.02\", $box, \"cylinder\": {\"center\": [1000.55996, 999, 0], \"axis\": [0, 0, 1], \"radius\": 0.5, \"height\": 10}}"
+        echo "{\"id\": \"kind parallelepiped\", \"box\": {\"kind\": \"parallelepiped\", \"center\": [0, 0, 0], \"axes\": [[1, 0, 0], [4e-5, 1, 0], [0, 0, 1]], \"extents\": [1000, 1000, 1000]}, \"cylinder\": {\"center\": [1000.51996, 999, 0], \"axis\": [0, 0, 1], \"radius\": 0.5, \"height\": 10}}"
+    } >"$work/in"
+    printf '%s\n' '{"id": "overlap 0.02", "intersect": true}' '{"id": "gap 0.02", "intersect": false}' \
+        '{"id": "kind parallelepiped", "intersect": true}' >"$work/want"
+    run 0 intersect --algorithm oracle "$work/in"
+    same_bytes "$work/out" "$work/want"
+    for alg in inequalities hull lcp; do
+        for ari in filtered double float; do
+            run 0 intersect --algorithm $alg --arithmetic $ari "$work/in"
+            same_bytes "$work/out" "$work/want"
+        done
+    done
+    run 0 intersect --help
+    contains "$work/out" "2^-49"
     ;;
 *)
     echo "unknown case $case_name" >&2

@@ -138,6 +138,98 @@ io)
     run 0 --help
     contains "$work/out" "explain"
     ;;
+line_streams)
+    # --line N reads lines 1 to N only: from a pipe that stays open (it would never end), and from a
+    # file whose later lines are not UTF-8 nor JSON, the picture comes.
+    mkfifo "$work/fifo" || exit 2
+    "$exe" explain --line 2 -o "$work/fifo.svg" <"$work/fifo" >"$work/out" 2>"$work/err" &
+    pid=$!
+    exec 3>"$work/fifo"
+    printf '%s\n%s\n' '{"id": "first"}' "$query" >&3
+    for _ in $(seq 1 400); do
+        kill -0 "$pid" 2>/dev/null || break
+        sleep 0.05
+    done
+    if kill -0 "$pid" 2>/dev/null; then
+        fail "--line 2 from an open pipe did not finish (it reads past line 2)"
+        kill "$pid"
+    fi
+    wait "$pid"
+    rc=$?
+    exec 3>&-
+    [[ $rc == 0 ]] || fail "--line 2 from a pipe exited $rc; stderr: $(head -c 300 "$work/err")"
+    contains "$work/fifo.svg" ">Does not intersect<"
+    { printf '%s\n' "$query"; printf '\377\376 not JSON\n'; head -c 1000000 /dev/zero; } >"$work/tail"
+    run 0 explain --line 1 "$work/tail"
+    contains "$work/out" ">gap 0.0625<"
+    # The line asked for is longer than --max-line-bytes: an error, exit 1.
+    run 1 explain --line 1 --max-line-bytes 20 "$work/tail"
+    contains "$work/err" "line 1: line is longer than 20 bytes (--max-line-bytes)"
+    # Beyond the end: how many lines there are.
+    printf '%s\n%s' "$query" "$query" >"$work/two"
+    run 1 explain --line 3 "$work/two"
+    contains "$work/err" "line 3: no such line (the input has 2)"
+    run 0 explain --line 2 "$work/two"
+    # A signal while waiting for the line: no picture, exit 128 + the signal.
+    "$exe" explain --line 2 <"$work/fifo" >"$work/out" 2>"$work/err" &
+    pid=$!
+    exec 3>"$work/fifo"
+    printf '%s\n' "$query" >&3
+    sleep 0.3
+    kill -TERM "$pid"
+    wait "$pid"
+    rc=$?
+    exec 3>&-
+    [[ $rc == 143 ]] || fail "SIGTERM while reading: exited $rc, expected 143"
+    contains "$work/err" "stopped by a signal before the query was read"
+    [[ -s $work/out ]] && fail "a picture although the query was not read"
+    ;;
+errors)
+    # Write and read errors are reported (exit 3), never a silent exit.
+    printf '%s\n' "$query" >"$work/q.json"
+    if [[ -w /dev/full ]]; then
+        "$exe" explain "$work/q.json" >/dev/full 2>"$work/err"
+        rc=$?
+        [[ $rc == 3 ]] || fail ">/dev/full: exited $rc, expected 3"
+        contains "$work/err" "boxcyl: cannot write standard output: No space left on device"
+        run 3 explain "$work/q.json" -o /dev/full
+        contains "$work/err" "boxcyl: cannot write '/dev/full': No space left on device"
+    fi
+    "$exe" explain "$work/q.json" >&- 2>"$work/err"
+    rc=$?
+    [[ $rc == 3 ]] || fail ">&-: exited $rc, expected 3"
+    contains "$work/err" "boxcyl: cannot write standard output: Bad file descriptor"
+    # With standard output closed, -o still writes its file (and nothing else lands in it).
+    "$exe" explain "$work/q.json" -o "$work/closed.svg" >&- 2>"$work/err"
+    rc=$?
+    [[ $rc == 0 ]] || fail "-o with standard output closed: exited $rc; stderr: $(head -c 300 "$work/err")"
+    well_formed "$work/closed.svg" || fail "-o with standard output closed: not well-formed XML"
+    # Reading standard input fails (a directory): exit 3, a message.
+    "$exe" explain <"$work" >"$work/out" 2>"$work/err"
+    rc=$?
+    [[ $rc == 3 ]] || fail "<dir: exited $rc, expected 3"
+    contains "$work/err" "boxcyl: cannot read standard input: Is a directory"
+    "$exe" explain --line 1 <"$work" >"$work/out" 2>"$work/err"
+    rc=$?
+    [[ $rc == 3 ]] || fail "--line 1 <dir: exited $rc, expected 3"
+    ;;
+extreme)
+    # Coordinates near the double range: distances right or "more than" the range, never NaN.
+    printf '%s\n' \
+      '{"id": "wide", "box": {"kind": "parallelepiped", "center": [0, -1e308, 0.5], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [1e308, 0, 0.25]}, "cylinder": {"center": [0, 0, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}}' \
+      '{"id": "far", "box": {"center": [1e308, 1e308, 0.5], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [0, 0, 0.5]}, "cylinder": {"center": [-0.5e308, -0.5e308, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}}' \
+      '{"id": "tiny", "box": {"kind": "parallelepiped", "center": [0, 1e-321, 0.5], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [1e-320, 0, 0.25]}, "cylinder": {"center": [0, 0, 0.5], "axis": [0, 0, 1], "radius": 2e-321, "height": 1}}' \
+      >"$work/in"
+    for i in 1 2 3; do
+        run 0 explain --line $i "$work/in" -o "$work/$i.svg"
+        well_formed "$work/$i.svg" || fail "line $i: not well-formed XML"
+        lacks "$work/$i.svg" "NaN"
+        lacks "$work/$i.svg" "nan"
+    done
+    contains "$work/1.svg" ">gap 1e+308 (distance − radius).<"
+    contains "$work/2.svg" ">gap more than 1.79769e+308 (distance − radius).<"
+    contains "$work/3.svg" ">Intersects<"
+    ;;
 *)
     echo "unknown case $case_name" >&2
     exit 2

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>  // std::max, std::count
+#include <array>      // frames
 #include <cmath>      // std::fabs, std::ldexp
 #include <string>
 #include <vector>
@@ -286,6 +287,46 @@ TEST(ExplainSvg, OverflowingCoordinatesGetTheVerdictOnly) {
     const std::string svg = cli::render_svg(e, "");
     EXPECT_NE(svg.find("Not drawable"), std::string::npos);
     EXPECT_EQ(svg.find("nan"), std::string::npos);
+}
+
+// Coordinates near the double range and subnormal ones: the picture's distances are right or say
+// that they exceed the range, and no sentence or label says NaN (the segment and polygon arithmetic
+// used to take ∞ − ∞ or 0/0 there).
+TEST(ExplainSvg, ExtremeCoordinatesNeverGiveNaN) {
+    const std::array<Vec3<double>, 3> frame{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    const Cylinder<double> c{{0, 0, 0.5}, {0, 0, 1}, 1, 1};
+    // A segment from (−1e308, −1e308) to (1e308, −1e308) seen along the axis: its ends differ by 2e308.
+    const Explanation wide = explain::compute(Parallelepiped<double>{{0, -1e308, 0.5}, frame, {1e308, 0, 0.25}}, c);
+    EXPECT_TRUE(wide.drawable);
+    EXPECT_EQ(wide.what, Case::gap);
+    EXPECT_EQ(wide.closest.x, 0.0);
+    EXPECT_EQ(wide.closest.y, -1e308);
+    EXPECT_EQ(wide.distance, 1e308);
+    std::string svg = cli::render_svg(wide, "");
+    EXPECT_EQ(svg.find("NaN"), std::string::npos);
+    EXPECT_NE(svg.find(">gap 1e+308 (distance − radius).<"), std::string::npos);
+    // A point 1.5e308 from the axis in x and in y: its distance, 2.1e308, is beyond the range.
+    const Explanation far = explain::compute(OrientedBox<double>{{1e308, 1e308, 0.5}, frame, {0, 0, 0.5}},
+                                             Cylinder<double>{{-0.5e308, -0.5e308, 0.5}, {0, 0, 1}, 1, 1});
+    EXPECT_TRUE(far.drawable);
+    EXPECT_EQ(far.what, Case::gap);
+    EXPECT_EQ(far.closest.x, 1.5e308);
+    EXPECT_EQ(far.closest.y, 1.5e308);
+    svg = cli::render_svg(far, "");
+    EXPECT_EQ(svg.find("NaN"), std::string::npos);
+    EXPECT_EQ(svg.find("∞"), std::string::npos);
+    EXPECT_NE(svg.find(">gap more than 1.79769e+308 (distance − radius).<"), std::string::npos);
+    // Subnormal: a segment of length 2e-320 at distance d = 1e-321 (both subnormal), radius 2d.
+    const double d = 1e-321;
+    const Explanation tiny = explain::compute(Parallelepiped<double>{{0, d, 0.5}, frame, {1e-320, 0, 0.25}},
+                                              Cylinder<double>{{0, 0, 0.5}, {0, 0, 1}, 2 * d, 1});
+    EXPECT_TRUE(tiny.drawable);
+    EXPECT_EQ(tiny.closest.x, 0.0);
+    EXPECT_EQ(tiny.closest.y, d);
+    EXPECT_EQ(tiny.distance, d);
+    EXPECT_EQ(tiny.what, Case::overlap);
+    svg = cli::render_svg(tiny, "");
+    EXPECT_EQ(svg.find("NaN"), std::string::npos);
 }
 
 }  // namespace

@@ -3,18 +3,22 @@
 // (truncated lines, invalid UTF-8, huge lines, duplicate keys, numbers out of range).
 #include <gtest/gtest.h>
 
+#include <algorithm>     // std::equal
 #include <bit>           // std::bit_cast for bit-exact comparison
 #include <charconv>      // std::to_chars for 17-digit printing
-#include <cmath>         // std::signbit
+#include <cmath>         // std::signbit, std::sqrt
+#include <csignal>       // SIGTERM, SIGINT
 #include <cstdint>       // bit patterns
 #include <random>        // fixed-seed random doubles
 #include <sstream>       // process_stream on strings
+#include <streambuf>     // inputs cut short by a stop signal, outputs that fail
 #include <string>
 #include <system_error>  // std::errc
 #include <vector>
 
 #include <nlohmann/json.hpp>  // outputs must be valid JSON (and so valid UTF-8)
 
+#include "io.hpp"
 #include "jsonl_query.hpp"
 #include "options.hpp"
 
@@ -140,6 +144,8 @@ TEST(JsonlStructure, MessagesNameTheField) {
     };
     const std::string c = kCyl;
     const std::string ob = R"("center": [0, 0, 0], "extents": [1, 1, 1])";
+    const std::string nul(1, '\0');
+    const std::string nul_message = R"(a NUL byte (not allowed in JSON text; inside a string write \u0000))";
     const Case cases[] = {
         {"", "line 7: empty line"},
         {" \t \r", "line 7: empty line"},
@@ -193,6 +199,36 @@ TEST(JsonlStructure, MessagesNameTheField) {
         // Syntax.
         {"{", "line 7: invalid JSON: column 2: syntax error while parsing object key - unexpected end of input; expected string literal"},
         {"{} {}", "line 7: invalid JSON: column 4: syntax error while parsing value - unexpected '{'; expected end of input"},
+        // Bytes after the object: never the object alone.
+        {"{" + kBox + ", " + c + "} junk",
+         "line 7: invalid JSON: column 131: syntax error while parsing value - invalid literal; last read: '1}} j'; expected end of input"},
+        {"{" + kBox + ", " + c + "}}", "line 7: invalid JSON: column 130: syntax error while parsing value - unexpected '}'; expected end of input"},
+        // A NUL byte ends nlohmann's input: without a check `{...}\0 junk` would be the query `{...}`.
+        {"{" + kBox + ", " + c + "}" + nul, "line 7: invalid JSON: column 130: " + nul_message},
+        {"{" + kBox + ", " + c + "}" + nul + " junk", "line 7: invalid JSON: column 130: " + nul_message},
+        {R"({"box")" + nul + ": 1}", "line 7: invalid JSON: column 7: " + nul_message},
+        {R"({"box)" + nul + R"(": 1})", "line 7: invalid JSON: column 6: " + nul_message},
+        // An error before the NUL byte comes first.
+        {"{]" + nul, "line 7: invalid JSON: column 2: syntax error while parsing object key - unexpected ']'; expected string literal"},
+        // Keys the format does not have: named, with the nearest accepted key and the accepted ones.
+        {"{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 1, "height": 1, "heigth": 5}})",
+         R"(line 7: cylinder.heigth: unknown key; did you mean "height"? (accepted: center, axis, radius, height))"},
+        {"{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 1, "half_height": 1}})",
+         R"(line 7: cylinder.half_height: unknown key; did you mean "height" (the full height, end to end, not half of it)? (accepted: center, axis, radius, height))"},
+        {"{" + kBox + R"(, "cylinder": {"centre": [0, 0, 0], "axis": [0, 0, 1], "radius": 1, "height": 1}})",
+         R"(line 7: cylinder.centre: unknown key; did you mean "center"? (accepted: center, axis, radius, height))"},
+        {"{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axes": [0, 0, 1], "radius": 1, "height": 1}})",
+         R"(line 7: cylinder.axes: unknown key; did you mean "axis"? (accepted: center, axis, radius, height))"},
+        {"{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "Radius": 1, "height": 1}})",
+         R"(line 7: cylinder.Radius: unknown key; did you mean "radius"? (accepted: center, axis, radius, height))"},
+        {R"({"box": {"center": [0, 0, 0], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "half_extents": [1, 1, 1]}, )" + c + "}",
+         R"(line 7: box.half_extents: unknown key; did you mean "extents" (half the edge lengths, as you wrote)? (accepted: kind, min, max, center, axes, extents))"},
+        {R"({"box": {"min": [0, 0, 0], "max": [1, 1, 1], "size": [1, 1, 1]}, )" + c + "}",
+         "line 7: box.size: unknown key (accepted: kind, min, max, center, axes, extents)"},
+        {"{" + kBox + ", " + c + R"(, "extra": {"deep": [1e300, "x"]}})", "line 7: extra: unknown key (accepted: id, box, cylinder)"},
+        {"{" + kBox + ", " + c + R"(, "ID": 3})", R"(line 7: ID: unknown key; did you mean "id"? (accepted: id, box, cylinder))"},
+        {"{" + kBox + ", " + c + ", \"" + std::string(100, 'k') + "\": 3}",
+         "line 7: " + std::string(64, 'k') + "...: unknown key (accepted: id, box, cylinder)"},
         {R"({"box": 1, "box": 2})", "line 7: box: duplicate key"},
         {"{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "center": [0, 0, 0]}})", "line 7: cylinder.center: duplicate key"},
         {R"({"id": null})", "line 7: id: expected a string or a number"},
@@ -202,7 +238,7 @@ TEST(JsonlStructure, MessagesNameTheField) {
 }
 
 TEST(JsonlStructure, GoodLinesYieldTheShapes) {
-    const ParsedLine a = parse_line("{" + kBox + ", " + kCyl + R"(, "extra": {"deep": [1e300, "x"]}})", 1);
+    const ParsedLine a = parse_line("{" + kBox + ", " + kCyl + "}", 1);
     ASSERT_TRUE(a.query) << a.error;
     EXPECT_TRUE(a.id.empty());
     const auto& ab = std::get<AlignedBox<double>>(a.query->box);
@@ -498,9 +534,11 @@ TEST(JsonlHostile, InvalidUtf8IsABadLineAndTheOutputStaysValidUtf8) {
     }
     // Outside strings an invalid byte is a syntax error like any other.
     error_text(answer_line("\xff" + tail, 4, opt), "line 4: invalid JSON: column 1: syntax error");
-    // Valid non-ASCII text anywhere in a string is fine, and an id with it is echoed unchanged.
-    EXPECT_EQ(answer_line(R"({"id": "Zürich ✓ 𝄞", "note": "日本")" + tail, 5, opt).text,
-              R"({"id": "Zürich ✓ 𝄞", "intersect": true})");
+    // Valid non-ASCII text in a string is fine, and an id with it is echoed unchanged; a key with it
+    // that the format does not have is named as written.
+    EXPECT_EQ(answer_line(R"({"id": "Zürich ✓ 𝄞")" + tail, 5, opt).text, R"({"id": "Zürich ✓ 𝄞", "intersect": true})");
+    EXPECT_EQ(answer_line(R"({"id": 5, "日本": 1)" + tail, 5, opt).text,
+              R"x({"id": 5, "error": "line 5: 日本: unknown key (accepted: id, box, cylinder)"})x");
     // A stream with invalid UTF-8 lines keeps its line count and order.
     const StreamResult r = run_stream(kGood + "\n" + cases[0] + "\n" + "\xc3\x28\n" + kGood + "\n");
     ASSERT_EQ(r.lines.size(), 4u);
@@ -528,9 +566,9 @@ TEST(JsonlHostile, EmptyAndBlankLines) {
 TEST(JsonlHostile, HugeLinesOf10MB) {
     const RunOptions opt = make_run_options("inequalities", "filtered");
     const std::size_t mb10 = 10u << 20;
-    // Good queries padded to 10 MB (a long ignored string, long whitespace) are answered.
-    EXPECT_EQ(answer_line(R"({"id": 1, "pad": ")" + std::string(mb10, 'x') + "\", " + kBox + ", " + kCyl + "}", 1, opt).text,
-              R"({"id": 1, "intersect": true})");
+    // Good queries padded to 10 MB (a long id, long whitespace) are answered.
+    EXPECT_EQ(answer_line(R"({"id": ")" + std::string(mb10, 'x') + "\", " + kBox + ", " + kCyl + "}", 1, opt).text,
+              R"({"id": ")" + std::string(mb10, 'x') + R"(", "intersect": true})");
     EXPECT_EQ(answer_line(kGood + std::string(mb10, ' '), 2, opt).text, R"({"id": 1, "intersect": true})");
     // A 10 MB decimal literal is still the nearest double: 0.000…0001 underflows to radius 0 (valid).
     EXPECT_EQ(answer_line("{" + kBox + R"(, "cylinder": {"center": [2, 0.5, 0.5], "axis": [0, 0, 1], "radius": 0.)" +
@@ -548,7 +586,7 @@ TEST(JsonlHostile, HugeLinesOf10MB) {
     EXPECT_EQ(answer_line(std::string(mb10, '['), 5, opt).text,
               R"({"error": "line 5: invalid JSON: nested deeper than 256 levels"})");
     EXPECT_EQ(answer_line(R"({"id": 6, "deep": )" + std::string(255, '[') + std::string(255, ']') + ", " + kBox + ", " + kCyl + "}", 6, opt).text,
-              R"({"id": 6, "intersect": true})");
+              R"x({"id": 6, "error": "line 6: deep: unknown key (accepted: id, box, cylinder)"})x");  // parsed: only the key is wrong
     EXPECT_EQ(answer_line(R"({"id": 7, "deep": )" + std::string(256, '[') + std::string(256, ']') + ", " + kBox + ", " + kCyl + "}", 7, opt).text,
               R"({"id": 7, "error": "line 7: invalid JSON: nested deeper than 256 levels"})");
     // 10 MB of garbage between good lines changes nothing around it.
@@ -619,17 +657,18 @@ TEST(JsonlLines, ManySmallValuesAreRefusedBeforeTheyExhaustMemory) {
     EXPECT_EQ(answer_line(many, 5, opt).text,
               "{\"id\": 5, \"error\": \"line 5: too large to parse: its JSON values would take more than " + budget +
                   " bytes of memory\"}");
-    // A thousand of them fit in the 64 KiB every line may use.
+    // A thousand of them fit in the 64 KiB every line may use: the line is parsed, and only its key
+    // (which the format does not have) is refused.
     std::string some = R"({"id": 6, "pad": [)";
     for (int i = 0; i < 1000; ++i) some += "[],";
     some += "[]], " + kBox + ", " + kCyl + "}";
-    EXPECT_EQ(answer_line(some, 6, opt).text, R"({"id": 6, "intersect": true})");
+    EXPECT_EQ(answer_line(some, 6, opt).text, R"x({"id": 6, "error": "line 6: pad: unknown key (accepted: id, box, cylinder)"})x");
 }
 
 TEST(JsonlHostile, DuplicateKeysAnywhereMakeTheLineBad) {
     const std::string tail = ", " + kBox + ", " + kCyl + "}";
     EXPECT_EQ(error_of(R"({"id": 1, "id": 2)" + tail), "line 7: id: duplicate key");
-    EXPECT_EQ(error_of(R"({"extra": {"a": 1, "a": 1})" + tail), "line 7: extra.a: duplicate key");  // even in ignored keys
+    EXPECT_EQ(error_of(R"({"extra": {"a": 1, "a": 1})" + tail), "line 7: extra.a: duplicate key");  // found while parsing
     EXPECT_EQ(error_of(R"({"extra": [0, {"a": 1, "a": 1}])" + tail), "line 7: extra[1].a: duplicate key");
     // Keys are compared after unescaping: "r\u0061dius" is "radius".
     EXPECT_EQ(error_of("{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 1, "r\u0061dius": 2, "height": 1}})"),
@@ -638,7 +677,7 @@ TEST(JsonlHostile, DuplicateKeysAnywhereMakeTheLineBad) {
                        (", " + kCyl + "}")),
               "line 7: box.axes: duplicate key");
     // The same key in different objects is no duplicate.
-    EXPECT_TRUE(parse_line(R"({"a": {"x": 1}, "b": {"x": 1})" + tail, 1).query);
+    EXPECT_TRUE(parse_line(R"({"box": {"center": [0, 0, 0], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [1, 1, 1]}, )" + kCyl + "}", 1).query);
 }
 
 TEST(JsonlHostile, NumbersOutOfRangeNameTheirField) {
@@ -651,7 +690,7 @@ TEST(JsonlHostile, NumbersOutOfRangeNameTheirField) {
               "line 7: box.min[0]: out of double range");
     EXPECT_EQ(error_of(R"({"box": {"center": [0, 0, 0], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [1, 1.8e308, 1]}, )" + kCyl + "}"),
               "line 7: box.extents[1]: out of double range");
-    // Even in an ignored key: a number the tool cannot represent is never silently dropped.
+    // Even in a key the format does not have, the number is reported first (found while parsing).
     EXPECT_EQ(error_of(R"({"extra": {"x": [1, -1e309]})" + tail), "line 7: extra.x[1]: out of double range");
     // Underflow is in range: the nearest double, possibly a signed zero.
     EXPECT_EQ(bits(parse_number("-1e-400")), bits(-0.0));
@@ -710,6 +749,146 @@ TEST(JsonlParallelepiped, GoodLinesAndAnswers) {
                   R"({"id": 1, "intersect": true})") << alg;
         EXPECT_EQ(answer_line("{\"id\": 2, " + box + R"(, "cylinder": {"center": [6, 8, 0], "axis": [0, 0, 1], "radius": 4.999, "height": 2}})", 2, opt).text,
                   R"({"id": 2, "intersect": false})") << alg;
+    }
+}
+
+// --- rounded arithmetic on frames that are not orthonormal ---
+
+// An oriented box whose axes are 4e-5 from orthonormal (valid: within 1e-4) is the parallelepiped they
+// span: its face x0 = 1000 passes x = 1000.03996 at y = 999. A cylinder overlapping it by 0.02 meets
+// the box in every algorithm and arithmetic: in float and double the linear-inequalities and LCP
+// methods, which take the axes as an orthonormal frame (they would see a gap of 0.02), hand the query
+// to the convex-hull method.
+TEST(JsonlFrames, AxesOffOrthonormalAreAnsweredForTheParallelepipedTheySpan) {
+    const std::string box =
+        R"("box": {"center": [0, 0, 0], "axes": [[1, 0, 0], [4e-5, 1, 0], [0, 0, 1]], "extents": [1000, 1000, 1000]})";
+    const std::string hit = "{" + box + R"(, "cylinder": {"center": [1000.51996, 999, 0], "axis": [0, 0, 1], "radius": 0.5, "height": 10}})";
+    const std::string miss = "{" + box + R"(, "cylinder": {"center": [1000.55996, 999, 0], "axis": [0, 0, 1], "radius": 0.5, "height": 10}})";
+    for (const char* alg : {"inequalities", "hull", "lcp", "oracle"})
+        for (const char* ari : {"filtered", "double", "float"}) {
+            const RunOptions opt = make_run_options(alg, ari);
+            EXPECT_EQ(answer_line(hit, 1, opt).text, R"({"intersect": true})") << alg << " " << ari;
+            EXPECT_EQ(answer_line(miss, 1, opt).text, R"({"intersect": false})") << alg << " " << ari;
+        }
+    const ParsedLine p = parse_line(hit, 1);
+    ASSERT_TRUE(p.query) << p.error;
+    EXPECT_TRUE(needs_hull_for_frame(*p.query, make_run_options("inequalities", "double").query));
+    EXPECT_TRUE(needs_hull_for_frame(*p.query, make_run_options("lcp", "float").query));
+    EXPECT_FALSE(needs_hull_for_frame(*p.query, make_run_options("hull", "double").query));
+    EXPECT_FALSE(needs_hull_for_frame(*p.query, make_run_options("inequalities", "filtered").query));
+    EXPECT_FALSE(needs_hull_for_frame(*p.query, make_run_options("oracle", "double").query));
+}
+
+// Axes orthonormal to within rounding (rotations computed in double, or rounded to float) keep the
+// chosen method; an aligned box always does.
+TEST(JsonlFrames, RotationsComputedInDoubleKeepTheChosenMethod) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const RunOptions d = make_run_options("inequalities", "double"), f = make_run_options("lcp", "float");
+    for (int k = 0; k < 2000; ++k) {
+        double w = u(rng), a = u(rng), b = u(rng), c = u(rng);
+        const double s = std::sqrt(w * w + a * a + b * b + c * c);
+        w /= s, a /= s, b /= s, c /= s;
+        Query q{OrientedBox<double>{{0, 0, 0},
+                                    {Vec3<double>{1 - 2 * (b * b + c * c), 2 * (a * b + w * c), 2 * (a * c - w * b)},
+                                     Vec3<double>{2 * (a * b - w * c), 1 - 2 * (a * a + c * c), 2 * (b * c + w * a)},
+                                     Vec3<double>{2 * (a * c + w * b), 2 * (b * c - w * a), 1 - 2 * (a * a + b * b)}},
+                                    {1, 1, 1}},
+                Cylinder<double>{{0, 0, 0}, {0, 0, 1}, 1, 1}};
+        EXPECT_FALSE(needs_hull_for_frame(q, d.query)) << k;
+        EXPECT_FALSE(needs_hull_for_frame(q, f.query)) << k;
+        q.box = Parallelepiped<double>{std::get<OrientedBox<double>>(q.box).center, std::get<OrientedBox<double>>(q.box).axes,
+                                       {1, 1, 1}};
+        EXPECT_FALSE(needs_hull_for_frame(q, d.query)) << k;
+    }
+    const Query aligned{AlignedBox<double>{{0, 0, 0}, {1, 1, 1}}, Cylinder<double>{{0, 0, 0}, {0, 0, 1}, 1, 1}};
+    EXPECT_FALSE(needs_hull_for_frame(aligned, d.query));
+}
+
+// --- stop signals: the lines read in full are answered, in order; a line cut short is not ---
+
+// Serves `text` in pieces ending at the given offsets; after the last piece, "receives" SIGTERM and
+// ends the input, as the tool's reader does on a stop signal.
+class SignalAfter : public std::streambuf {
+public:
+    SignalAfter(std::string text, std::vector<std::size_t> cuts) : text_(std::move(text)), cuts_(std::move(cuts)) {}
+
+protected:
+    int_type underflow() override {
+        if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
+        if (next_ >= cuts_.size()) {
+            set_stop_signal_for_testing(SIGTERM);
+            return traits_type::eof();
+        }
+        char* base = text_.data();
+        setg(base + begin_, base + begin_, base + cuts_[next_]);
+        begin_ = cuts_[next_++];
+        return gptr() < egptr() ? traits_type::to_int_type(*gptr()) : underflow();
+    }
+
+private:
+    std::string text_;
+    std::vector<std::size_t> cuts_;
+    std::size_t next_ = 0, begin_ = 0;
+};
+
+TEST(JsonlStream, StopSignalAnswersTheLinesReadInFullAndNoMore) {
+    const RunOptions opt = make_run_options("inequalities", "filtered");
+    const std::string input = mixed_input(3 * stream_block_lines + 17, true);
+    std::istringstream whole(input);
+    std::ostringstream all;
+    process_stream(whole, all, opt, 1);
+    const std::vector<std::string> want = lines_of(all.str());
+    // Offsets of the line starts.
+    std::vector<std::size_t> starts{0};
+    for (std::size_t i = 0; i < input.size(); ++i)
+        if (input[i] == '\n') starts.push_back(i + 1);
+    for (const std::size_t k : {std::size_t{0}, std::size_t{1}, std::size_t{100}, stream_block_lines + 3}) {
+        for (const bool cut_mid_line : {false, true}) {
+            // Lines 1..k in full, then (maybe) half of line k + 1, then the signal.
+            std::vector<std::size_t> cuts;
+            for (std::size_t i = 1; i <= k; ++i) cuts.push_back(starts[i]);
+            if (cut_mid_line) cuts.push_back(starts[k] + (starts[k + 1] - starts[k]) / 2);
+            for (const unsigned threads : {1u, 3u}) {
+                SignalAfter buf(input, cuts);
+                std::istream in(&buf);
+                std::ostringstream out;
+                const StreamCounts c = answer_stream(in, out, opt, threads);
+                set_stop_signal_for_testing(0);
+                EXPECT_EQ(c.lines, k) << k << " lines, cut " << cut_mid_line << ", " << threads << " threads";
+                const std::vector<std::string> got = lines_of(out.str());
+                ASSERT_EQ(got.size(), k) << k << " lines, cut " << cut_mid_line << ", " << threads << " threads";
+                EXPECT_TRUE(std::equal(got.begin(), got.end(), want.begin())) << k << " lines, " << threads << " threads";
+                EXPECT_TRUE(out.str().empty() || out.str().back() == '\n');
+            }
+        }
+    }
+    // A signal already received: nothing is read.
+    set_stop_signal_for_testing(SIGINT);
+    std::istringstream in(input);
+    std::ostringstream out;
+    EXPECT_EQ(answer_stream(in, out, opt, 1).lines, 0u);
+    EXPECT_EQ(answer_stream(in, out, opt, 2).lines, 0u);
+    set_stop_signal_for_testing(0);
+    EXPECT_EQ(out.str(), "");
+}
+
+// A stream that fails to write stops the run: the rest of the input is not read.
+TEST(JsonlStream, WriteErrorStopsReading) {
+    class Failing : public std::streambuf {
+    protected:
+        int_type overflow(int_type) override { return traits_type::eof(); }
+    };
+    const RunOptions opt = make_run_options("inequalities", "filtered");
+    const std::string input = mixed_input(12 * stream_block_lines, true);
+    for (const unsigned threads : {1u, 2u}) {
+        Failing buf;
+        std::ostream out(&buf);
+        std::istringstream in(input);
+        const StreamCounts c = answer_stream(in, out, opt, threads);
+        EXPECT_TRUE(out.bad());
+        // One line (threads == 1); at most the blocks in flight and the one being filled (threads > 1).
+        EXPECT_LE(c.lines, threads == 1 ? 1 : (2 * threads + 2) * stream_block_lines) << threads << " threads";
     }
 }
 
