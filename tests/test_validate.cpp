@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>  // field setters
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -342,14 +343,51 @@ TEST(InputPolicy, MagnitudesAtTheEdgesOfTheDoubleRangeAreAnsweredExactly) {
     expect_answer(turned, Cylinder<double>{{max_d, max_d, max_d}, {0, 0, 1}, 1, 1}, false, "huge rotated box, far cylinder");
 }
 
+// The front door refuses invalid input in every build type, with validate()'s message naming the
+// field, for every box kind, float and double, with and without options; the _unchecked forms assert
+// it in debug builds only.
+template <class F>
+std::string thrown(F&& f) {
+    try {
+        f();
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "(nothing thrown)";
+}
+TEST(InputPolicy, TheQueryRefusesInvalidInputNamingTheField) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    AlignedBox<double> nan_max = unit_box;
+    nan_max.max[0] = nan;
+    EXPECT_EQ(thrown([&] { (void)intersects(nan_max, unit_cyl); }), "box.max[0]: is NaN");
+    EXPECT_EQ(thrown([&] { (void)intersects(nan_max, unit_cyl, {Algorithm::hull, Arithmetic::float64}); }),
+              "box.max[0]: is NaN");
+    const Cylinder<double> zero_axis{{0, 0, 0}, {0, 0, 0}, 1, 1};
+    EXPECT_EQ(thrown([&] { (void)intersects(unit_box, zero_axis); }), "cylinder.axis: is the zero vector");
+    const AlignedBox<double> flipped{{1, 0, 0}, {0, 1, 1}};
+    EXPECT_EQ(thrown([&] { (void)intersects(flipped, unit_cyl, {Algorithm::inequalities, Arithmetic::float64}); }),
+              "box.max[0]: is less than box.min[0]");
+    const OrientedBox<double> skewed{{0, 0, 0}, {Vec3<double>{1, 0, 0}, Vec3<double>{0.1, 1, 0}, Vec3<double>{0, 0, 1}}, {1, 1, 1}};
+    EXPECT_NE(thrown([&] { (void)intersects(skewed, unit_cyl); }).find("box.axes"), std::string::npos);
+    const Parallelepiped<double> negative{{0, 0, 0}, {Vec3<double>{1, 0, 0}, Vec3<double>{0, 1, 0}, Vec3<double>{0, 0, 1}},
+                                          {1, -1, 1}};
+    EXPECT_EQ(thrown([&] { (void)intersects(negative, unit_cyl); }), "box.extents[1]: is negative");
+    const CanonicalBox<float> inf_extent{{1, std::numeric_limits<float>::infinity(), 1}};
+    EXPECT_EQ(thrown([&] { (void)intersects(inf_extent, Cylinder<float>{{0, 0, 0}, {0, 0, 1}, 1, 1}); }),
+              "box.extents[1]: is +Inf");
+    // Valid input is answered; the unchecked form answers the same.
+    EXPECT_TRUE(intersects(unit_box, unit_cyl));
+    EXPECT_EQ(intersects_unchecked(unit_box, unit_cyl), intersects(unit_box, unit_cyl));
+}
+
 #ifndef NDEBUG
-// The front door asserts its preconditions in debug builds (assertions stay on in scripts/test.sh).
-TEST(InputPolicyDeathTest, TheQueryAssertsValidInputInDebugBuilds) {
+// The unchecked forms assert their preconditions in debug builds (assertions stay on in scripts/test.sh).
+TEST(InputPolicyDeathTest, TheUncheckedQueryAssertsValidInputInDebugBuilds) {
     GTEST_FLAG_SET(death_test_style, "threadsafe");
     const Cylinder<double> bad{{0, 0, 0}, {0, 0, 0}, 1, 1};
-    EXPECT_DEATH(intersects(unit_box, bad), "invalid cylinder");
+    EXPECT_DEATH(intersects_unchecked(unit_box, bad), "invalid cylinder");
     const AlignedBox<double> flipped{{1, 0, 0}, {0, 1, 1}};
-    EXPECT_DEATH(intersects(flipped, unit_cyl, {Algorithm::inequalities, Arithmetic::float64}), "invalid box");
+    EXPECT_DEATH(intersects_unchecked(flipped, unit_cyl, {Algorithm::inequalities, Arithmetic::float64}), "invalid box");
 }
 #endif
 

@@ -36,14 +36,24 @@ namespace boxcyl {
 inline namespace compiled {
 
 // ---- One box, one cylinder (boxcyl/query.hpp). Default options: the exact answer. ----
+// Invalid input throws std::invalid_argument naming the field (validate()'s message); the _unchecked
+// forms skip that check for callers who validated once.
 bool intersects(const AlignedBox<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt = {});
 bool intersects(const OrientedBox<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt = {});
 bool intersects(const CanonicalBox<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt = {});
+bool intersects(const Parallelepiped<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt = {});
 bool intersects(const AlignedBox<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
 bool intersects(const OrientedBox<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
 bool intersects(const CanonicalBox<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
-bool intersects(const Parallelepiped<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt = {});
 bool intersects(const Parallelepiped<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
+bool intersects_unchecked(const AlignedBox<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt = {});
+bool intersects_unchecked(const OrientedBox<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt = {});
+bool intersects_unchecked(const CanonicalBox<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt = {});
+bool intersects_unchecked(const Parallelepiped<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt = {});
+bool intersects_unchecked(const AlignedBox<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
+bool intersects_unchecked(const OrientedBox<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
+bool intersects_unchecked(const CanonicalBox<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
+bool intersects_unchecked(const Parallelepiped<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
 
 // ---- The grid query (boxcyl/grid.hpp). ----
 // for_each_cell's compiled part: f(context, i, j, k) for every cell.

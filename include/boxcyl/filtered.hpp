@@ -114,4 +114,14 @@ bool intersects(const Box& box, const Cylinder<double>& cyl) {
     return query(box, cyl).intersect;
 }
 
+// Translation units that link a copy compiled elsewhere (the batch kernels and the compiled library
+// take it from boxcyl::batch_dispatch, src/batch/pipeline.cpp) declare the pipeline extern, so that its
+// templates are compiled once.
+#if defined(BOXCYL_PIPELINE_EXTERN) && BOXCYL_PIPELINE_EXTERN
+extern template Result query(const AlignedBox<double>&, const Cylinder<double>&);
+extern template Result query(const OrientedBox<double>&, const Cylinder<double>&);
+extern template Result query(const CanonicalBox<double>&, const Cylinder<double>&);
+extern template Result query(const Parallelepiped<double>&, const Cylinder<double>&);
+#endif
+
 }  // namespace boxcyl::filtered

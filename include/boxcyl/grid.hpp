@@ -196,7 +196,7 @@ private:
                 return true;
             }
         }
-        return intersects(b, c_);
+        return intersects_unchecked(b, c_);  // blocks of a valid grid are valid (checked once, up front)
     }
 
     static Vec3<double> corner(const AlignedBox<double>& b, std::size_t m) {

@@ -1,6 +1,8 @@
 // The front door: boxcyl::intersects(box, cylinder[, options]) for aligned, oriented and canonical
-// boxes. Closed solids: touching counts as intersecting. Inputs must satisfy validate() (finite, non-zero
-// axis, non-negative sizes, min ≤ max, orthonormal oriented-box axes); that is asserted in debug builds.
+// boxes and any parallelepiped. Closed solids: touching counts as intersecting. Invalid input (see
+// validate(): NaN or ±Inf, a zero axis, a negative size, min > max, oriented-box axes not orthonormal)
+// throws std::invalid_argument naming the field, in every build type; intersects_unchecked() skips the
+// check (a precondition then, asserted in debug builds).
 //
 // boxcyl::intersects(box, cylinder) — no options — is EXACT for the inputs as given: certificates in
 // floating point decide most queries, the exact stage the rest (filtered.hpp, docs/pipeline.md; its cost
@@ -202,6 +204,20 @@ bool dispatch(const Parallelepiped<T>& box, const Cylinder<T>& cyl, const QueryO
 template <class T>
 inline constexpr bool dependent_false = false;
 
+// The front door refuses invalid input in every build type: std::invalid_argument whose message is
+// validate()'s ("box.max[0]: is NaN"). The check is a few branch-free comparisons per field; the
+// message is built only when it fails.
+template <class Box, class T>
+[[noreturn, gnu::cold, gnu::noinline]] void throw_invalid(const Box& box, const Cylinder<T>& cyl) {
+    const Validity b = validate(box);
+    throw std::invalid_argument(b.ok() ? validate(cyl).message() : b.message());
+}
+template <class Box, class T>
+BOXCYL_FORCE_INLINE inline void require_valid(const Box& box, const Cylinder<T>& cyl) {
+    if (!(is_valid(box) && is_valid(cyl))) [[unlikely]]
+        throw_invalid(box, cyl);
+}
+
 }  // namespace detail
 
 #if defined(BOXCYL_HAS_EXACT)
@@ -215,42 +231,74 @@ inline constexpr bool dependent_false = false;
     return false
 #endif
 
-// The exact answer for the inputs as given (closed solids: touching intersects).
+// The exact answer for the inputs as given (closed solids: touching intersects). Invalid input (see
+// validate()) throws std::invalid_argument naming the field; `intersects_unchecked` skips that check
+// for callers who validated once (invalid input is then a precondition violation, asserted in debug
+// builds).
 template <class T>
-bool intersects(const AlignedBox<T>& box, const Cylinder<T>& cyl) {
+bool intersects_unchecked(const AlignedBox<T>& box, const Cylinder<T>& cyl) {
     BOXCYL_DEFAULT_QUERY(box, cyl);
 }
 template <class T>
-bool intersects(const OrientedBox<T>& box, const Cylinder<T>& cyl) {
+bool intersects_unchecked(const OrientedBox<T>& box, const Cylinder<T>& cyl) {
     BOXCYL_DEFAULT_QUERY(box, cyl);
 }
 // Any parallelepiped, axes exactly as given (geometry/parallelepiped.hpp).
 template <class T>
-bool intersects(const Parallelepiped<T>& box, const Cylinder<T>& cyl) {
+bool intersects_unchecked(const Parallelepiped<T>& box, const Cylinder<T>& cyl) {
     BOXCYL_DEFAULT_QUERY(box, cyl);
 }
 // The cylinder is given in the canonical box's frame (box centred at the origin, axis-aligned).
 template <class T>
-bool intersects(const CanonicalBox<T>& box, const Cylinder<T>& cyl) {
+bool intersects_unchecked(const CanonicalBox<T>& box, const Cylinder<T>& cyl) {
     BOXCYL_DEFAULT_QUERY(box, cyl);
 }
 #undef BOXCYL_DEFAULT_QUERY
 
 // With an explicit choice of algorithm and arithmetic.
+template <class Box, class T>
+bool intersects_unchecked(const Box& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
+    return detail::dispatch(box, cyl, opt);
+}
+
+template <class T>
+bool intersects(const AlignedBox<T>& box, const Cylinder<T>& cyl) {
+    detail::require_valid(box, cyl);
+    return intersects_unchecked(box, cyl);
+}
+template <class T>
+bool intersects(const OrientedBox<T>& box, const Cylinder<T>& cyl) {
+    detail::require_valid(box, cyl);
+    return intersects_unchecked(box, cyl);
+}
+template <class T>
+bool intersects(const Parallelepiped<T>& box, const Cylinder<T>& cyl) {
+    detail::require_valid(box, cyl);
+    return intersects_unchecked(box, cyl);
+}
+template <class T>
+bool intersects(const CanonicalBox<T>& box, const Cylinder<T>& cyl) {
+    detail::require_valid(box, cyl);
+    return intersects_unchecked(box, cyl);
+}
 template <class T>
 bool intersects(const AlignedBox<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
+    detail::require_valid(box, cyl);
     return detail::dispatch(box, cyl, opt);
 }
 template <class T>
 bool intersects(const OrientedBox<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
+    detail::require_valid(box, cyl);
     return detail::dispatch(box, cyl, opt);
 }
 template <class T>
 bool intersects(const Parallelepiped<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
+    detail::require_valid(box, cyl);
     return detail::dispatch(box, cyl, opt);
 }
 template <class T>
 bool intersects(const CanonicalBox<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt) {
+    detail::require_valid(box, cyl);
     return detail::dispatch(box, cyl, opt);
 }
 
