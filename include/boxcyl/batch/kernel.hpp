@@ -25,7 +25,11 @@
 #include "boxcyl/batch/filter.hpp"
 #include "boxcyl/batch/split.hpp"
 #include "boxcyl/batch/types.hpp"
+#if defined(BOXCYL_BATCH_SCALAR_APART)
+#include "boxcyl/batch/dispatch.hpp"  // scalar_intersects
+#else
 #include "boxcyl/filtered.hpp"
+#endif
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/validate.hpp"
@@ -238,6 +242,18 @@ BOXCYL_BATCH_INLINE LaneBits to_bits(const LaneResult& r) {
     return {sum & 0xFFFF, sum >> 16};
 }
 
+// The scalar exact default for a lane the filter left undecided. The kernels compiled apart for
+// AVX2 and AVX-512 (src/batch, which defines BOXCYL_BATCH_SCALAR_APART) call its one plain x86-64 copy
+// (dispatch::scalar_intersects) rather than compiling the whole exact query again each.
+template <class Box>
+bool scalar_answer(const Box& box, const Cylinder<double>& cyl) {
+#if defined(BOXCYL_BATCH_SCALAR_APART)
+    return dispatch::scalar_intersects(box, cyl);
+#else
+    return filtered::query(box, cyl).intersect;
+#endif
+}
+
 // Answers for boxes [begin, begin + count), count ≤ 64, as bits 0..count−1: the first pass over every
 // vector of boxes without a branch per lane (aligned sources load the lanes, and the centre-and-ball
 // tests run here); a source with a second pass (aligned boxes: the whole filter) sends the lanes the
@@ -312,7 +328,7 @@ std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, c
     }
     for (std::uint64_t o = open; o != 0; o &= o - 1) {
         const std::size_t i = begin + static_cast<std::size_t>(std::countr_zero(o));
-        if (filtered::query(s.box(i), cyl).intersect) bits |= std::uint64_t{1} << (i - begin);
+        if (scalar_answer(s.box(i), cyl)) bits |= std::uint64_t{1} << (i - begin);
         ++st.exact_lanes;
     }
     return bits;
