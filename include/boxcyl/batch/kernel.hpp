@@ -345,6 +345,7 @@ Stats run(const Cylinder<double>& cyl, const Source& s, std::size_t n, const Opt
     split::for_each_range(blocks, threads, [&](std::size_t first, std::size_t last, unsigned t) {
         Stats x;
         for (std::size_t blk = first; blk < last; ++blk) {
+            if (opt.stop.stop_requested()) throw Stopped();
             const std::size_t begin = blk * 64, count = std::min<std::size_t>(64, n - begin);
             emit(blk, block_bits(f, cyl, s, begin, count, opt.check_boxes, x), count);
         }
