@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "boxcyl/boxcyl.hpp"
 
@@ -176,6 +179,86 @@ TEST(Pose, FactoriesProduceTheStatedSolid) {
     EXPECT_THROW(rotation(Quaternion<double>{0, 0, 0, 0}), std::invalid_argument);
     RigidTransform<double> bad{{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 1, 1}}}};
     EXPECT_THROW(oriented_box(bad, Size<double>{1, 1, 1}), std::invalid_argument);
+}
+
+// A rotation given as a matrix or a rigid transform must be one (within OrientedBox's 1e-4): a scaled
+// or sheared one would otherwise be read as a rotation, and for a cylinder its scale silently dropped.
+TEST(Pose, ScaledRotationsAreRefusedWithTheRightAdvice) {
+    const RigidTransform<double> doubled{{{{2, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}};
+    try {
+        (void)cylinder(doubled, 1.0, Height<double>{1});
+        FAIL() << "a scaled transform gave a cylinder";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "boxcyl: cylinder: transform: is not a rotation (column 0 has squared length 4; its columns must be "
+                  "orthonormal within 1e-4): a scaled transform changes a cylinder's radius and height (a non-uniform "
+                  "scale makes an elliptic cylinder, which is not a cylinder), so boxcyl takes them explicitly: pass "
+                  "the unscaled rotation and the scaled radius and height");
+    }
+    try {
+        (void)oriented_box(doubled, Size<double>{1, 1, 1});
+        FAIL() << "a scaled transform gave an oriented box";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "boxcyl: oriented_box: transform: is not a rotation (column 0 has squared length 4; its columns must "
+                  "be orthonormal within 1e-4): a box under a transform with scale or shear is "
+                  "parallelepiped(AffineTransform{...}, sizes)");
+    }
+    // A uniform scale is refused as well (the radius would change too); so is a shear, and a scaled matrix.
+    const RigidTransform<double> uniform{{{{3, 0, 0, 0}, {0, 3, 0, 0}, {0, 0, 3, 0}, {0, 0, 0, 1}}}};
+    EXPECT_THROW(cylinder(uniform, 1.0, HalfHeight<double>{1}), std::invalid_argument);
+    const RotationMatrix<double> shear{{{{1, 0.5, 0}, {0, 1, 0}, {0, 0, 1}}}};
+    try {
+        (void)cylinder(origin, shear, 1.0, Height<double>{1}, LocalAxis::y);
+        FAIL();
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("cylinder: rotation: is not a rotation (columns 0 and 1 have dot product 0.5;"),
+                  std::string::npos)
+            << e.what();
+    }
+    EXPECT_NO_THROW(cylinder(origin, Quaternion<double>{3, 0, 0, 0}, 1.0, Height<double>{1}));  // not unit: still a rotation
+}
+
+TEST(Pose, RotationsWithinTheToleranceAreAccepted) {
+    // A rotation rounded to a few digits (as printed in a file) is still one; a reflection too (same solids).
+    const RotationMatrix<double> rounded{{{{0.70711, -0.70711, 0}, {0.70711, 0.70711, 0}, {0, 0, 1}}}};
+    EXPECT_TRUE(is_rotation(rounded));
+    EXPECT_NO_THROW(cylinder(origin, rounded, 1.0, Height<double>{1}));
+    const RotationMatrix<double> mirror{{{{1, 0, 0}, {0, 1, 0}, {0, 0, -1}}}};
+    EXPECT_TRUE(is_rotation(mirror));
+    EXPECT_FALSE(is_rotation(RotationMatrix<double>{{{{1.0002, 0, 0}, {0, 1, 0}, {0, 0, 1}}}}));
+}
+
+// A quaternion of any finite non-zero size gives its rotation: scaled by 2^±1000 it gives exactly the
+// matrix of the unscaled one (a power of two is factored out exactly), not NaN or a "zero" quaternion.
+TEST(Pose, QuaternionsOfAnyMagnitudeNormalise) {
+    const Quaternion<double> q{.w = qw, .x = 0, .y = 0, .z = qz};
+    const RotationMatrix<double> expected = rotation(q);
+    for (double scale : {0x1p-1000, 1e-300, 1e-160, 1e160, 1e300, 0x1p1000, 1.7e308}) {
+        const RotationMatrix<double> r = rotation(Quaternion<double>{q.w * scale, q.x * scale, q.y * scale, q.z * scale});
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) EXPECT_NEAR(r.m[i][j], expected.m[i][j], 4e-16) << scale;
+        EXPECT_TRUE(is_rotation(r));
+    }
+    const RotationMatrix<double> p2 = rotation(Quaternion<double>{qw * 0x1p1000, 0, 0, qz * 0x1p1000});
+    EXPECT_EQ(p2.m, expected.m);
+    // The smallest subnormal alone is a rotation by π about its axis.
+    const RotationMatrix<double> flip = rotation(Quaternion<double>{0, 0, 0, std::numeric_limits<double>::denorm_min()});
+    EXPECT_EQ(flip.m, (RotationMatrix<double>{{{{-1, 0, 0}, {0, -1, 0}, {0, 0, 1}}}}.m));
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    auto message = [](const Quaternion<double>& bad) {
+        try {
+            (void)rotation(bad);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("no exception");
+    };
+    EXPECT_EQ(message({0, 0, 0, 0}), "boxcyl: quaternion: is zero");
+    EXPECT_EQ(message({1, nan, 0, 0}), "boxcyl: quaternion: is NaN");
+    EXPECT_EQ(message({1, 0, -inf, 0}), "boxcyl: quaternion: is infinite");
+    const RotationMatrix<float> f = rotation(Quaternion<float>{1e30f, 0, 0, 1e30f});  // float: the same scaling
+    EXPECT_NEAR(f.m[0][1], -1.0f, 1e-6f);
 }
 
 }  // namespace

@@ -17,17 +17,34 @@
 // overflows). A quaternion is first turned into R in T's arithmetic (rounded, so orthonormal to about
 // 1e-16, which OrientedBox's contract accepts); the formula divides by w² + x² + y² + z², so a
 // quaternion that is unit only up to rounding still gives a rotation. The answer is then exact for
-// those rounded axes, as for any OrientedBox. Factories check nothing but the transform's shape
-// (see below); run validate() on the result as on any shape.
+// those rounded axes, as for any OrientedBox. The quaternion is scaled by a power of two first
+// (exactly), so that any finite non-zero quaternion gives its rotation, however large or small.
+//
+// Checks: a rotation given as a RotationMatrix or a RigidTransform must be one, its columns orthonormal
+// within OrientedBox's tolerance (|ci·cj − δij| ≤ 1e-4, as validate() checks a box's axes), else the
+// factory throws std::invalid_argument. A scaled or sheared transform is not read as a rotation: a box
+// under it is parallelepiped(AffineTransform, ...), exactly; a cylinder under it has another radius or
+// height (under a non-uniform scale it is an elliptic cylinder, which is no Cylinder), so its radius and
+// height must be given explicitly with the unscaled pose. A zero, NaN or infinite quaternion and a
+// transform whose bottom row is not (0, 0, 0, 1) throw too. Nothing else is checked: run validate() on
+// the result as on any shape.
 #pragma once
 
-#include <array>      // matrices
-#include <stdexcept>  // std::invalid_argument
+#include <algorithm>    // std::max
+#include <array>        // matrices
+#include <cmath>        // std::ldexp, std::ilogb: quaternion scaling
+#include <concepts>     // std::floating_point
+#include <cstddef>      // std::size_t
+#include <cstdio>       // std::snprintf: the Gram entry in messages
+#include <limits>       // the exponent range
+#include <stdexcept>    // std::invalid_argument
+#include <string>       // messages
 #include <type_traits>  // std::type_identity_t: the radius does not take part in deducing T
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
+#include "boxcyl/geometry/validate.hpp"  // the orthonormality tolerance and check
 #include "boxcyl/geometry/vec3.hpp"
 
 namespace boxcyl {
@@ -89,9 +106,68 @@ struct AffineTransform {
 // Bullet's btCylinderShape and Jolt's CylinderShape, x for btCylinderShapeX.
 enum class LocalAxis { x = 0, y = 1, z = 2 };
 
-// R(q) = I + s·(w[v]× + [v]×²), s = 2/(w² + x² + y² + z²): the rotation of q/|q| for any q ≠ 0.
+namespace detail {
+
+// Why r is not a rotation within OrientedBox's tolerance ("column 0 has squared length 4"), or empty:
+// the Gram entries of its columns as validate() judges a box's axes.
 template <class T>
-RotationMatrix<T> rotation(const Quaternion<T>& q) {
+std::string rotation_defect(const RotationMatrix<T>& r) {
+    const std::array<Vec3<T>, 3> c{r.column(0), r.column(1), r.column(2)};
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = i; j < 3; ++j)
+            if (!gram_entry_ok(c, i, j)) {
+                char g[32];
+                std::snprintf(g, sizeof g, "%.6Lg", gram(c, i, j));
+                return i == j ? "column " + std::to_string(i) + " has squared length " + g
+                              : "columns " + std::to_string(i) + " and " + std::to_string(j) + " have dot product " + g;
+            }
+    return {};
+}
+
+// Checked for floating-point T (as validate() checks boxes); other number types are taken as given.
+template <class T>
+void require_rotation(const RotationMatrix<T>& r, const char* what, const char* otherwise) {
+    if constexpr (std::is_floating_point_v<T>) {
+        if (const std::string d = rotation_defect(r); !d.empty())
+            throw std::invalid_argument(std::string("boxcyl: ") + what + ": is not a rotation (" + d +
+                                        "; its columns must be orthonormal within 1e-4): " + otherwise);
+    }
+}
+
+inline constexpr const char* box_under_scale =
+    "a box under a transform with scale or shear is parallelepiped(AffineTransform{...}, sizes)";
+inline constexpr const char* cylinder_under_scale =
+    "a scaled transform changes a cylinder's radius and height (a non-uniform scale makes an elliptic "
+    "cylinder, which is not a cylinder), so boxcyl takes them explicitly: pass the unscaled rotation and "
+    "the scaled radius and height";
+
+}  // namespace detail
+
+// Whether r is a rotation as the factories require: columns orthonormal within 1e-4.
+template <std::floating_point T>
+bool is_rotation(const RotationMatrix<T>& r) {
+    const std::array<Vec3<T>, 3> c{r.column(0), r.column(1), r.column(2)};
+    return detail::gram_ok(c);
+}
+
+// R(q) = I + s·(w[v]× + [v]×²), s = 2/(w² + x² + y² + z²): the rotation of q/|q| for any q ≠ 0. A
+// floating-point q is first scaled by a power of two so that its largest component is in [1, 2):
+// exact, and the squares can neither overflow nor underflow (components below 2^-1000 of the largest
+// may lose bits, which moves R by far less than its own rounding).
+template <class T>
+RotationMatrix<T> rotation(Quaternion<T> q) {
+    if constexpr (std::is_floating_point_v<T>) {
+        const T w[4] = {q.w, q.x, q.y, q.z};
+        T m = 0;
+        for (T c : w) {
+            if (std::isnan(c)) throw std::invalid_argument("boxcyl: quaternion: is NaN");
+            m = std::max(m, std::fabs(c));
+        }
+        if (!(m <= std::numeric_limits<T>::max())) throw std::invalid_argument("boxcyl: quaternion: is infinite");
+        if (m == T(0)) throw std::invalid_argument("boxcyl: quaternion: is zero");
+        const int e = std::ilogb(m);
+        q = {std::ldexp(q.w, -e), std::ldexp(q.x, -e), std::ldexp(q.y, -e), std::ldexp(q.z, -e)};
+    }
     const T n = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
     if (!(n > T(0))) throw std::invalid_argument("boxcyl: quaternion: is zero (or not finite)");
     const T s = T(2) / n;
@@ -101,6 +177,7 @@ RotationMatrix<T> rotation(const Quaternion<T>& q) {
     return {{{{T(1) - (yy + zz), xy - wz, xz + wy}, {xy + wz, T(1) - (xx + zz), yz - wx},
               {xz - wy, yz + wx, T(1) - (xx + yy)}}}};
 }
+// The rotation block of t, unchecked (the factories check it with what they build in the message).
 template <class T>
 RotationMatrix<T> rotation(const RigidTransform<T>& t) {
     if (!(t.m[3][0] == T(0) && t.m[3][1] == T(0) && t.m[3][2] == T(0) && t.m[3][3] == T(1)))
@@ -120,11 +197,13 @@ Vec3<T> half_of(const Size<T>& s) {
 // ---- Oriented boxes ----
 template <class T>
 OrientedBox<T> oriented_box(const Vec3<T>& center, const RotationMatrix<T>& r, const HalfExtents<T>& h) {
+    detail::require_rotation(r, "oriented_box: rotation", detail::box_under_scale);
     return {center, {r.column(0), r.column(1), r.column(2)}, {h.x, h.y, h.z}};
 }
 template <class T>
 OrientedBox<T> oriented_box(const Vec3<T>& center, const RotationMatrix<T>& r, const Size<T>& s) {
-    return {center, {r.column(0), r.column(1), r.column(2)}, half_of(s)};
+    const Vec3<T> h = half_of(s);
+    return oriented_box(center, r, HalfExtents<T>{h[0], h[1], h[2]});
 }
 template <class T, class Sizes>
 OrientedBox<T> oriented_box(const Vec3<T>& center, const Quaternion<T>& q, const Sizes& sizes) {
@@ -132,7 +211,9 @@ OrientedBox<T> oriented_box(const Vec3<T>& center, const Quaternion<T>& q, const
 }
 template <class T, class Sizes>
 OrientedBox<T> oriented_box(const RigidTransform<T>& pose, const Sizes& sizes) {
-    return oriented_box(translation(pose), rotation(pose), sizes);
+    const RotationMatrix<T> r = rotation(pose);
+    detail::require_rotation(r, "oriented_box: transform", detail::box_under_scale);
+    return oriented_box(translation(pose), r, sizes);
 }
 
 // ---- Parallelepipeds: a box of the given size under an affine transform ----
@@ -156,12 +237,13 @@ Parallelepiped<T> parallelepiped(const AffineTransform<T>& t, const Size<T>& s) 
 template <class T>
 Cylinder<T> cylinder(const Vec3<T>& center, const RotationMatrix<T>& r, std::type_identity_t<T> radius, const Height<T>& h,
                      LocalAxis along = LocalAxis::z) {
+    detail::require_rotation(r, "cylinder: rotation", detail::cylinder_under_scale);
     return {center, r.column(static_cast<int>(along)), radius, h.value};
 }
 template <class T>
 Cylinder<T> cylinder(const Vec3<T>& center, const RotationMatrix<T>& r, std::type_identity_t<T> radius, const HalfHeight<T>& h,
                      LocalAxis along = LocalAxis::z) {
-    return {center, r.column(static_cast<int>(along)), radius, T(2) * h.value};
+    return cylinder(center, r, radius, Height<T>{T(2) * h.value}, along);
 }
 template <class T, class Length>
 Cylinder<T> cylinder(const Vec3<T>& center, const Quaternion<T>& q, std::type_identity_t<T> radius, const Length& length,
@@ -170,7 +252,9 @@ Cylinder<T> cylinder(const Vec3<T>& center, const Quaternion<T>& q, std::type_id
 }
 template <class T, class Length>
 Cylinder<T> cylinder(const RigidTransform<T>& pose, std::type_identity_t<T> radius, const Length& length, LocalAxis along = LocalAxis::z) {
-    return cylinder(translation(pose), rotation(pose), radius, length, along);
+    const RotationMatrix<T> r = rotation(pose);
+    detail::require_rotation(r, "cylinder: transform", detail::cylinder_under_scale);
+    return cylinder(translation(pose), r, radius, length, along);
 }
 
 }  // namespace boxcyl
