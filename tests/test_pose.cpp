@@ -3,10 +3,12 @@
 // checked on probes whose answers the usual mistakes (full vs half sizes, rows vs columns, quaternion
 // order, the cylinder's local axis) change — each test also builds the mistaken shape and shows that
 // its answer differs.
+#include <gmpxx.h>  // exact squares: the heights of cylinder_between
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -259,6 +261,72 @@ TEST(Pose, QuaternionsOfAnyMagnitudeNormalise) {
     EXPECT_EQ(message({1, 0, -inf, 0}), "boxcyl: quaternion: is infinite");
     const RotationMatrix<float> f = rotation(Quaternion<float>{1e30f, 0, 0, 1e30f});  // float: the same scaling
     EXPECT_NEAR(f.m[0][1], -1.0f, 1e-6f);
+}
+
+// height = the smallest double ≥ |p1 − p0|, checked exactly with rationals: h² ≥ |d|² > prev(h)².
+void expect_height_rounded_up(const Cylinder<double>& c) {
+    const mpq_class d2 = mpq_class(c.axis[0]) * c.axis[0] + mpq_class(c.axis[1]) * c.axis[1] + mpq_class(c.axis[2]) * c.axis[2];
+    const double h = c.height, below = std::nextafter(h, 0.0);
+    EXPECT_GE(mpq_class(h) * h, d2) << c.axis[0] << " " << c.axis[1] << " " << c.axis[2];
+    EXPECT_LT(mpq_class(below) * below, d2) << c.axis[0] << " " << c.axis[1] << " " << c.axis[2];
+}
+
+TEST(Pose, CylinderBetweenTwoPoints) {
+    // MuJoCo <geom type="cylinder" fromto="1 2 3  1 2 7" size="0.5">: along z, centred at (1, 2, 5), length 4.
+    const Cylinder<double> c = cylinder_between(V{1, 2, 3}, V{1, 2, 7}, 0.5);
+    EXPECT_EQ(c.center, (V{1, 2, 5}));
+    EXPECT_EQ(c.axis, (V{0, 0, 4}));
+    EXPECT_EQ(c.radius, 0.5);
+    EXPECT_EQ(c.height, 4);
+    ASSERT_TRUE(validate(c).ok());
+    EXPECT_TRUE(intersects(probe_box(V{1, 2, 7.005}), c));   // touches the end disk at p1
+    EXPECT_FALSE(intersects(probe_box(V{1, 2, 7.02}), c));
+    // An integer length is exact: (3, 4, 12) has length 13, so the segment is exactly p0 p1.
+    const Cylinder<double> p = cylinder_between(V{-1, -1, -1}, V{2, 3, 11}, 0.25);
+    EXPECT_EQ(p.center, (V{0.5, 1, 5}));
+    EXPECT_EQ(p.axis, (V{3, 4, 12}));
+    EXPECT_EQ(p.height, 13);
+    // An irrational length rounds up: √3 to nearest is below it, so the height is the next double;
+    // √2 to nearest is above it already.
+    const Cylinder<double> s3 = cylinder_between(V{0, 0, 0}, V{1, 1, 1}, 1.0);
+    EXPECT_EQ(s3.height, std::nextafter(std::sqrt(3.0), 2.0));
+    expect_height_rounded_up(s3);
+    const Cylinder<double> s2 = cylinder_between(V{0, 0, 0}, V{1, 1, 0}, 1.0);
+    EXPECT_EQ(s2.height, std::sqrt(2.0));
+    expect_height_rounded_up(s2);
+    // No intermediate overflow: the midpoint and the length of a segment spanning the whole range.
+    const double big = std::numeric_limits<double>::max();
+    const Cylinder<double> huge = cylinder_between(V{-big, 0, 0}, V{big, 0, 0}, 1.0);
+    EXPECT_EQ(huge.center, (V{0, 0, 0}));
+    EXPECT_EQ(huge.axis, (V{big, 0, 0}));  // p1/2 − p0/2: the direction, at half the length
+    EXPECT_EQ(huge.height, std::numeric_limits<double>::infinity());  // 2·DBL_MAX: validate() refuses it
+    EXPECT_FALSE(validate(huge).ok());
+    const Cylinder<double> wide = cylinder_between(V{big / 2, big / 4, 0}, V{big, big / 2, 0}, 1.0);
+    EXPECT_EQ(wide.center, (V{big * 0.75, big * 0.375, 0}));
+    expect_height_rounded_up(wide);
+    const double tiny = std::numeric_limits<double>::denorm_min();
+    const Cylinder<double> t = cylinder_between(V{0, 0, 0}, V{3 * tiny, 4 * tiny, 0}, 0.0);
+    EXPECT_EQ(t.height, 5 * tiny);
+    EXPECT_EQ(t.center, (V{2 * tiny, 2 * tiny, 0}));  // 1.5 and 2 ulps: rounded once, to even
+    // The same point twice: no axis, which validate() names.
+    EXPECT_EQ(validate(cylinder_between(V{1, 2, 3}, V{1, 2, 3}, 1.0)).message(), "cylinder.axis: is the zero vector");
+    // Random segments of every scale and of mixed scales: always the smallest double ≥ the length.
+    std::mt19937_64 rng(20261127);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    std::uniform_int_distribution<int> exponent(-1070, 1020), spread(0, 60);
+    for (int n = 0; n < 20000; ++n) {
+        const int e = exponent(rng);
+        V a{std::ldexp(unit(rng), e), std::ldexp(unit(rng), e - spread(rng)), std::ldexp(unit(rng), e - spread(rng))};
+        if (n % 3 == 0) a = V{std::round(unit(rng) * 0x1p20), std::round(unit(rng) * 0x1p20), 0};  // many exact lengths
+        const Cylinder<double> r = cylinder_between(V{0, 0, 0}, a, 1.0);
+        if (r.axis == V{0, 0, 0}) continue;
+        expect_height_rounded_up(r);
+    }
+    // Components more than 2^484 apart: the tiny one is not tested exactly, and the height is one ulp up.
+    const Cylinder<double> mixed = cylinder_between(V{0, 0, 0}, V{1, 0x1p-600, 0}, 1.0);
+    EXPECT_EQ(mixed.height, std::nextafter(1.0, 2.0));
+    const Cylinder<float> f = cylinder_between(Vec3<float>{0, 0, 0}, Vec3<float>{3, 4, 0}, 1.0f);
+    EXPECT_EQ(f.height, 5.0f);
 }
 
 }  // namespace

@@ -28,11 +28,22 @@
 // height must be given explicitly with the unscaled pose. A zero, NaN or infinite quaternion and a
 // transform whose bottom row is not (0, 0, 0, 1) throw too. Nothing else is checked: run validate() on
 // the result as on any shape.
+//
+//   cylinder_between(p0, p1, radius)   // MuJoCo's fromto, trimesh's segment=: the axis from p0 to p1
+//
+// gives the Cylinder {center = (p0 + p1)/2 rounded once to nearest, axis = p1 − p0 rounded once to
+// nearest, radius, height = |p1 − p0| rounded up}: the midpoint and the difference are exact when they
+// are doubles (coordinates on a common grid of moderate size, e.g. integers below 2^52), and the height
+// is the smallest double ≥ the length of the axis as stored (exact when that length is a double, as for a
+// segment along a coordinate axis or with integer length), so that when center and axis are exact the
+// cylinder's segment contains the segment p0 p1 and exceeds it by less than one ulp of the length
+// (half at each end); it is exactly p0 p1 when the length is a double as well. (One ulp more when the
+// differences' components span more than 2^484 in magnitude, where the exact test is not made.)
 #pragma once
 
 #include <algorithm>    // std::max
 #include <array>        // matrices
-#include <cmath>        // std::ldexp, std::ilogb: quaternion scaling
+#include <cmath>        // std::fma, std::ldexp, std::ilogb, std::nextafter: quaternion scaling, lengths
 #include <concepts>     // std::floating_point
 #include <cstddef>      // std::size_t
 #include <cstdio>       // std::snprintf: the Gram entry in messages
@@ -255,6 +266,110 @@ Cylinder<T> cylinder(const RigidTransform<T>& pose, std::type_identity_t<T> radi
     const RotationMatrix<T> r = rotation(pose);
     detail::require_rotation(r, "cylinder: transform", detail::cylinder_under_scale);
     return cylinder(translation(pose), r, radius, length, along);
+}
+
+// ---- Cylinders between two points (see the header comment for what is exact) ----
+namespace detail {
+
+// x rounded to T and read back: a product stored here cannot be fused with the sum that uses it
+// (-ffp-contract=fast), which would break the error-free transformations below.
+template <class T>
+T stored(T x) {
+    volatile T v = x;
+    return v;
+}
+
+// The sign of the exact sum of the values: Shewchuk's grow-expansion (Knuth's TwoSum, exact in round to
+// nearest, subnormals included) keeps the sum as non-overlapping components of increasing magnitude,
+// whose largest non-zero one has the sum's sign.
+template <class T, std::size_t N>
+int sign_of_sum(const std::array<T, N>& values) {
+    std::array<T, N> e{};
+    std::size_t m = 0;
+    for (T q : values) {
+        std::size_t k = 0;
+        for (std::size_t j = 0; j < m; ++j) {
+            const T s = q + e[j];
+            const T bb = s - q;
+            const T err = (q - (s - bb)) + (e[j] - bb);
+            if (err != T(0)) e[k++] = err;
+            q = s;
+        }
+        e[k++] = q;
+        m = k;
+    }
+    for (std::size_t j = m; j-- > 0;)
+        if (e[j] != T(0)) return e[j] > T(0) ? 1 : -1;
+    return 0;
+}
+
+// The smallest T ≥ |d| (the Euclidean length, exactly), or ∞ beyond the range; NaN for NaN input.
+// On d scaled by a power of two (largest component in [1, 2)), each square is c² = q + r exactly (an
+// FMA) and a candidate h is tested by the exact sign of h² − Σ c²; the rounded root starts the search
+// a few ulps away. Components below 2^((min_exponent + digits)/2) after scaling (more than 2^484 below
+// the largest, for double) would make r underflow: they are left out of the test and the result is
+// raised by one ulp, which covers them.
+template <std::floating_point T>
+T length_rounded_up(const Vec3<T>& d) {
+    T m = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (std::isnan(d[k])) return d[k];
+        m = std::max(m, std::fabs(d[k]));
+    }
+    if (m == T(0) || !(m <= std::numeric_limits<T>::max())) return m;
+    const int e = std::ilogb(m);
+    const T tiny = std::ldexp(T(1), (std::numeric_limits<T>::min_exponent + std::numeric_limits<T>::digits) / 2);
+    std::array<T, 8> terms{};  // h², h²'s error, then −q, −r of each component
+    bool left_out = false;
+    T sum = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const T c = std::ldexp(d[k], -e);
+        if (std::fabs(c) < tiny) {
+            left_out |= d[k] != T(0);
+            continue;
+        }
+        const T q = stored(c * c);
+        terms[2 + 2 * k] = -q;
+        terms[3 + 2 * k] = -std::fma(c, c, -q);
+        sum += q;
+    }
+    auto at_least = [&](T h) {  // h² ≥ Σ c² (the components kept), exactly
+        std::array<T, 8> t = terms;
+        t[0] = stored(h * h);
+        t[1] = std::fma(h, h, -t[0]);
+        return sign_of_sum(t) >= 0;
+    };
+    constexpr T inf = std::numeric_limits<T>::infinity();
+    T h = std::sqrt(sum);
+    while (!at_least(h)) h = std::nextafter(h, inf);
+    for (T lower = std::nextafter(h, T(0)); at_least(lower); lower = std::nextafter(h, T(0))) h = lower;
+    if (left_out) h = std::nextafter(h, inf);
+    T scaled = std::ldexp(h, e);  // exact, unless it overflows (∞) or falls below the normal range
+    if (std::ldexp(scaled, -e) < h) scaled = std::nextafter(scaled, inf);
+    return scaled;
+}
+
+}  // namespace detail
+
+// The cylinder of the given radius whose axis segment runs from p0 to p1 (MuJoCo's fromto, trimesh's
+// cylinder(segment=...)): center (p0 + p1)/2 and axis p1 − p0, each rounded once to nearest (computed
+// without intermediate overflow), height the smallest double ≥ the axis's length (the header comment
+// says what is exact). p0 == p1 gives a zero axis, which validate() refuses.
+template <std::floating_point T>
+Cylinder<T> cylinder_between(const Vec3<T>& p0, const Vec3<T>& p1, std::type_identity_t<T> radius) {
+    Vec3<T> center, axis;
+    bool halves = false;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const T s = p0[k] + p1[k];
+        center[k] = std::isinf(s) ? p0[k] * T(0.5) + p1[k] * T(0.5) : s * T(0.5);
+        axis[k] = p1[k] - p0[k];
+        halves |= std::isinf(axis[k]) && std::isfinite(p0[k]) && std::isfinite(p1[k]);
+    }
+    if (halves) {  // the difference overflows: the same direction at half the length
+        for (std::size_t k = 0; k < 3; ++k) axis[k] = p1[k] * T(0.5) - p0[k] * T(0.5);
+        return {center, axis, radius, T(2) * detail::length_rounded_up(axis)};
+    }
+    return {center, axis, radius, detail::length_rounded_up(axis)};
 }
 
 }  // namespace boxcyl
