@@ -139,6 +139,33 @@ TEST(PeerConventions, Trimesh) {
     EXPECT_FALSE(cylinder_answers_as_r02_len2(cylinder(t, 0.2, HalfHeight<double>{2}), 2));
 }
 
+// ODE: dCreateBox(space, lx, ly, lz) takes full side lengths; dCreateCylinder(space, radius, length)
+// the full length along local z; dGeomSetRotation takes a dMatrix3, 12 numbers: R row by row, each
+// row padded to 4 (R(i, j) = m[4·i + j], the 4th of each row unused); dQuaternion is (w, x, y, z).
+TEST(PeerConventions, Ode) {
+    const double dmatrix3[12] = {0.6, -0.8, 0, 0, 0.8, 0.6, 0, 0, 0, 0, 1, 0};  // as dRFromAxisAndAngle fills it
+    const RotationMatrix<double> r{{{{dmatrix3[0], dmatrix3[1], dmatrix3[2]},
+                                     {dmatrix3[4], dmatrix3[5], dmatrix3[6]},
+                                     {dmatrix3[8], dmatrix3[9], dmatrix3[10]}}}};
+    const double lengths[3] = {10, 1, 1};  // dCreateBox(space, 10, 1, 1)
+    expect_box_10_1_1(oriented_box(origin, r, Size<double>{lengths[0], lengths[1], lengths[2]}));
+    const double radius = 0.2, length = 2;  // dCreateCylinder(space, 0.2, 2)
+    expect_cylinder_r02_len2(cylinder(origin, r, radius, Height<double>{length}), 2);
+    const double dquat[4] = {qw, 0, 0, qz};  // dQuaternion: w first
+    const Quaternion<double> q{.w = dquat[0], .x = dquat[1], .y = dquat[2], .z = dquat[3]};
+    expect_box_10_1_1(oriented_box(origin, q, Size<double>{lengths[0], lengths[1], lengths[2]}));
+    // The mistakes: the lengths as half extents; the 12 numbers read as a packed 3×3 (no padding),
+    // which is no rotation; the length as a half height; the quaternion read as (x, y, z, w).
+    EXPECT_FALSE(box_answers_as_10_1_1(oriented_box(origin, r, HalfExtents<double>{lengths[0], lengths[1], lengths[2]})));
+    const RotationMatrix<double> packed{{{{dmatrix3[0], dmatrix3[1], dmatrix3[2]},
+                                          {dmatrix3[3], dmatrix3[4], dmatrix3[5]},
+                                          {dmatrix3[6], dmatrix3[7], dmatrix3[8]}}}};
+    EXPECT_THROW(oriented_box(origin, packed, Size<double>{lengths[0], lengths[1], lengths[2]}), std::invalid_argument);
+    EXPECT_FALSE(cylinder_answers_as_r02_len2(cylinder(origin, r, radius, HalfHeight<double>{length}), 2));
+    const Quaternion<double> scalar_last{.w = dquat[3], .x = dquat[0], .y = dquat[1], .z = dquat[2]};
+    EXPECT_FALSE(box_answers_as_10_1_1(oriented_box(origin, scalar_last, Size<double>{lengths[0], lengths[1], lengths[2]})));
+}
+
 // A trimesh box (extents = full lengths) under a transform with scale: the parallelepiped spanned by
 // the transform's columns. The unit cube under diag(3, 4, 5)·R (R the 3-4-5 rotation) is the box of
 // half sizes 1.5, 2, 2.5 in R's frame; reading the size as half extents doubles it.
