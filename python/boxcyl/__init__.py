@@ -27,10 +27,10 @@ min > max, axes not orthonormal to 1e-4). Every refusal is a ``ValueError`` nami
 the element in a batch: ``"boxes[17].max[0]: is less than boxes[17].min[0]"``.
 """
 
-import decimal
-import numbers
+import decimal as _decimal
+import numbers as _numbers
 
-import numpy as np
+import numpy as _np
 
 from . import _core
 from ._core import Algorithm, Arithmetic, __version__
@@ -61,16 +61,16 @@ _REFUSED_KINDS = {
     "S": ("bytes", "an array of bytes"),
     "V": ("a structured value", "an array of structured values"),
 }
-_REAL_TYPES = (numbers.Real, decimal.Decimal)
+_REAL_TYPES = (_numbers.Real, _decimal.Decimal)
 
 
 def _where(name, shape, flat_index):
     """``name`` followed by the element's index, as ``boxes[3][1][2]``."""
-    return name + "".join(f"[{i}]" for i in np.unravel_index(flat_index, shape)) if shape else name
+    return name + "".join(f"[{i}]" for i in _np.unravel_index(flat_index, shape)) if shape else name
 
 
 def _is_real_type(t):
-    return issubclass(t, _REAL_TYPES) and not issubclass(t, (bool, np.bool_))
+    return issubclass(t, _REAL_TYPES) and not issubclass(t, (bool, _np.bool_))
 
 
 def _from_objects(name, a):
@@ -80,11 +80,11 @@ def _from_objects(name, a):
     if bad:
         i = next(k for k, x in enumerate(flat) if type(x) in bad)
         x = flat[i]
-        what = ("a nested sequence (rows of different lengths?)" if isinstance(x, (list, tuple, np.ndarray))
+        what = ("a nested sequence (rows of different lengths?)" if isinstance(x, (list, tuple, _np.ndarray))
                 else "None" if x is None else f"a {type(x).__name__} ({x!r})")
         raise ValueError(f"{_where(name, a.shape, i)}: is {what}; expected a real number")
     try:
-        return a.astype(np.float64)
+        return a.astype(_np.float64)
     except OverflowError:
         i = next(k for k, x in enumerate(flat) if not _fits_float(x))
         raise ValueError(f"{_where(name, a.shape, i)}: is too large for float64") from None
@@ -101,33 +101,33 @@ def _fits_float(x):
 def _hides_refused(seq):
     """What numpy would silently turn into a number inside nested lists: a bool or a masked array."""
     for x in seq:
-        if isinstance(x, (bool, np.bool_)):
+        if isinstance(x, (bool, _np.bool_)):
             return "booleans"
-        if isinstance(x, np.ma.MaskedArray):
+        if isinstance(x, _np.ma.MaskedArray):
             return "a masked array"
         if isinstance(x, (list, tuple)):
             found = _hides_refused(x)
             if found:
                 return found
-        elif isinstance(x, np.ndarray) and x.dtype.kind == "b":
+        elif isinstance(x, _np.ndarray) and x.dtype.kind == "b":
             return "booleans"
     return None
 
 
 def _real_array(name, value):
     """``value`` as a float64 ndarray (no copy when it is one already), or a ValueError naming ``name``."""
-    if isinstance(value, np.ndarray) and value.dtype == np.float64 and type(value) is np.ndarray:
+    if isinstance(value, _np.ndarray) and value.dtype == _np.float64 and type(value) is _np.ndarray:
         return value  # the fast path: nothing to check or convert
     if value is None:
         raise ValueError(f"{name}: is None; expected real numbers")
-    if isinstance(value, np.ma.MaskedArray):
+    if isinstance(value, _np.ma.MaskedArray):
         raise ValueError(f"{name}: is a masked array, whose masked entries would be read as numbers; "
                          "pass a plain array of the entries you mean")
-    if isinstance(value, (bool, np.bool_)):
+    if isinstance(value, (bool, _np.bool_)):
         raise ValueError(f"{name}: is a bool ({value!r}); expected a real number")
     if isinstance(value, (list, tuple)):
         try:
-            a = np.asarray(value)
+            a = _np.asarray(value)
         except ValueError:  # numpy refuses ragged nesting
             raise ValueError(f"{name}: is not a regular array (nested sequences of different lengths)") from None
         if a.dtype.kind in "iuf":
@@ -135,10 +135,10 @@ def _real_array(name, value):
             if hidden:
                 raise ValueError(f"{name}: contains {hidden}; expected real numbers")
     else:
-        a = np.asarray(value)
+        a = _np.asarray(value)
     kind = a.dtype.kind
     if kind in "iuf":
-        return a.astype(np.float64, copy=False)
+        return a.astype(_np.float64, copy=False)
     if kind == "O":
         return _from_objects(name, a)
     one, many = _REFUSED_KINDS.get(kind, ("a value", "an array of values"))
@@ -185,7 +185,7 @@ def _quaternion(wxyz, xyzw):
     q = _real_array(order, q)
     if q.shape != (4,):
         raise ValueError(f"{order}: expected 4 numbers, got {_shape_text(q)}")
-    w, x, y, z = q.tolist() if order == "wxyz" else np.roll(q, 1).tolist()
+    w, x, y, z = q.tolist() if order == "wxyz" else _np.roll(q, 1).tolist()
     return (w, x, y, z)
 
 
@@ -217,29 +217,43 @@ def _along(along):
 
 # ---- The shapes: immutable, validated, equal by value, picklable, printed as built. ---------------
 
-class AlignedBox(_core.AlignedBox):
+class _ByValue:
+    """Equality, hashing and pickling by the fields a shape class names in ``_FIELDS`` (its
+    constructor's arguments, in order): shapes of the same class with equal fields are equal."""
+
+    __slots__ = ()
+    _FIELDS = ()
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        if "_FIELDS" in cls.__dict__:
+            cls._SHAPE = cls  # the class that named the fields: what equality and pickling go by
+
+    def _key(self):
+        return tuple(getattr(self, name) for name in self._FIELDS)
+
+    def __eq__(self, other):
+        return self._key() == other._key() if isinstance(other, self._SHAPE) else NotImplemented
+
+    def __hash__(self):
+        return hash((self._SHAPE.__name__,) + self._key())
+
+    def __reduce__(self):
+        return (self._SHAPE, self._key())
+
+
+class AlignedBox(_ByValue, _core.AlignedBox):
     """The closed axis-aligned box ``min <= X <= max`` (componentwise); equal bounds give a flat box
     or a point. Immutable; validated when built (``ValueError`` naming the field)."""
 
     __slots__ = ()
+    _FIELDS = ("min", "max")
 
     def __init__(self, min, max):  # noqa: A002 (the fields' names)
         super().__init__(_vector("box.min", min), _vector("box.max", max))
 
-    def _key(self):
-        return (self.min, self.max)
 
-    def __eq__(self, other):
-        return self._key() == other._key() if isinstance(other, AlignedBox) else NotImplemented
-
-    def __hash__(self):
-        return hash(("AlignedBox",) + self._key())
-
-    def __reduce__(self):
-        return (AlignedBox, self._key())
-
-
-class OrientedBox(_core.OrientedBox):
+class OrientedBox(_ByValue, _core.OrientedBox):
     """The closed solid ``{center + x0*axes[0] + x1*axes[1] + x2*axes[2] : |xi| <= extents[i]}``:
     ``axes`` are the box's axes as **rows** (orthonormal to within 1e-4: a rotation rounded to double
     is fine), ``extents`` are **half** side lengths. For a rotation matrix (axes as columns), a
@@ -247,21 +261,10 @@ class OrientedBox(_core.OrientedBox):
     ``OrientedBox.from_rotation`` etc. Immutable; validated when built."""
 
     __slots__ = ()
+    _FIELDS = ("center", "axes", "extents")
 
     def __init__(self, center, axes, extents):
         super().__init__(_vector("box.center", center), _matrix("box.axes", axes), _vector("box.extents", extents))
-
-    def _key(self):
-        return (self.center, self.axes, self.extents)
-
-    def __eq__(self, other):
-        return self._key() == other._key() if isinstance(other, OrientedBox) else NotImplemented
-
-    def __hash__(self):
-        return hash(("OrientedBox",) + self._key())
-
-    def __reduce__(self):
-        return (OrientedBox, self._key())
 
     @classmethod
     def from_rotation(cls, center, rotation, *, half_extents=None, size=None):
@@ -294,52 +297,30 @@ class OrientedBox(_core.OrientedBox):
         return cls(b.center, b.axes, b.extents)
 
 
-class Parallelepiped(_core.Parallelepiped):
+class Parallelepiped(_ByValue, _core.Parallelepiped):
     """The closed solid ``{center + x0*axes[0] + x1*axes[1] + x2*axes[2] : |xi| <= extents[i]}`` for
     **any** three axes (rows), exactly as given: any lengths and angles, e.g. ``(3, 4, 0), (-4, 3, 0),
     (0, 0, 5)`` (a box with integer vertices); parallel or zero axes give flat solids. Answered exactly
     like the other kinds. Immutable; validated when built (finite numbers, extents >= 0)."""
 
     __slots__ = ()
+    _FIELDS = ("center", "axes", "extents")
 
     def __init__(self, center, axes, extents):
         super().__init__(_vector("box.center", center), _matrix("box.axes", axes), _vector("box.extents", extents))
 
-    def _key(self):
-        return (self.center, self.axes, self.extents)
 
-    def __eq__(self, other):
-        return self._key() == other._key() if isinstance(other, Parallelepiped) else NotImplemented
-
-    def __hash__(self):
-        return hash(("Parallelepiped",) + self._key())
-
-    def __reduce__(self):
-        return (Parallelepiped, self._key())
-
-
-class Cylinder(_core.Cylinder):
+class Cylinder(_ByValue, _core.Cylinder):
     """A closed finite cylinder: the points within ``radius`` of the axis segment
     ``center ± (height/2)·axis/|axis|``. ``height`` is the **full** length; ``axis`` need not be unit
     length; radius 0 is a segment, height 0 a disk. Immutable; validated when built."""
 
     __slots__ = ()
+    _FIELDS = ("center", "axis", "radius", "height")
 
     def __init__(self, center, axis, radius, height):
         super().__init__(_vector("cylinder.center", center), _vector("cylinder.axis", axis),
                          _scalar("cylinder.radius", radius), _scalar("cylinder.height", height))
-
-    def _key(self):
-        return (self.center, self.axis, self.radius, self.height)
-
-    def __eq__(self, other):
-        return self._key() == other._key() if isinstance(other, Cylinder) else NotImplemented
-
-    def __hash__(self):
-        return hash(("Cylinder",) + self._key())
-
-    def __reduce__(self):
-        return (Cylinder, self._key())
 
     @classmethod
     def from_rotation(cls, center, rotation, *, radius, height=None, half_height=None, along="z"):
@@ -393,7 +374,7 @@ def _threads(threads):
     """None → 0 (all cores) for the core; a positive int as is."""
     if threads is None:
         return 0
-    if isinstance(threads, (bool, np.bool_)) or not isinstance(threads, numbers.Integral) or threads < 1:
+    if isinstance(threads, (bool, _np.bool_)) or not isinstance(threads, _numbers.Integral) or threads < 1:
         raise ValueError(f"threads: expected a positive integer or None (all cores); got {threads!r}")
     return min(int(threads), 1 << 16)
 
@@ -481,7 +462,7 @@ def _objects(name, seq, cls):
 
 
 def _rows(values, tail):
-    return np.array(values, dtype=np.float64).reshape((len(values),) + tail)
+    return _np.array(values, dtype=_np.float64).reshape((len(values),) + tail)
 
 
 _SHAPES_AS_SEQUENCE = ("for a sequence of boxes pass a list, or an array of shape (N, 2, 3) with boxes[i] = "
@@ -491,7 +472,7 @@ _SHAPES_AS_SEQUENCE = ("for a sequence of boxes pass a list, or an array of shap
 def _aligned_boxes(boxes):
     """(min, max) float64 arrays of shape (M, 3), and whether they are one box for all."""
     if isinstance(boxes, _core.AlignedBox):
-        return [np.array([boxes.min]), np.array([boxes.max])], True
+        return [_np.array([boxes.min]), _np.array([boxes.max])], True
     if _objects("boxes", boxes, _core.AlignedBox):
         return [_rows([b.min for b in boxes], (3,)), _rows([b.max for b in boxes], (3,))], False
     if isinstance(boxes, tuple):
@@ -512,14 +493,14 @@ def _aligned_boxes(boxes):
         raise ValueError(f"boxes: expected shape (N, 2, 3) or (2, 3), got {b.shape}")
     single = b.ndim == 2
     if single:
-        b = b[np.newaxis]
+        b = b[_np.newaxis]
     return [b[:, 0, :], b[:, 1, :]], single  # views: the core reads any strides
 
 
 def _frame_boxes(boxes, cls=_core.OrientedBox):
     """(center, axes, extents) float64 arrays of shapes (M, 3), (M, 3, 3), (M, 3), and whether single."""
     if isinstance(boxes, cls):
-        return [np.array([boxes.center]), np.array([boxes.axes]), np.array([boxes.extents])], True
+        return [_np.array([boxes.center]), _np.array([boxes.axes]), _np.array([boxes.extents])], True
     if _objects("boxes", boxes, cls):
         return [_rows([b.center for b in boxes], (3,)), _rows([b.axes for b in boxes], (3, 3)),
                 _rows([b.extents for b in boxes], (3,))], False
@@ -533,7 +514,7 @@ def _cylinders(cylinders):
     """(center, axis, radius, height) float64 arrays of shapes (M, 3), (M, 3), (M,), (M,); single."""
     if isinstance(cylinders, _core.Cylinder):
         c = cylinders
-        return [np.array([c.center]), np.array([c.axis]), np.array([c.radius]), np.array([c.height])], True
+        return [_np.array([c.center]), _np.array([c.axis]), _np.array([c.radius]), _np.array([c.height])], True
     if _objects("cylinders", cylinders, _core.Cylinder):
         return [_rows([c.center for c in cylinders], (3,)), _rows([c.axis for c in cylinders], (3,)),
                 _rows([c.radius for c in cylinders], ()), _rows([c.height for c in cylinders], ())], False
@@ -651,3 +632,4 @@ def intersects_parallelepiped(boxes, cylinders, *, algorithm=Algorithm.inequalit
     _check_lengths(box_arrays + cyl)
     return _core._intersects_parallelepiped(*box_arrays, box_single, *cyl, cylinder_single,
                                             *_options(algorithm, arithmetic), _threads(threads))
+

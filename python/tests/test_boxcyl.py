@@ -333,3 +333,31 @@ def test_one_cylinder_batch_equals_scalar():
     for i in range(0, n, 97):
         box = boxcyl.OrientedBox(center=centers[i], axes=axes[i], extents=extents[i])
         assert obatch[i] == boxcyl.intersects(box, cyl), (i, box, cyl)
+
+
+def test_the_package_exports_only_its_api():
+    """Module imports are private (numpy as _np, ...): the public names are __all__ (and submodules)."""
+    assert not any(hasattr(boxcyl, name) for name in ("np", "numbers", "decimal"))
+    public = {name for name in dir(boxcyl) if not name.startswith("_")} - {"dask"}
+    assert public == set(boxcyl.__all__) - {"__version__"}
+
+
+def test_equality_hash_and_pickling_by_value_for_every_shape():
+    import pickle
+
+    shapes = [unit_box(), boxcyl.OrientedBox(center=(1, 2, 3), axes=np.eye(3), extents=(1, 2, 3)),
+              boxcyl.Parallelepiped(center=(1, 2, 3), axes=np.eye(3), extents=(1, 2, 3)),
+              boxcyl.Cylinder(center=(1, 2, 3), axis=(0, 0, 2), radius=1, height=2)]
+    for shape in shapes:
+        again = pickle.loads(pickle.dumps(shape))
+        assert type(again) is type(shape) and again == shape and hash(again) == hash(shape)
+        assert eval(repr(shape), vars(boxcyl)) == shape
+    # Same fields, another kind: not equal (an OrientedBox is no Parallelepiped), hashes apart.
+    assert shapes[1] != shapes[2] and len({hash(s) for s in shapes}) == 4
+    assert (shapes[0] == (unit_box().min, unit_box().max)) is False
+
+    class Named(boxcyl.AlignedBox):  # a user's subclass compares and pickles as the box it is
+        __slots__ = ()
+
+    assert Named(min=(-1, -1, -1), max=(1, 1, 1)) == unit_box()
+    assert pickle.loads(pickle.dumps(Named(min=(-1, -1, -1), max=(1, 1, 1)))) == unit_box()
