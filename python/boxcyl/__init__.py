@@ -371,11 +371,11 @@ def _options(algorithm, arithmetic):
 
 
 def _threads(threads):
-    """None → 0 (all cores) for the core; a positive int as is."""
+    """None or 0 → 0 (all cores, as the CLI's --threads 0) for the core; a positive int as is."""
     if threads is None:
         return 0
-    if isinstance(threads, (bool, _np.bool_)) or not isinstance(threads, _numbers.Integral) or threads < 1:
-        raise ValueError(f"threads: expected a positive integer or None (all cores); got {threads!r}")
+    if isinstance(threads, (bool, _np.bool_)) or not isinstance(threads, _numbers.Integral) or threads < 0:
+        raise ValueError(f"threads: expected a non-negative integer (0 or None: all cores); got {threads!r}")
     return min(int(threads), 1 << 16)
 
 
@@ -548,7 +548,7 @@ def intersects_aligned(boxes, cylinders, *, algorithm=Algorithm.inequalities, ar
     algorithm, arithmetic : Algorithm / Arithmetic or their names, optional
         The default (``"inequalities"``, ``"filtered"``) is the exact query.
     threads : int or None, optional
-        How many threads answer (None, the default: all cores; small batches use fewer).
+        How many threads answer (None or 0, the default: all cores; small batches use fewer).
 
     Returns
     -------
