@@ -291,7 +291,8 @@ class OrientedBox(_ByValue, _core.OrientedBox):
     def from_transform(cls, transform, *, half_extents=None, size=None):
         """The box posed by a 4×4 rigid transform (rotation in the top-left 3×3 block, columns = axes;
         the centre in the last column; bottom row 0, 0, 0, 1: trimesh, Eigen's ``Isometry3d``).
-        Sizes as for :meth:`from_rotation`."""
+        Sizes as for :meth:`from_rotation`. A transform with scale or shear is refused (its box is
+        a parallelepiped: :meth:`Parallelepiped.from_transform`)."""
         sizes, full = _box_sizes(half_extents, size)
         b = _core._box_from_transform(_transform(transform), sizes, full)
         return cls(b.center, b.axes, b.extents)
@@ -308,6 +309,16 @@ class Parallelepiped(_ByValue, _core.Parallelepiped):
 
     def __init__(self, center, axes, extents):
         super().__init__(_vector("box.center", center), _matrix("box.axes", axes), _vector("box.extents", extents))
+
+    @classmethod
+    def from_transform(cls, transform, *, half_extents=None, size=None):
+        """The image of the box ``|x_i| <= half_extents[i]`` (or of side lengths ``size``) under a 4×4
+        affine transform, exactly: ``center`` = its translation (last column), ``axes`` = the
+        **columns** of its top-left 3×3 block as given (any scale, shear or reflection), bottom row
+        0, 0, 0, 1 — e.g. a trimesh box whose transform has scale."""
+        sizes, full = _box_sizes(half_extents, size)
+        b = _core._parallelepiped_from_transform(_transform(transform), sizes, full)
+        return cls(b.center, b.axes, b.extents)
 
 
 class Cylinder(_ByValue, _core.Cylinder):
@@ -346,10 +357,26 @@ class Cylinder(_ByValue, _core.Cylinder):
     @classmethod
     def from_transform(cls, transform, *, radius, height=None, half_height=None, along="z"):
         """As :meth:`from_rotation`, posed by a 4×4 rigid transform (see
-        :meth:`OrientedBox.from_transform`); the centre is the transform's translation."""
+        :meth:`OrientedBox.from_transform`); the centre is the transform's translation. A transform
+        with scale is refused rather than read as a rotation: scaling changes the radius and the
+        height (a non-uniform scale makes an elliptic cylinder), which boxcyl takes as given."""
         length, half = _cylinder_length(height, half_height)
         c = _core._cylinder_from_transform(_transform(transform), _scalar("radius", radius), length, half,
                                            _along(along))
+        return cls(c.center, c.axis, c.radius, c.height)
+
+    @classmethod
+    def from_endpoints(cls, p0, p1, *, radius):
+        """The cylinder whose axis runs from ``p0`` to ``p1`` (MuJoCo's ``fromto``, trimesh's
+        ``cylinder(segment=...)``): ``center`` = (p0 + p1)/2 and ``axis`` = p1 − p0, each rounded once
+        to the nearest float64 (exact when they are float64 values: coordinates on a common grid),
+        and ``height`` = the smallest float64 ≥ |p1 − p0|, exact when the length is a float64. So
+        the cylinder's segment contains the segment p0 p1, longer by less than an ulp of the length
+        (when center and axis are exact), and is exactly p0 p1 when the length is a float64 too."""
+        a, b = _vector("p0", p0), _vector("p1", p1)
+        if a == b:
+            raise ValueError(f"p0, p1: are the same point {a}; a cylinder between them has no axis")
+        c = _core._cylinder_between(a, b, _scalar("radius", radius))
         return cls(c.center, c.axis, c.radius, c.height)
 
 
