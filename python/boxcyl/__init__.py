@@ -17,7 +17,7 @@ Cylinder(center=(3.0, 0.0, 0.0), axis=(0.0, 0.0, 5.0), radius=2.0, height=1.0)
 
 Batch forms take arrays and return a numpy bool array; see :func:`intersects_aligned`,
 :func:`intersects_oriented` and :func:`intersects_parallelepiped`; :mod:`boxcyl.dask` answers
-chunked Dask arrays.
+chunked Dask arrays. :func:`grid_cells` lists the cells of a regular grid that a cylinder meets.
 
 Input policy: numbers are real numbers, read as float64 (numpy integer and float arrays, Python
 ints and floats, and object arrays of real numbers such as ``Fraction`` or ``Decimal``, each
@@ -42,6 +42,7 @@ __all__ = [
     "Cylinder",
     "OrientedBox",
     "Parallelepiped",
+    "grid_cells",
     "intersects",
     "intersects_aligned",
     "intersects_oriented",
@@ -660,3 +661,66 @@ def intersects_parallelepiped(boxes, cylinders, *, algorithm=Algorithm.inequalit
     return _core._intersects_parallelepiped(*box_arrays, box_single, *cyl, cylinder_single,
                                             *_options(algorithm, arithmetic), _threads(threads))
 
+
+# ---- The grid query. ---------------------------------------------------------------------------------
+
+def _counts(value):
+    """Three cell counts as Python ints, or a ValueError naming grid.counts."""
+    if isinstance(value, _np.ndarray):
+        items = value.tolist() if value.ndim == 1 else None
+    elif isinstance(value, (list, tuple)):
+        items = list(value)
+    else:
+        items = None
+    if items is None or len(items) != 3:
+        raise ValueError(f"grid.counts: expected 3 integers, got {value!r}")
+    for k, x in enumerate(items):
+        if isinstance(x, (bool, _np.bool_)) or not isinstance(x, _numbers.Integral):
+            raise ValueError(f"grid.counts[{k}]: is {_a(type(x).__name__)} ({x!r}); expected an integer")
+        if x > 1 << 53:
+            raise ValueError(f"grid.counts[{k}]: exceeds 2^53")
+        if x < 0:
+            raise ValueError(f"grid.counts[{k}]: is negative")
+    return tuple(int(x) for x in items)
+
+
+def grid_cells(origin, cell_size, counts, cylinder, *, max_cells=None):
+    """The cells of a regular axis-aligned grid that the cylinder intersects, exactly.
+
+    Cell ``(i, j, k)``, ``0 <= i < counts[0]`` etc., is the closed box whose bounds along each axis
+    are ``fma(n, cell_size, origin)`` — ``origin + n*cell_size`` rounded once to the nearest float64
+    — for ``n = i`` and ``i + 1`` (``j``, ``j + 1`` along y; ``k``, ``k + 1`` along z). Adjacent
+    cells share their faces exactly and tile the grid's box. A cell is listed if and only if
+    :func:`intersects` (the exact default: closed solids, touching counts) is true for that box —
+    the cells of C++'s ``boxcyl::cells(grid, cylinder)`` and of ``boxcyl grid``.
+
+    Parameters
+    ----------
+    origin, cell_size : array_like (3,)
+        The grid's corner and its cells' sides (> 0 each).
+    counts : 3 integers
+        Cells per axis, 0 to 2^53 (0: no cells); the far bound ``origin + counts*cell_size`` must
+        stay within the float64 range.
+    cylinder : Cylinder
+    max_cells : int or None, optional
+        Refuse (``ValueError``) an answer of more cells than this, found without listing them all.
+
+    Returns
+    -------
+    numpy.ndarray of int64, shape (M, 3)
+        The cells' indices, in lexicographic order of (i, j, k).
+
+    The walk discards blocks of cells that miss the cylinder with one exact query each, so its cost
+    grows with the cells near the cylinder's surface, not with the grid's size; it runs with the GIL
+    released, and Ctrl-C stops it.
+    """
+    if not isinstance(cylinder, _core.Cylinder):
+        raise ValueError(f"cylinder: expected a Cylinder, got {_type_name(cylinder)}")
+    if max_cells is None:
+        limit = -1
+    elif isinstance(max_cells, (bool, _np.bool_)) or not isinstance(max_cells, _numbers.Integral) or max_cells < 0:
+        raise ValueError(f"max_cells: expected a non-negative integer or None; got {max_cells!r}")
+    else:
+        limit = min(int(max_cells), (1 << 63) - 1)
+    return _core._grid_cells(_vector("grid.origin", origin), _vector("grid.cell_size", cell_size), _counts(counts),
+                             cylinder, limit)

@@ -1,6 +1,6 @@
 # Type stubs of the package boxcyl (PEP 561: see py.typed). The runtime is __init__.py over the
 # compiled boxcyl._core; these describe what users call.
-from typing import ClassVar, Dict, Literal, Optional, Sequence, SupportsFloat, Tuple, Union
+from typing import Any, ClassVar, Dict, Literal, Optional, Sequence, SupportsFloat, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -120,6 +120,8 @@ _OrientedBoxes = Union[Tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike], Orien
 _Parallelepipeds = Union[Tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike], Parallelepiped, Sequence[Parallelepiped]]
 _Cylinders = Union[Cylinder, Sequence[Cylinder], Tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike]]
 
+def grid_cells(origin: npt.ArrayLike, cell_size: npt.ArrayLike, counts: Union[Sequence[int], npt.NDArray[np.integer[Any]]],
+               cylinder: Cylinder, *, max_cells: Optional[int] = ...) -> npt.NDArray[np.int64]: ...
 def intersects(box: Union[AlignedBox, OrientedBox, Parallelepiped], cylinder: Cylinder, *, algorithm: _AlgorithmLike = ...,
                arithmetic: _ArithmeticLike = ...) -> bool: ...
 def intersects_aligned(boxes: _AlignedBoxes, cylinders: _Cylinders, *, algorithm: _AlgorithmLike = ...,
