@@ -53,7 +53,8 @@ def timed(call):
 
 
 def cpp_cylinder(cyl):
-    return cpp.Cylinder(cyl.center, cyl.axis, cyl.radius, cyl.height)
+    """The cylinder as _boxcyl_bench takes it: center, axis, radius, height."""
+    return (cyl.center, cyl.axis, cyl.radius, cyl.height)
 
 
 def aligned_case(rng, n):
@@ -122,36 +123,36 @@ def main():
     boxes, cyl = aligned_case(rng, n)
     ccyl = cpp_cylinder(cyl)
     soa = np.ascontiguousarray(np.moveaxis(boxes, 0, -1).reshape(6, n))  # min_x, min_y, min_z, max_x, ...
-    expected, _, _ = cpp.aligned(soa, ccyl, 1)
+    expected, _, _ = cpp.aligned(soa, *ccyl, 1)
     assert np.array_equal(boxcyl.intersects_aligned(boxes, cyl), expected)
-    assert np.array_equal(cpp.aligned_rows(boxes, ccyl, 1)[0], expected)
+    assert np.array_equal(cpp.aligned_rows(boxes, *ccyl, 1)[0], expected)
     print(f"aligned: {expected.mean() * 100:.1f} % hit")
 
     def layout_and_batch(threads):
         w, c = time.perf_counter(), time.process_time()
         s = np.ascontiguousarray(np.moveaxis(boxes, 0, -1).reshape(6, n))
         lw, lc = time.perf_counter() - w, time.process_time() - c
-        _, bw, bc = cpp.aligned(s, ccyl, threads)
+        _, bw, bc = cpp.aligned(s, *ccyl, threads)
         return lw + bw, lc + bc
 
     for threads in (1, None):
         t = 0 if threads is None else threads
         measure(f"aligned, threads={threads}", lambda: boxcyl.intersects_aligned(boxes, cyl, threads=threads),
-                [("c++", lambda: cpp.aligned(soa, ccyl, t)[1:]),
-                 ("c++ rows", lambda: cpp.aligned_rows(boxes, ccyl, t)[1:]),
+                [("c++", lambda: cpp.aligned(soa, *ccyl, t)[1:]),
+                 ("c++ rows", lambda: cpp.aligned_rows(boxes, *ccyl, t)[1:]),
                  ("c++ + layout", lambda: layout_and_batch(t))], args.repeat)
 
     (center, axes, extents), cyl = oriented_case(rng, n)
     ccyl = cpp_cylinder(cyl)
     rows = np.concatenate([center, axes.reshape(n, 9), extents], axis=1)
-    expected, _, _ = cpp.oriented(rows, ccyl, 1)
+    expected, _, _ = cpp.oriented(rows, *ccyl, 1)
     assert np.array_equal(boxcyl.intersects_oriented((center, axes, extents), cyl), expected)
     print(f"oriented: {expected.mean() * 100:.1f} % hit")
     for threads in (1, None):
         t = 0 if threads is None else threads
         measure(f"oriented, threads={threads}",
                 lambda: boxcyl.intersects_oriented((center, axes, extents), cyl, threads=threads),
-                [("c++", lambda: cpp.oriented(rows, ccyl, t)[1:])], args.repeat)
+                [("c++", lambda: cpp.oriented(rows, *ccyl, t)[1:])], args.repeat)
 
     lat = interrupt_latency(5)
     print(f"Ctrl-C: KeyboardInterrupt {statistics.median(lat) * 1e3:.1f} ms after SIGINT (median of 5, "

@@ -3,6 +3,9 @@
 // against the compiled library; never part of the Python package.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>  // the cylinder's vectors
+
+#include <array>    // the cylinder's vectors
 
 #include <chrono>   // wall time
 #include <ctime>    // clock_gettime: the process's CPU time
@@ -39,9 +42,11 @@ struct Timer {
     }
 };
 
-Cylinder cylinder(const py::tuple& center, const py::tuple& axis, double radius, double height) {
-    auto v = [](const py::tuple& t) { return Vec{t[0].cast<double>(), t[1].cast<double>(), t[2].cast<double>()}; };
-    return {v(center), v(axis), radius, height};
+// The cylinder as plain numbers: boxcyl._core registers boxcyl::Cylinder<double> already (pybind11
+// shares registered types between modules), and this module must not depend on it.
+using Array3 = std::array<double, 3>;
+Cylinder cylinder(const Array3& center, const Array3& axis, double radius, double height) {
+    return {{center[0], center[1], center[2]}, {axis[0], axis[1], axis[2]}, radius, height};
 }
 
 // Runs call(result) with the GIL released and times it: (answers, wall seconds, CPU seconds).
@@ -59,7 +64,9 @@ py::tuple timed(std::size_t n, Call&& call) {
 }
 
 // soa: (6, N) rows min_x, min_y, min_z, max_x, max_y, max_z.
-py::tuple aligned(const F64Array& soa, const Cylinder& cyl, unsigned threads) {
+py::tuple aligned(const F64Array& soa, const Array3& center, const Array3& axis, double radius, double height,
+                  unsigned threads) {
+    const Cylinder cyl = cylinder(center, axis, radius, height);
     if (soa.ndim() != 2 || soa.shape(0) != 6) throw py::value_error("soa: expected shape (6, N)");
     const auto n = static_cast<std::size_t>(soa.shape(1));
     auto row = [&](std::size_t j) { return std::span<const double>(soa.data() + j * n, n); };
@@ -70,7 +77,9 @@ py::tuple aligned(const F64Array& soa, const Cylinder& cyl, unsigned threads) {
 }
 
 // boxes: (N, 2, 3) rows [min, max], read in place as AlignedBox<double>.
-py::tuple aligned_rows(const F64Array& boxes, const Cylinder& cyl, unsigned threads) {
+py::tuple aligned_rows(const F64Array& boxes, const Array3& center, const Array3& axis, double radius, double height,
+                       unsigned threads) {
+    const Cylinder cyl = cylinder(center, axis, radius, height);
     if (boxes.ndim() != 3 || boxes.shape(1) != 2 || boxes.shape(2) != 3) throw py::value_error("boxes: expected shape (N, 2, 3)");
     const auto n = static_cast<std::size_t>(boxes.shape(0));
     const auto* rows = reinterpret_cast<const AlignedBox*>(boxes.data());
@@ -81,7 +90,9 @@ py::tuple aligned_rows(const F64Array& boxes, const Cylinder& cyl, unsigned thre
 
 // rows: (N, 15) center, axes[0..2], extents (OrientedBox's members in order), copied into an array of
 // OrientedBox before the timed call.
-py::tuple oriented(const F64Array& rows, const Cylinder& cyl, unsigned threads) {
+py::tuple oriented(const F64Array& rows, const Array3& center, const Array3& axis, double radius, double height,
+                   unsigned threads) {
+    const Cylinder cyl = cylinder(center, axis, radius, height);
     if (rows.ndim() != 2 || rows.shape(1) != 15) throw py::value_error("boxes: expected shape (N, 15)");
     const auto n = static_cast<std::size_t>(rows.shape(0));
     std::vector<OrientedBox> boxes(n);
@@ -99,12 +110,10 @@ py::tuple oriented(const F64Array& rows, const Cylinder& cyl, unsigned threads) 
 
 PYBIND11_MODULE(_boxcyl_bench, m) {
     m.doc() = "boxcyl::batch::intersects alone, timed in C++ (bench/python_batch.py); not part of the package.";
-    py::class_<Cylinder>(m, "Cylinder")
-        .def(py::init(&cylinder), "center"_a, "axis"_a, "radius"_a, "height"_a);
-    m.def("aligned", &aligned, "soa"_a, "cylinder"_a, "threads"_a,
+    m.def("aligned", &aligned, "soa"_a, "center"_a, "axis"_a, "radius"_a, "height"_a, "threads"_a,
           "On (6, N) arrays: (answers, wall seconds, CPU seconds).");
-    m.def("aligned_rows", &aligned_rows, "boxes"_a, "cylinder"_a, "threads"_a,
+    m.def("aligned_rows", &aligned_rows, "boxes"_a, "center"_a, "axis"_a, "radius"_a, "height"_a, "threads"_a,
           "On (N, 2, 3) [min, max] rows: (answers, wall seconds, CPU seconds).");
-    m.def("oriented", &oriented, "boxes"_a, "cylinder"_a, "threads"_a,
+    m.def("oriented", &oriented, "boxes"_a, "center"_a, "axis"_a, "radius"_a, "height"_a, "threads"_a,
           "On (N, 15) oriented boxes: (answers, wall seconds, CPU seconds).");
 }
