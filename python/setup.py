@@ -38,10 +38,12 @@ def relative(path: Path) -> str:
 
 
 def read_manifest():
-    """extension.txt's entries for this compiler and machine: {kind: [values]}."""
+    """extension.txt's entries for this compiler and machine: {kind: [values]}, and each source's own
+    options {path: [options]}."""
     compiler = os.environ.get("CXX") or os.environ.get("CC") or sysconfig.get_config_var("CXX") or ""
     x86_64_gcc = platform.machine() in ("x86_64", "AMD64") and "clang" not in compiler
     entries = {"source": [], "define": [], "option": [], "standard": [], "library": []}
+    source_options = {}
     for number, line in enumerate((here / "extension.txt").read_text().splitlines(), 1):
         words = line.split("#", 1)[0].split()
         if not words:
@@ -50,13 +52,15 @@ def read_manifest():
             if not x86_64_gcc:
                 continue
             words = words[1:]
-        if len(words) != 2 or words[0] not in entries:
+        if len(words) < 2 or words[0] not in entries or (len(words) > 2 and words[0] != "source"):
             raise SystemExit(f"boxcyl: extension.txt:{number}: cannot read {line!r}")
         entries[words[0]].append(words[1])
-    return entries
+        if words[0] == "source":
+            source_options[relative(root / words[1])] = words[2:]
+    return entries, source_options
 
 
-manifest = read_manifest()
+manifest, source_options = read_manifest()
 core = Pybind11Extension(
     "boxcyl._core",
     [relative(root / s) for s in manifest["source"]],
@@ -100,7 +104,8 @@ class BuildExt(build_ext):
             def one(obj):
                 src, src_ext = build[obj]
                 t0 = time.monotonic()
-                compile_one(obj, src, src_ext, cc_args, extra_postargs, pp_opts)
+                own = source_options.get(Path(src).as_posix(), [])
+                compile_one(obj, src, src_ext, cc_args, extra_postargs + own, pp_opts)
                 done.append(obj)
                 say(f"[{len(done)}/{n}] {Path(os.path.relpath(src, root)).as_posix()} ({time.monotonic() - t0:.1f} s)")
 

@@ -1,6 +1,6 @@
-// The batch forms _intersects_aligned / _intersects_oriented / _intersects_parallelepiped: whether each
-// box intersects its cylinder, over float64 arrays of any strides whose leading length is N or 1
-// (broadcast). The package's intersects_aligned etc. check and shape the arguments first.
+// The batch forms: whether each box intersects its cylinder, over float64 array fields of any strides
+// whose leading length is N or 1 (broadcast); module.cpp turns the package's arrays into the fields
+// and runs these interruptibly.
 //
 // With one cylinder and the default query the boxes go to the library's batch API
 // (boxcyl::batch::intersects: SIMD filter, exact fallback), which checks each box on the numbers its
@@ -11,9 +11,8 @@
 // options, one box against many cylinders) is the scalar query per element on those threads, each
 // element checked by boxcyl::is_valid. An element that fails a check is named by boxcyl::validate
 // ("boxes[17].max[0]: is less than boxes[17].min[0]"), and the batch reports the first by index.
-// Batches that may take long run interruptibly (common.hpp): Ctrl-C stops them within milliseconds.
-#include <pybind11/numpy.h>  // input arrays, bool output arrays
-
+// Every loop looks at the stop token (Ctrl-C): the batch API before each 64-box block, the others
+// before each element.
 #if defined(__SSE2__)
 #include <emmintrin.h>  // the aligned boxes' gather, two at a time
 #include <xmmintrin.h>  // _mm_prefetch
@@ -25,101 +24,18 @@
 #include <cstdint>      // std::uintptr_t: the rows' alignment
 #include <limits>       // the "no failure" index
 #include <memory>       // std::unique_ptr: scratch buffers
+#include <mutex>        // the first failure's message
 #include <span>         // the batch API's arguments
-#include <stdexcept>    // std::domain_error (mapped to ValueError)
-#include <type_traits>  // std::is_same_v
+#include <thread>       // std::thread::hardware_concurrency
 
 #include "boxcyl/batch/split.hpp"  // the library's thread split
 #include "common.hpp"
 
 namespace boxcyl_python {
 
-using namespace pybind11::literals;
 namespace batch = boxcyl::batch;
 
 namespace {
-
-// ---- Array arguments. ----
-
-// A float64 array argument of shape (M, *tail), any strides: row i (i < M, or row 0 when M == 1:
-// broadcast) and element k of the flattened tail. Reads raw memory only, so it may be used while the
-// GIL is released (the caller keeps the arrays alive).
-struct Field {
-    const char* base = nullptr;
-    Index count = 1;
-    Index step = 0;                 // bytes from one row to the next; 0 when broadcast
-    std::array<Index, 9> offset{};  // bytes from a row's start to each tail element
-
-    double operator()(Index i, std::size_t k) const {
-        double x;
-        std::memcpy(&x, base + i * step + offset[k], sizeof x);
-        return x;
-    }
-    // Whether each row's first k numbers are adjacent, in order.
-    bool dense(std::size_t k) const {
-        for (std::size_t j = 0; j < k; ++j)
-            if (offset[j] != static_cast<Index>(8 * j)) return false;
-        return true;
-    }
-};
-
-Field field(const py::array& a, const char* name, std::initializer_list<Index> tail) {
-    // The package passes float64 arrays of these shapes; anything else is its bug, said plainly.
-    bool ok = py::isinstance<py::array_t<double>>(a) && a.ndim() == static_cast<Index>(tail.size()) + 1;
-    Index d = 1;
-    for (Index t : tail) ok = ok && a.shape(d++) == t;
-    if (!ok) throw py::value_error(std::string("boxcyl: internal: ") + name + " is not a float64 array of the expected shape");
-    Field f;
-    f.base = static_cast<const char*>(a.data());
-    f.count = a.shape(0);
-    f.step = f.count == 1 ? 0 : a.strides(0);
-    if (tail.size() == 1) {
-        for (Index k = 0; k < a.shape(1); ++k) f.offset[static_cast<std::size_t>(k)] = k * a.strides(1);
-    } else if (tail.size() == 2) {
-        for (Index r = 0; r < a.shape(1); ++r)
-            for (Index c = 0; c < a.shape(2); ++c)
-                f.offset[static_cast<std::size_t>(r * a.shape(2) + c)] = r * a.strides(1) + c * a.strides(2);
-    }
-    return f;
-}
-
-// The common leading length (1 broadcasts; the package checks this first with better messages).
-Index batch_length(std::initializer_list<const Field*> fields) {
-    Index n = 1;
-    for (const Field* f : fields)
-        if (f->count != 1) {
-            if (n != 1 && f->count != n) throw py::value_error("boxcyl: internal: batch fields have different lengths");
-            n = f->count;
-        }
-    return n;
-}
-
-struct CylinderFields {
-    Field center, axis, radius, height;
-    Cylinder operator()(Index i) const {
-        return {{center(i, 0), center(i, 1), center(i, 2)}, {axis(i, 0), axis(i, 1), axis(i, 2)}, radius(i, 0),
-                height(i, 0)};
-    }
-};
-
-struct AlignedFields {
-    Field min, max;
-    AlignedBox operator()(Index i) const {
-        return {{min(i, 0), min(i, 1), min(i, 2)}, {max(i, 0), max(i, 1), max(i, 2)}};
-    }
-};
-
-// Oriented boxes and parallelepipeds: center, axes (rows), extents.
-template <class Box>
-struct FrameFields {
-    Field center, axes, extents;
-    Box operator()(Index i) const {
-        const Field& a = axes;  // row k is axes[k]
-        return {{center(i, 0), center(i, 1), center(i, 2)},
-                {Vec{a(i, 0), a(i, 1), a(i, 2)}, Vec{a(i, 3), a(i, 4), a(i, 5)}, Vec{a(i, 6), a(i, 7), a(i, 8)}},
-                {extents(i, 0), extents(i, 1), extents(i, 2)}};
-    }
-};
 
 // ---- The batch's first failure, by element order: key 2i for box i (or its query), 2i + 1 for cylinder i. ----
 
@@ -197,8 +113,8 @@ unsigned batch_threads(unsigned requested, Index n) {
     return batch::split::thread_count(requested, static_cast<std::size_t>(n));
 }
 
-batch::Options checked(std::stop_token stop, unsigned threads = 1) {
-    return {threads, batch::Kernel::automatic, true, std::move(stop)};
+batch::Options checked(const std::stop_token& stop, unsigned threads = 1) {
+    return {threads, batch::Kernel::automatic, true, stop};
 }
 
 // ---- Gathering a chunk into the batch API's layout. ----
@@ -283,12 +199,12 @@ const AlignedBox* aligned_rows(const AlignedFields& b) {
 
 // One cylinder, many boxes, the default query: the batch API, in place or a gathered chunk at a time.
 void one_cylinder(const AlignedFields& boxes, Index n, const Cylinder& cyl, unsigned threads, bool* result,
-                  FirstFailure& failure, std::stop_token stop) {
+                  FirstFailure& failure, const std::stop_token& stop) {
     if (const AlignedBox* rows = aligned_rows(boxes)) {
         const auto count = static_cast<std::size_t>(n);
         try {
             batch::intersects(cyl, std::span<const AlignedBox>(rows, count), std::span<bool>(result, count),
-                              checked(std::move(stop), threads));
+                              checked(stop, threads));
         } catch (const batch::InvalidBox& e) {
             const auto i = static_cast<Index>(e.index);
             record_invalid(failure, i, boxes(i));
@@ -313,7 +229,7 @@ void one_cylinder(const AlignedFields& boxes, Index n, const Cylinder& cyl, unsi
 
 template <class Box>
 void one_cylinder(const FrameFields<Box>& boxes, Index n, const Cylinder& cyl, unsigned threads, bool* result,
-                  FirstFailure& failure, std::stop_token stop) {
+                  FirstFailure& failure, const std::stop_token& stop) {
     for_each_chunk<Buffer<Box>>(n, kFrameChunk, batch_threads(threads, n), failure,
                                 [&](Buffer<Box>& scratch, Index begin, Index end) {
         const Index m = end - begin;
@@ -355,74 +271,38 @@ void per_element(const BoxAt& box_at, bool box_single, const CylinderFields& cyl
     });
 }
 
-bool is_default(boxcyl::Algorithm algorithm, boxcyl::Arithmetic arithmetic) {
-    return algorithm == boxcyl::Algorithm::inequalities && arithmetic == boxcyl::Arithmetic::filtered;
+bool is_default(const boxcyl::QueryOptions& o) {
+    return o.algorithm == boxcyl::Algorithm::inequalities && o.arithmetic == boxcyl::Arithmetic::filtered;
 }
+
+bool one_cylinder_path(const Batch& b) { return b.cylinder_single && !b.box_single && is_default(b.options); }
 
 template <class Boxes>
-py::array_t<bool> run_batch(Index n, const Boxes& boxes, bool box_single, const CylinderFields& cyls,
-                            bool cylinder_single, boxcyl::Algorithm algorithm, boxcyl::Arithmetic arithmetic,
-                            unsigned threads) {
-    if (box_single) validated(boxes(0), "box");
-    if (cylinder_single) validated(cyls(0), "cylinder");
-    py::array_t<bool> out(n);
-    bool* result = out.mutable_data();
+std::string run(const Boxes& boxes, const CylinderFields& cylinders, const Batch& b, const std::stop_token& stop) {
     FirstFailure failure;
-    if (cylinder_single && !box_single && is_default(algorithm, arithmetic)) {
-        const Cylinder cyl = cyls(0);
-        run_interruptibly(n <= kBriefBatch, [&](std::stop_token stop) {
-            one_cylinder(boxes, n, cyl, threads, result, failure, std::move(stop));
-        });
-    } else {
-        const boxcyl::QueryOptions opt{algorithm, arithmetic};
-        run_interruptibly(n <= kBriefScalar, [&](std::stop_token stop) {
-            per_element(boxes, box_single, cyls, cylinder_single, n, opt, threads, result, failure, stop);
-        });
-    }
-    if (failure.any()) throw py::value_error(failure.message());
-    return out;
-}
-
-CylinderFields cylinder_fields(const py::array& center, const py::array& axis, const py::array& radius,
-                               const py::array& height) {
-    return {field(center, "center", {3}), field(axis, "axis", {3}), field(radius, "radius", {}),
-            field(height, "height", {})};
-}
-
-py::array_t<bool> intersects_aligned(const py::array& min, const py::array& max, bool box_single,
-                                     const py::array& center, const py::array& axis, const py::array& radius,
-                                     const py::array& height, bool cylinder_single, boxcyl::Algorithm algorithm,
-                                     boxcyl::Arithmetic arithmetic, unsigned threads) {
-    const AlignedFields boxes{field(min, "min", {3}), field(max, "max", {3})};
-    const CylinderFields cyls = cylinder_fields(center, axis, radius, height);
-    const Index n = batch_length({&boxes.min, &boxes.max, &cyls.center, &cyls.axis, &cyls.radius, &cyls.height});
-    return run_batch(n, boxes, box_single, cyls, cylinder_single, algorithm, arithmetic, threads);
-}
-
-template <class Box>
-py::array_t<bool> intersects_frames(const py::array& box_center, const py::array& axes, const py::array& extents,
-                                    bool box_single, const py::array& center, const py::array& axis,
-                                    const py::array& radius, const py::array& height, bool cylinder_single,
-                                    boxcyl::Algorithm algorithm, boxcyl::Arithmetic arithmetic, unsigned threads) {
-    const FrameFields<Box> boxes{field(box_center, "box center", {3}), field(axes, "axes", {3, 3}),
-                                 field(extents, "extents", {3})};
-    const CylinderFields cyls = cylinder_fields(center, axis, radius, height);
-    const Index n = batch_length(
-        {&boxes.center, &boxes.axes, &boxes.extents, &cyls.center, &cyls.axis, &cyls.radius, &cyls.height});
-    return run_batch(n, boxes, box_single, cyls, cylinder_single, algorithm, arithmetic, threads);
+    if (one_cylinder_path(b))
+        one_cylinder(boxes, b.n, cylinders(0), b.threads, b.result, failure, stop);
+    else
+        per_element(boxes, b.box_single, cylinders, b.cylinder_single, b.n, b.options, b.threads, b.result, failure,
+                    stop);
+    return failure.any() ? failure.message() : std::string();
 }
 
 }  // namespace
 
-void def_batch(py::module_& m) {
-    m.def("_intersects_aligned", &intersects_aligned, "min"_a, "max"_a, "box_single"_a, "center"_a, "axis"_a,
-          "radius"_a, "height"_a, "cylinder_single"_a, "algorithm"_a, "arithmetic"_a, "threads"_a);
-    m.def("_intersects_oriented", &intersects_frames<OrientedBox>, "box_center"_a, "axes"_a, "extents"_a,
-          "box_single"_a, "center"_a, "axis"_a, "radius"_a, "height"_a, "cylinder_single"_a, "algorithm"_a,
-          "arithmetic"_a, "threads"_a);
-    m.def("_intersects_parallelepiped", &intersects_frames<Parallelepiped>, "box_center"_a, "axes"_a, "extents"_a,
-          "box_single"_a, "center"_a, "axis"_a, "radius"_a, "height"_a, "cylinder_single"_a, "algorithm"_a,
-          "arithmetic"_a, "threads"_a);
+bool brief(const Batch& b) { return b.n <= (one_cylinder_path(b) ? kBriefBatch : kBriefScalar); }
+
+std::string intersects(const AlignedFields& boxes, const CylinderFields& cylinders, const Batch& b,
+                       const std::stop_token& stop) {
+    return run(boxes, cylinders, b, stop);
+}
+std::string intersects(const FrameFields<OrientedBox>& boxes, const CylinderFields& cylinders, const Batch& b,
+                       const std::stop_token& stop) {
+    return run(boxes, cylinders, b, stop);
+}
+std::string intersects(const FrameFields<Parallelepiped>& boxes, const CylinderFields& cylinders, const Batch& b,
+                       const std::stop_token& stop) {
+    return run(boxes, cylinders, b, stop);
 }
 
 }  // namespace boxcyl_python

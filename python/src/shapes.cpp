@@ -3,7 +3,7 @@
 // floats; the package subclasses them for argument conversion, equality and pickling.
 #include <pybind11/stl.h>  // std::array <-> Python sequences
 
-#include "common.hpp"
+#include "bindings.hpp"
 
 namespace boxcyl_python {
 
