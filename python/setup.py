@@ -13,7 +13,6 @@ ones, except that it silently skips any absolute path containing "build").
 import os
 import platform
 import re
-import sys
 import sysconfig
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -96,7 +95,9 @@ class BuildExt(build_ext):
             macros, objects, extra_postargs, pp_opts, build = compiler._setup_compile(
                 output_dir, macros, include_dirs, sources, depends, extra_postargs)
             cc_args = compiler._get_cc_args(pp_opts, debug, extra_preargs)
-            todo = [obj for obj in objects if obj in build]
+            # In extension.txt's order, heaviest first (setuptools sorts the sources by name).
+            rank = {path: k for k, path in enumerate(source_options)}
+            todo = sorted((obj for obj in objects if obj in build), key=lambda o: rank.get(Path(build[o][0]).as_posix(), 0))
             n, j = len(todo), min(jobs(), max(1, len(todo)))
             say(f"compiling {n} sources, {j} at a time (BOXCYL_BUILD_JOBS)")
             done = []
@@ -130,5 +131,4 @@ class BuildExt(build_ext):
 
 # setup.py may be run from another directory (pip runs it from here): the relative paths are from here.
 os.chdir(here)
-sys.stdout.reconfigure(line_buffering=True)
 setup(version=version, ext_modules=[core], cmdclass={"build_ext": BuildExt})
