@@ -188,7 +188,8 @@ RotationMatrix<T> rotation(Quaternion<T> q) {
     return {{{{T(1) - (yy + zz), xy - wz, xz + wy}, {xy + wz, T(1) - (xx + zz), yz - wx},
               {xz - wy, yz + wx, T(1) - (xx + yy)}}}};
 }
-// The rotation block of t, unchecked (the factories check it with what they build in the message).
+// The rotation block of t, its bottom row checked; whether the block is a rotation the factories
+// check, naming in the message what they build.
 template <class T>
 RotationMatrix<T> rotation(const RigidTransform<T>& t) {
     if (!(t.m[3][0] == T(0) && t.m[3][1] == T(0) && t.m[3][2] == T(0) && t.m[3][3] == T(1)))
