@@ -1,5 +1,6 @@
 """The Python batch forms against the C++ batch they wrap, in one run, on the same boxes.
 
+    cmake --build build --target boxcyl_python boxcyl_python_bench
     PYTHONPATH=build/python /usr/bin/python3 bench/python_batch.py [--boxes 1000000] [--repeat 15]
 
 For aligned boxes (an (N, 2, 3) float64 array, boxes around one cylinder, about 10 % hitting) and
@@ -7,8 +8,9 @@ oriented boxes (center, axes, extents arrays), it times
 
   python   boxcyl.intersects_aligned / intersects_oriented: argument checks, the chunked gather and
            validation of every box, and the batch API, as a user calls them;
-  c++      boxcyl::batch::intersects alone (boxcyl._core._timed_batch_*), on the structure-of-arrays
-           (aligned) or OrientedBox array (oriented) it takes, prepared beforehand and timed inside C++;
+  c++      boxcyl::batch::intersects alone (the module _boxcyl_bench, bench/python_batch_core.cpp, built
+           with the benchmarks and never part of the package), on the structure-of-arrays (aligned)
+           or OrientedBox array (oriented) it takes, prepared beforehand and timed inside C++;
   c++ rows boxcyl::batch::intersects alone on the (N, 2, 3) array itself, read in place as
            AlignedBox<double> rows (aligned only; the form the Python aligned batch calls);
   c++ +    the same as c++ plus numpy's copy of the (N, 2, 3) array into the six arrays
@@ -32,6 +34,13 @@ import numpy as np
 import boxcyl
 from boxcyl import _core
 
+try:
+    import _boxcyl_bench as cpp
+except ImportError:
+    raise SystemExit("bench/python_batch.py: the module _boxcyl_bench is missing; build it beside boxcyl "
+                     "(cmake --build build --target boxcyl_python_bench, or configure with "
+                     "-DBOXCYL_BUILD_BENCHMARKS=ON)") from None
+
 
 def best(samples):
     return min(s[0] for s in samples), min(s[1] for s in samples)
@@ -41,6 +50,11 @@ def timed(call):
     w, c = time.perf_counter(), time.process_time()
     call()
     return time.perf_counter() - w, time.process_time() - c
+
+
+def cpp_cylinder(cyl):
+    """The cylinder as _boxcyl_bench takes it: center, axis, radius, height."""
+    return (cyl.center, cyl.axis, cyl.radius, cyl.height)
 
 
 def aligned_case(rng, n):
@@ -107,36 +121,38 @@ def main():
           f"best of {args.repeat}")
 
     boxes, cyl = aligned_case(rng, n)
+    ccyl = cpp_cylinder(cyl)
     soa = np.ascontiguousarray(np.moveaxis(boxes, 0, -1).reshape(6, n))  # min_x, min_y, min_z, max_x, ...
-    expected, _, _ = _core._timed_batch_aligned(soa, cyl, 1)
+    expected, _, _ = cpp.aligned(soa, *ccyl, 1)
     assert np.array_equal(boxcyl.intersects_aligned(boxes, cyl), expected)
-    assert np.array_equal(_core._timed_batch_aligned_rows(boxes, cyl, 1)[0], expected)
+    assert np.array_equal(cpp.aligned_rows(boxes, *ccyl, 1)[0], expected)
     print(f"aligned: {expected.mean() * 100:.1f} % hit")
 
     def layout_and_batch(threads):
         w, c = time.perf_counter(), time.process_time()
         s = np.ascontiguousarray(np.moveaxis(boxes, 0, -1).reshape(6, n))
         lw, lc = time.perf_counter() - w, time.process_time() - c
-        _, bw, bc = _core._timed_batch_aligned(s, cyl, threads)
+        _, bw, bc = cpp.aligned(s, *ccyl, threads)
         return lw + bw, lc + bc
 
     for threads in (1, None):
         t = 0 if threads is None else threads
         measure(f"aligned, threads={threads}", lambda: boxcyl.intersects_aligned(boxes, cyl, threads=threads),
-                [("c++", lambda: _core._timed_batch_aligned(soa, cyl, t)[1:]),
-                 ("c++ rows", lambda: _core._timed_batch_aligned_rows(boxes, cyl, t)[1:]),
+                [("c++", lambda: cpp.aligned(soa, *ccyl, t)[1:]),
+                 ("c++ rows", lambda: cpp.aligned_rows(boxes, *ccyl, t)[1:]),
                  ("c++ + layout", lambda: layout_and_batch(t))], args.repeat)
 
     (center, axes, extents), cyl = oriented_case(rng, n)
+    ccyl = cpp_cylinder(cyl)
     rows = np.concatenate([center, axes.reshape(n, 9), extents], axis=1)
-    expected, _, _ = _core._timed_batch_oriented(rows, cyl, 1)
+    expected, _, _ = cpp.oriented(rows, *ccyl, 1)
     assert np.array_equal(boxcyl.intersects_oriented((center, axes, extents), cyl), expected)
     print(f"oriented: {expected.mean() * 100:.1f} % hit")
     for threads in (1, None):
         t = 0 if threads is None else threads
         measure(f"oriented, threads={threads}",
                 lambda: boxcyl.intersects_oriented((center, axes, extents), cyl, threads=threads),
-                [("c++", lambda: _core._timed_batch_oriented(rows, cyl, t)[1:])], args.repeat)
+                [("c++", lambda: cpp.oriented(rows, *ccyl, t)[1:])], args.repeat)
 
     lat = interrupt_latency(5)
     print(f"Ctrl-C: KeyboardInterrupt {statistics.median(lat) * 1e3:.1f} ms after SIGINT (median of 5, "

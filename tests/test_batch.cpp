@@ -11,6 +11,7 @@
 #include <algorithm>  // std::max
 #include <array>    // frames
 #include <cfenv>    // rounding modes
+#include <chrono>   // the stop's latency
 #include <cmath>    // std::ldexp, std::nextafter
 #include <cstddef>  // std::size_t, std::ptrdiff_t
 #include <cstdint>  // std::uint64_t
@@ -21,7 +22,9 @@
 #include <ostream>  // PrintTo
 #include <stdexcept>  // unavailable kernels
 #include <random>   // voxel placement
+#include <stop_token>  // Options::stop
 #include <string>   // labels
+#include <thread>   // a stop requested from another thread
 #include <vector>   // the sets
 
 #include "boxcyl/batch.hpp"
@@ -718,6 +721,49 @@ TEST(Batch, ParallelepipedsReportTheScalarKernelAndRefuseSimdOnes) {
         EXPECT_THROW(batch::intersects(c, std::span<const Parallelepiped<double>>(), std::span<std::uint64_t>(), {1, k}),
                      std::invalid_argument)
             << batch::name(k) << " (empty batch)";
+    }
+}
+
+// Options::stop: a stop requested before the call ends it at the first block, for every kind of box; one
+// requested while the call runs (from another thread, on boxes that all touch the cylinder and so all
+// go to the scalar exact query) ends it within a block per thread. Either way the call throws Stopped.
+TEST_P(BatchKernels, StopEndsTheCall) {
+    const Cylinder<double> c{{3, 0, 0}, {0, 0, 5}, 2, 1};  // its side touches the face x = 1 of each box
+    const std::size_t n = std::size_t{1} << 20;
+    const std::vector<AlignedBox<double>> rows(n, AlignedBox<double>{{-1, -1, -1}, {1, 1, 1}});
+    const std::vector<double> lo(n, -1.0), hi(n, 1.0);
+    const std::vector<OrientedBox<double>> oriented(
+        n, OrientedBox<double>{{0, 0, 0}, {Vec3<double>{1, 0, 0}, Vec3<double>{0, 1, 0}, Vec3<double>{0, 0, 1}}, {1, 1, 1}});
+    const std::vector<Parallelepiped<double>> skew(
+        n, Parallelepiped<double>{{0, 0, 0}, {Vec3<double>{1, 0, 0}, Vec3<double>{0, 1, 0}, Vec3<double>{0, 0, 1}}, {1, 1, 1}});
+    std::unique_ptr<bool[]> out(new bool[n]);
+    const std::span<bool> result(out.get(), n);
+    std::stop_source stopped;
+    stopped.request_stop();
+    const batch::Options before{1, GetParam(), false, stopped.get_token()};
+    EXPECT_THROW(batch::intersects(c, std::span<const AlignedBox<double>>(rows), result, before), batch::Stopped);
+    EXPECT_THROW(batch::intersects(c, batch::AlignedBoxes<double>{lo, lo, lo, hi, hi, hi}, result, before), batch::Stopped);
+    EXPECT_THROW(batch::intersects(c, std::span<const OrientedBox<double>>(oriented), result, before), batch::Stopped);
+    EXPECT_THROW(batch::intersects(c, std::span<const Parallelepiped<double>>(skew), result, before), batch::Stopped);
+    for (unsigned threads : {1u, 2u}) {
+        std::stop_source running;
+        std::chrono::steady_clock::time_point requested{};
+        std::thread stopper([&] {
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            requested = std::chrono::steady_clock::now();
+            running.request_stop();
+        });
+        const auto start = std::chrono::steady_clock::now();
+        EXPECT_THROW(batch::intersects(c, std::span<const AlignedBox<double>>(rows), result,
+                                       {threads, GetParam(), true, running.get_token()}),
+                     batch::Stopped)
+            << "the batch ended before the stop";
+        const auto end = std::chrono::steady_clock::now();
+        stopper.join();
+        std::printf("[ info ] %u thread(s): stopped %.2f ms after the request (%.0f ms into the batch)\n", threads,
+                    std::chrono::duration<double, std::milli>(end - requested).count(),
+                    std::chrono::duration<double, std::milli>(end - start).count());
+        EXPECT_LT(end - requested, std::chrono::milliseconds(500));
     }
 }
 

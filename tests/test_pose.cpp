@@ -3,9 +3,14 @@
 // checked on probes whose answers the usual mistakes (full vs half sizes, rows vs columns, quaternion
 // order, the cylinder's local axis) change — each test also builds the mistaken shape and shows that
 // its answer differs.
+#include <gmpxx.h>  // exact squares: the heights of cylinder_between
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <string>
 
 #include "boxcyl/boxcyl.hpp"
 
@@ -134,6 +139,33 @@ TEST(PeerConventions, Trimesh) {
     EXPECT_FALSE(cylinder_answers_as_r02_len2(cylinder(t, 0.2, HalfHeight<double>{2}), 2));
 }
 
+// ODE: dCreateBox(space, lx, ly, lz) takes full side lengths; dCreateCylinder(space, radius, length)
+// the full length along local z; dGeomSetRotation takes a dMatrix3, 12 numbers: R row by row, each
+// row padded to 4 (R(i, j) = m[4·i + j], the 4th of each row unused); dQuaternion is (w, x, y, z).
+TEST(PeerConventions, Ode) {
+    const double dmatrix3[12] = {0.6, -0.8, 0, 0, 0.8, 0.6, 0, 0, 0, 0, 1, 0};  // as dRFromAxisAndAngle fills it
+    const RotationMatrix<double> r{{{{dmatrix3[0], dmatrix3[1], dmatrix3[2]},
+                                     {dmatrix3[4], dmatrix3[5], dmatrix3[6]},
+                                     {dmatrix3[8], dmatrix3[9], dmatrix3[10]}}}};
+    const double lengths[3] = {10, 1, 1};  // dCreateBox(space, 10, 1, 1)
+    expect_box_10_1_1(oriented_box(origin, r, Size<double>{lengths[0], lengths[1], lengths[2]}));
+    const double radius = 0.2, length = 2;  // dCreateCylinder(space, 0.2, 2)
+    expect_cylinder_r02_len2(cylinder(origin, r, radius, Height<double>{length}), 2);
+    const double dquat[4] = {qw, 0, 0, qz};  // dQuaternion: w first
+    const Quaternion<double> q{.w = dquat[0], .x = dquat[1], .y = dquat[2], .z = dquat[3]};
+    expect_box_10_1_1(oriented_box(origin, q, Size<double>{lengths[0], lengths[1], lengths[2]}));
+    // The mistakes: the lengths as half extents; the 12 numbers read as a packed 3×3 (no padding),
+    // which is no rotation; the length as a half height; the quaternion read as (x, y, z, w).
+    EXPECT_FALSE(box_answers_as_10_1_1(oriented_box(origin, r, HalfExtents<double>{lengths[0], lengths[1], lengths[2]})));
+    const RotationMatrix<double> packed{{{{dmatrix3[0], dmatrix3[1], dmatrix3[2]},
+                                          {dmatrix3[3], dmatrix3[4], dmatrix3[5]},
+                                          {dmatrix3[6], dmatrix3[7], dmatrix3[8]}}}};
+    EXPECT_THROW(oriented_box(origin, packed, Size<double>{lengths[0], lengths[1], lengths[2]}), std::invalid_argument);
+    EXPECT_FALSE(cylinder_answers_as_r02_len2(cylinder(origin, r, radius, HalfHeight<double>{length}), 2));
+    const Quaternion<double> scalar_last{.w = dquat[3], .x = dquat[0], .y = dquat[1], .z = dquat[2]};
+    EXPECT_FALSE(box_answers_as_10_1_1(oriented_box(origin, scalar_last, Size<double>{lengths[0], lengths[1], lengths[2]})));
+}
+
 // A trimesh box (extents = full lengths) under a transform with scale: the parallelepiped spanned by
 // the transform's columns. The unit cube under diag(3, 4, 5)·R (R the 3-4-5 rotation) is the box of
 // half sizes 1.5, 2, 2.5 in R's frame; reading the size as half extents doubles it.
@@ -176,6 +208,152 @@ TEST(Pose, FactoriesProduceTheStatedSolid) {
     EXPECT_THROW(rotation(Quaternion<double>{0, 0, 0, 0}), std::invalid_argument);
     RigidTransform<double> bad{{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 1, 1}}}};
     EXPECT_THROW(oriented_box(bad, Size<double>{1, 1, 1}), std::invalid_argument);
+}
+
+// A rotation given as a matrix or a rigid transform must be one (within OrientedBox's 1e-4): a scaled
+// or sheared one would otherwise be read as a rotation, and for a cylinder its scale silently dropped.
+TEST(Pose, ScaledRotationsAreRefusedWithTheRightAdvice) {
+    const RigidTransform<double> doubled{{{{2, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}};
+    try {
+        (void)cylinder(doubled, 1.0, Height<double>{1});
+        FAIL() << "a scaled transform gave a cylinder";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "boxcyl: cylinder: transform: is not a rotation (column 0 has squared length 4; its columns must be "
+                  "orthonormal within 1e-4): a scaled transform changes a cylinder's radius and height (a non-uniform "
+                  "scale makes an elliptic cylinder, which is not a cylinder), so boxcyl takes them explicitly: pass "
+                  "the unscaled rotation and the scaled radius and height");
+    }
+    try {
+        (void)oriented_box(doubled, Size<double>{1, 1, 1});
+        FAIL() << "a scaled transform gave an oriented box";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "boxcyl: oriented_box: transform: is not a rotation (column 0 has squared length 4; its columns must "
+                  "be orthonormal within 1e-4): a box under a transform with scale or shear is "
+                  "parallelepiped(AffineTransform{...}, sizes)");
+    }
+    // A uniform scale is refused as well (the radius would change too); so is a shear, and a scaled matrix.
+    const RigidTransform<double> uniform{{{{3, 0, 0, 0}, {0, 3, 0, 0}, {0, 0, 3, 0}, {0, 0, 0, 1}}}};
+    EXPECT_THROW(cylinder(uniform, 1.0, HalfHeight<double>{1}), std::invalid_argument);
+    const RotationMatrix<double> shear{{{{1, 0.5, 0}, {0, 1, 0}, {0, 0, 1}}}};
+    try {
+        (void)cylinder(origin, shear, 1.0, Height<double>{1}, LocalAxis::y);
+        FAIL();
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("cylinder: rotation: is not a rotation (columns 0 and 1 have dot product 0.5;"),
+                  std::string::npos)
+            << e.what();
+    }
+    EXPECT_NO_THROW(cylinder(origin, Quaternion<double>{3, 0, 0, 0}, 1.0, Height<double>{1}));  // not unit: still a rotation
+}
+
+TEST(Pose, RotationsWithinTheToleranceAreAccepted) {
+    // A rotation rounded to a few digits (as printed in a file) is still one; a reflection too (same solids).
+    const RotationMatrix<double> rounded{{{{0.70711, -0.70711, 0}, {0.70711, 0.70711, 0}, {0, 0, 1}}}};
+    EXPECT_TRUE(is_rotation(rounded));
+    EXPECT_NO_THROW(cylinder(origin, rounded, 1.0, Height<double>{1}));
+    const RotationMatrix<double> mirror{{{{1, 0, 0}, {0, 1, 0}, {0, 0, -1}}}};
+    EXPECT_TRUE(is_rotation(mirror));
+    EXPECT_FALSE(is_rotation(RotationMatrix<double>{{{{1.0002, 0, 0}, {0, 1, 0}, {0, 0, 1}}}}));
+}
+
+// A quaternion of any finite non-zero size gives its rotation: scaled by 2^±1000 it gives exactly the
+// matrix of the unscaled one (a power of two is factored out exactly), not NaN or a "zero" quaternion.
+TEST(Pose, QuaternionsOfAnyMagnitudeNormalise) {
+    const Quaternion<double> q{.w = qw, .x = 0, .y = 0, .z = qz};
+    const RotationMatrix<double> expected = rotation(q);
+    for (double scale : {0x1p-1000, 1e-300, 1e-160, 1e160, 1e300, 0x1p1000, 1.7e308}) {
+        const RotationMatrix<double> r = rotation(Quaternion<double>{q.w * scale, q.x * scale, q.y * scale, q.z * scale});
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) EXPECT_NEAR(r.m[i][j], expected.m[i][j], 4e-16) << scale;
+        EXPECT_TRUE(is_rotation(r));
+    }
+    const RotationMatrix<double> p2 = rotation(Quaternion<double>{qw * 0x1p1000, 0, 0, qz * 0x1p1000});
+    EXPECT_EQ(p2.m, expected.m);
+    // The smallest subnormal alone is a rotation by π about its axis.
+    const RotationMatrix<double> flip = rotation(Quaternion<double>{0, 0, 0, std::numeric_limits<double>::denorm_min()});
+    EXPECT_EQ(flip.m, (RotationMatrix<double>{{{{-1, 0, 0}, {0, -1, 0}, {0, 0, 1}}}}.m));
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    auto message = [](const Quaternion<double>& bad) {
+        try {
+            (void)rotation(bad);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("no exception");
+    };
+    EXPECT_EQ(message({0, 0, 0, 0}), "boxcyl: quaternion: is zero");
+    EXPECT_EQ(message({1, nan, 0, 0}), "boxcyl: quaternion: is NaN");
+    EXPECT_EQ(message({1, 0, -inf, 0}), "boxcyl: quaternion: is infinite");
+    const RotationMatrix<float> f = rotation(Quaternion<float>{1e30f, 0, 0, 1e30f});  // float: the same scaling
+    EXPECT_NEAR(f.m[0][1], -1.0f, 1e-6f);
+}
+
+// height = the smallest double ≥ |p1 − p0|, checked exactly with rationals: h² ≥ |d|² > prev(h)².
+void expect_height_rounded_up(const Cylinder<double>& c) {
+    const mpq_class d2 = mpq_class(c.axis[0]) * c.axis[0] + mpq_class(c.axis[1]) * c.axis[1] + mpq_class(c.axis[2]) * c.axis[2];
+    const double h = c.height, below = std::nextafter(h, 0.0);
+    EXPECT_GE(mpq_class(h) * h, d2) << c.axis[0] << " " << c.axis[1] << " " << c.axis[2];
+    EXPECT_LT(mpq_class(below) * below, d2) << c.axis[0] << " " << c.axis[1] << " " << c.axis[2];
+}
+
+TEST(Pose, CylinderBetweenTwoPoints) {
+    // MuJoCo <geom type="cylinder" fromto="1 2 3  1 2 7" size="0.5">: along z, centred at (1, 2, 5), length 4.
+    const Cylinder<double> c = cylinder_between(V{1, 2, 3}, V{1, 2, 7}, 0.5);
+    EXPECT_EQ(c.center, (V{1, 2, 5}));
+    EXPECT_EQ(c.axis, (V{0, 0, 4}));
+    EXPECT_EQ(c.radius, 0.5);
+    EXPECT_EQ(c.height, 4);
+    ASSERT_TRUE(validate(c).ok());
+    EXPECT_TRUE(intersects(probe_box(V{1, 2, 7.005}), c));   // touches the end disk at p1
+    EXPECT_FALSE(intersects(probe_box(V{1, 2, 7.02}), c));
+    // An integer length is exact: (3, 4, 12) has length 13, so the segment is exactly p0 p1.
+    const Cylinder<double> p = cylinder_between(V{-1, -1, -1}, V{2, 3, 11}, 0.25);
+    EXPECT_EQ(p.center, (V{0.5, 1, 5}));
+    EXPECT_EQ(p.axis, (V{3, 4, 12}));
+    EXPECT_EQ(p.height, 13);
+    // An irrational length rounds up: √3 to nearest is below it, so the height is the next double;
+    // √2 to nearest is above it already.
+    const Cylinder<double> s3 = cylinder_between(V{0, 0, 0}, V{1, 1, 1}, 1.0);
+    EXPECT_EQ(s3.height, std::nextafter(std::sqrt(3.0), 2.0));
+    expect_height_rounded_up(s3);
+    const Cylinder<double> s2 = cylinder_between(V{0, 0, 0}, V{1, 1, 0}, 1.0);
+    EXPECT_EQ(s2.height, std::sqrt(2.0));
+    expect_height_rounded_up(s2);
+    // No intermediate overflow: the midpoint and the length of a segment spanning the whole range.
+    const double big = std::numeric_limits<double>::max();
+    const Cylinder<double> huge = cylinder_between(V{-big, 0, 0}, V{big, 0, 0}, 1.0);
+    EXPECT_EQ(huge.center, (V{0, 0, 0}));
+    EXPECT_EQ(huge.axis, (V{big, 0, 0}));  // p1/2 − p0/2: the direction, at half the length
+    EXPECT_EQ(huge.height, std::numeric_limits<double>::infinity());  // 2·DBL_MAX: validate() refuses it
+    EXPECT_FALSE(validate(huge).ok());
+    const Cylinder<double> wide = cylinder_between(V{big / 2, big / 4, 0}, V{big, big / 2, 0}, 1.0);
+    EXPECT_EQ(wide.center, (V{big * 0.75, big * 0.375, 0}));
+    expect_height_rounded_up(wide);
+    const double tiny = std::numeric_limits<double>::denorm_min();
+    const Cylinder<double> t = cylinder_between(V{0, 0, 0}, V{3 * tiny, 4 * tiny, 0}, 0.0);
+    EXPECT_EQ(t.height, 5 * tiny);
+    EXPECT_EQ(t.center, (V{2 * tiny, 2 * tiny, 0}));  // 1.5 and 2 ulps: rounded once, to even
+    // The same point twice: no axis, which validate() names.
+    EXPECT_EQ(validate(cylinder_between(V{1, 2, 3}, V{1, 2, 3}, 1.0)).message(), "cylinder.axis: is the zero vector");
+    // Random segments of every scale and of mixed scales: always the smallest double ≥ the length.
+    std::mt19937_64 rng(20261127);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    std::uniform_int_distribution<int> exponent(-1070, 1020), spread(0, 60);
+    for (int n = 0; n < 20000; ++n) {
+        const int e = exponent(rng);
+        V a{std::ldexp(unit(rng), e), std::ldexp(unit(rng), e - spread(rng)), std::ldexp(unit(rng), e - spread(rng))};
+        if (n % 3 == 0) a = V{std::round(unit(rng) * 0x1p20), std::round(unit(rng) * 0x1p20), 0};  // many exact lengths
+        const Cylinder<double> r = cylinder_between(V{0, 0, 0}, a, 1.0);
+        if (r.axis == V{0, 0, 0}) continue;
+        expect_height_rounded_up(r);
+    }
+    // Components more than 2^484 apart: the tiny one is not tested exactly, and the height is one ulp up.
+    const Cylinder<double> mixed = cylinder_between(V{0, 0, 0}, V{1, 0x1p-600, 0}, 1.0);
+    EXPECT_EQ(mixed.height, std::nextafter(1.0, 2.0));
+    const Cylinder<float> f = cylinder_between(Vec3<float>{0, 0, 0}, Vec3<float>{3, 4, 0}, 1.0f);
+    EXPECT_EQ(f.height, 5.0f);
 }
 
 }  // namespace

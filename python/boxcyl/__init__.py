@@ -17,7 +17,7 @@ Cylinder(center=(3.0, 0.0, 0.0), axis=(0.0, 0.0, 5.0), radius=2.0, height=1.0)
 
 Batch forms take arrays and return a numpy bool array; see :func:`intersects_aligned`,
 :func:`intersects_oriented` and :func:`intersects_parallelepiped`; :mod:`boxcyl.dask` answers
-chunked Dask arrays.
+chunked Dask arrays. :func:`grid_cells` lists the cells of a regular grid that a cylinder meets.
 
 Input policy: numbers are real numbers, read as float64 (numpy integer and float arrays, Python
 ints and floats, and object arrays of real numbers such as ``Fraction`` or ``Decimal``, each
@@ -27,10 +27,10 @@ min > max, axes not orthonormal to 1e-4). Every refusal is a ``ValueError`` nami
 the element in a batch: ``"boxes[17].max[0]: is less than boxes[17].min[0]"``.
 """
 
-import decimal
-import numbers
+import decimal as _decimal
+import numbers as _numbers
 
-import numpy as np
+import numpy as _np
 
 from . import _core
 from ._core import Algorithm, Arithmetic, __version__
@@ -42,6 +42,7 @@ __all__ = [
     "Cylinder",
     "OrientedBox",
     "Parallelepiped",
+    "grid_cells",
     "intersects",
     "intersects_aligned",
     "intersects_oriented",
@@ -61,16 +62,16 @@ _REFUSED_KINDS = {
     "S": ("bytes", "an array of bytes"),
     "V": ("a structured value", "an array of structured values"),
 }
-_REAL_TYPES = (numbers.Real, decimal.Decimal)
+_REAL_TYPES = (_numbers.Real, _decimal.Decimal)
 
 
 def _where(name, shape, flat_index):
     """``name`` followed by the element's index, as ``boxes[3][1][2]``."""
-    return name + "".join(f"[{i}]" for i in np.unravel_index(flat_index, shape)) if shape else name
+    return name + "".join(f"[{i}]" for i in _np.unravel_index(flat_index, shape)) if shape else name
 
 
 def _is_real_type(t):
-    return issubclass(t, _REAL_TYPES) and not issubclass(t, (bool, np.bool_))
+    return issubclass(t, _REAL_TYPES) and not issubclass(t, (bool, _np.bool_))
 
 
 def _from_objects(name, a):
@@ -80,11 +81,11 @@ def _from_objects(name, a):
     if bad:
         i = next(k for k, x in enumerate(flat) if type(x) in bad)
         x = flat[i]
-        what = ("a nested sequence (rows of different lengths?)" if isinstance(x, (list, tuple, np.ndarray))
+        what = ("a nested sequence (rows of different lengths?)" if isinstance(x, (list, tuple, _np.ndarray))
                 else "None" if x is None else f"a {type(x).__name__} ({x!r})")
         raise ValueError(f"{_where(name, a.shape, i)}: is {what}; expected a real number")
     try:
-        return a.astype(np.float64)
+        return a.astype(_np.float64)
     except OverflowError:
         i = next(k for k, x in enumerate(flat) if not _fits_float(x))
         raise ValueError(f"{_where(name, a.shape, i)}: is too large for float64") from None
@@ -101,33 +102,33 @@ def _fits_float(x):
 def _hides_refused(seq):
     """What numpy would silently turn into a number inside nested lists: a bool or a masked array."""
     for x in seq:
-        if isinstance(x, (bool, np.bool_)):
+        if isinstance(x, (bool, _np.bool_)):
             return "booleans"
-        if isinstance(x, np.ma.MaskedArray):
+        if isinstance(x, _np.ma.MaskedArray):
             return "a masked array"
         if isinstance(x, (list, tuple)):
             found = _hides_refused(x)
             if found:
                 return found
-        elif isinstance(x, np.ndarray) and x.dtype.kind == "b":
+        elif isinstance(x, _np.ndarray) and x.dtype.kind == "b":
             return "booleans"
     return None
 
 
 def _real_array(name, value):
     """``value`` as a float64 ndarray (no copy when it is one already), or a ValueError naming ``name``."""
-    if isinstance(value, np.ndarray) and value.dtype == np.float64 and type(value) is np.ndarray:
+    if isinstance(value, _np.ndarray) and value.dtype == _np.float64 and type(value) is _np.ndarray:
         return value  # the fast path: nothing to check or convert
     if value is None:
         raise ValueError(f"{name}: is None; expected real numbers")
-    if isinstance(value, np.ma.MaskedArray):
+    if isinstance(value, _np.ma.MaskedArray):
         raise ValueError(f"{name}: is a masked array, whose masked entries would be read as numbers; "
                          "pass a plain array of the entries you mean")
-    if isinstance(value, (bool, np.bool_)):
+    if isinstance(value, (bool, _np.bool_)):
         raise ValueError(f"{name}: is a bool ({value!r}); expected a real number")
     if isinstance(value, (list, tuple)):
         try:
-            a = np.asarray(value)
+            a = _np.asarray(value)
         except ValueError:  # numpy refuses ragged nesting
             raise ValueError(f"{name}: is not a regular array (nested sequences of different lengths)") from None
         if a.dtype.kind in "iuf":
@@ -135,10 +136,10 @@ def _real_array(name, value):
             if hidden:
                 raise ValueError(f"{name}: contains {hidden}; expected real numbers")
     else:
-        a = np.asarray(value)
+        a = _np.asarray(value)
     kind = a.dtype.kind
     if kind in "iuf":
-        return a.astype(np.float64, copy=False)
+        return a.astype(_np.float64, copy=False)
     if kind == "O":
         return _from_objects(name, a)
     one, many = _REFUSED_KINDS.get(kind, ("a value", "an array of values"))
@@ -185,7 +186,7 @@ def _quaternion(wxyz, xyzw):
     q = _real_array(order, q)
     if q.shape != (4,):
         raise ValueError(f"{order}: expected 4 numbers, got {_shape_text(q)}")
-    w, x, y, z = q.tolist() if order == "wxyz" else np.roll(q, 1).tolist()
+    w, x, y, z = q.tolist() if order == "wxyz" else _np.roll(q, 1).tolist()
     return (w, x, y, z)
 
 
@@ -217,29 +218,43 @@ def _along(along):
 
 # ---- The shapes: immutable, validated, equal by value, picklable, printed as built. ---------------
 
-class AlignedBox(_core.AlignedBox):
+class _ByValue:
+    """Equality, hashing and pickling by the fields a shape class names in ``_FIELDS`` (its
+    constructor's arguments, in order): shapes of the same class with equal fields are equal."""
+
+    __slots__ = ()
+    _FIELDS = ()
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        if "_FIELDS" in cls.__dict__:
+            cls._SHAPE = cls  # the class that named the fields: what equality and pickling go by
+
+    def _key(self):
+        return tuple(getattr(self, name) for name in self._FIELDS)
+
+    def __eq__(self, other):
+        return self._key() == other._key() if isinstance(other, self._SHAPE) else NotImplemented
+
+    def __hash__(self):
+        return hash((self._SHAPE.__name__,) + self._key())
+
+    def __reduce__(self):
+        return (self._SHAPE, self._key())
+
+
+class AlignedBox(_ByValue, _core.AlignedBox):
     """The closed axis-aligned box ``min <= X <= max`` (componentwise); equal bounds give a flat box
     or a point. Immutable; validated when built (``ValueError`` naming the field)."""
 
     __slots__ = ()
+    _FIELDS = ("min", "max")
 
     def __init__(self, min, max):  # noqa: A002 (the fields' names)
         super().__init__(_vector("box.min", min), _vector("box.max", max))
 
-    def _key(self):
-        return (self.min, self.max)
 
-    def __eq__(self, other):
-        return self._key() == other._key() if isinstance(other, AlignedBox) else NotImplemented
-
-    def __hash__(self):
-        return hash(("AlignedBox",) + self._key())
-
-    def __reduce__(self):
-        return (AlignedBox, self._key())
-
-
-class OrientedBox(_core.OrientedBox):
+class OrientedBox(_ByValue, _core.OrientedBox):
     """The closed solid ``{center + x0*axes[0] + x1*axes[1] + x2*axes[2] : |xi| <= extents[i]}``:
     ``axes`` are the box's axes as **rows** (orthonormal to within 1e-4: a rotation rounded to double
     is fine), ``extents`` are **half** side lengths. For a rotation matrix (axes as columns), a
@@ -247,21 +262,10 @@ class OrientedBox(_core.OrientedBox):
     ``OrientedBox.from_rotation`` etc. Immutable; validated when built."""
 
     __slots__ = ()
+    _FIELDS = ("center", "axes", "extents")
 
     def __init__(self, center, axes, extents):
         super().__init__(_vector("box.center", center), _matrix("box.axes", axes), _vector("box.extents", extents))
-
-    def _key(self):
-        return (self.center, self.axes, self.extents)
-
-    def __eq__(self, other):
-        return self._key() == other._key() if isinstance(other, OrientedBox) else NotImplemented
-
-    def __hash__(self):
-        return hash(("OrientedBox",) + self._key())
-
-    def __reduce__(self):
-        return (OrientedBox, self._key())
 
     @classmethod
     def from_rotation(cls, center, rotation, *, half_extents=None, size=None):
@@ -288,58 +292,47 @@ class OrientedBox(_core.OrientedBox):
     def from_transform(cls, transform, *, half_extents=None, size=None):
         """The box posed by a 4×4 rigid transform (rotation in the top-left 3×3 block, columns = axes;
         the centre in the last column; bottom row 0, 0, 0, 1: trimesh, Eigen's ``Isometry3d``).
-        Sizes as for :meth:`from_rotation`."""
+        Sizes as for :meth:`from_rotation`. A transform with scale or shear is refused (its box is
+        a parallelepiped: :meth:`Parallelepiped.from_transform`)."""
         sizes, full = _box_sizes(half_extents, size)
         b = _core._box_from_transform(_transform(transform), sizes, full)
         return cls(b.center, b.axes, b.extents)
 
 
-class Parallelepiped(_core.Parallelepiped):
+class Parallelepiped(_ByValue, _core.Parallelepiped):
     """The closed solid ``{center + x0*axes[0] + x1*axes[1] + x2*axes[2] : |xi| <= extents[i]}`` for
     **any** three axes (rows), exactly as given: any lengths and angles, e.g. ``(3, 4, 0), (-4, 3, 0),
     (0, 0, 5)`` (a box with integer vertices); parallel or zero axes give flat solids. Answered exactly
     like the other kinds. Immutable; validated when built (finite numbers, extents >= 0)."""
 
     __slots__ = ()
+    _FIELDS = ("center", "axes", "extents")
 
     def __init__(self, center, axes, extents):
         super().__init__(_vector("box.center", center), _matrix("box.axes", axes), _vector("box.extents", extents))
 
-    def _key(self):
-        return (self.center, self.axes, self.extents)
-
-    def __eq__(self, other):
-        return self._key() == other._key() if isinstance(other, Parallelepiped) else NotImplemented
-
-    def __hash__(self):
-        return hash(("Parallelepiped",) + self._key())
-
-    def __reduce__(self):
-        return (Parallelepiped, self._key())
+    @classmethod
+    def from_transform(cls, transform, *, half_extents=None, size=None):
+        """The image of the box ``|x_i| <= half_extents[i]`` (or of side lengths ``size``) under a 4×4
+        affine transform, exactly: ``center`` = its translation (last column), ``axes`` = the
+        **columns** of its top-left 3×3 block as given (any scale, shear or reflection), bottom row
+        0, 0, 0, 1 — e.g. a trimesh box whose transform has scale."""
+        sizes, full = _box_sizes(half_extents, size)
+        b = _core._parallelepiped_from_transform(_transform(transform), sizes, full)
+        return cls(b.center, b.axes, b.extents)
 
 
-class Cylinder(_core.Cylinder):
+class Cylinder(_ByValue, _core.Cylinder):
     """A closed finite cylinder: the points within ``radius`` of the axis segment
     ``center ± (height/2)·axis/|axis|``. ``height`` is the **full** length; ``axis`` need not be unit
     length; radius 0 is a segment, height 0 a disk. Immutable; validated when built."""
 
     __slots__ = ()
+    _FIELDS = ("center", "axis", "radius", "height")
 
     def __init__(self, center, axis, radius, height):
         super().__init__(_vector("cylinder.center", center), _vector("cylinder.axis", axis),
                          _scalar("cylinder.radius", radius), _scalar("cylinder.height", height))
-
-    def _key(self):
-        return (self.center, self.axis, self.radius, self.height)
-
-    def __eq__(self, other):
-        return self._key() == other._key() if isinstance(other, Cylinder) else NotImplemented
-
-    def __hash__(self):
-        return hash(("Cylinder",) + self._key())
-
-    def __reduce__(self):
-        return (Cylinder, self._key())
 
     @classmethod
     def from_rotation(cls, center, rotation, *, radius, height=None, half_height=None, along="z"):
@@ -365,10 +358,26 @@ class Cylinder(_core.Cylinder):
     @classmethod
     def from_transform(cls, transform, *, radius, height=None, half_height=None, along="z"):
         """As :meth:`from_rotation`, posed by a 4×4 rigid transform (see
-        :meth:`OrientedBox.from_transform`); the centre is the transform's translation."""
+        :meth:`OrientedBox.from_transform`); the centre is the transform's translation. A transform
+        with scale is refused rather than read as a rotation: scaling changes the radius and the
+        height (a non-uniform scale makes an elliptic cylinder), which boxcyl takes as given."""
         length, half = _cylinder_length(height, half_height)
         c = _core._cylinder_from_transform(_transform(transform), _scalar("radius", radius), length, half,
                                            _along(along))
+        return cls(c.center, c.axis, c.radius, c.height)
+
+    @classmethod
+    def from_endpoints(cls, p0, p1, *, radius):
+        """The cylinder whose axis runs from ``p0`` to ``p1`` (MuJoCo's ``fromto``, trimesh's
+        ``cylinder(segment=...)``): ``center`` = (p0 + p1)/2 and ``axis`` = p1 − p0, each rounded once
+        to the nearest float64 (exact when they are float64 values: coordinates on a common grid),
+        and ``height`` = the smallest float64 ≥ |p1 − p0|, exact when the length is a float64. So
+        the cylinder's segment contains the segment p0 p1, longer by less than an ulp of the length
+        (when center and axis are exact), and is exactly p0 p1 when the length is a float64 too."""
+        a, b = _vector("p0", p0), _vector("p1", p1)
+        if a == b:
+            raise ValueError(f"p0, p1: are the same point {a}; a cylinder between them has no axis")
+        c = _core._cylinder_between(a, b, _scalar("radius", radius))
         return cls(c.center, c.axis, c.radius, c.height)
 
 
@@ -390,11 +399,11 @@ def _options(algorithm, arithmetic):
 
 
 def _threads(threads):
-    """None → 0 (all cores) for the core; a positive int as is."""
+    """None or 0 → 0 (all cores, as the CLI's --threads 0) for the core; a positive int as is."""
     if threads is None:
         return 0
-    if isinstance(threads, (bool, np.bool_)) or not isinstance(threads, numbers.Integral) or threads < 1:
-        raise ValueError(f"threads: expected a positive integer or None (all cores); got {threads!r}")
+    if isinstance(threads, (bool, _np.bool_)) or not isinstance(threads, _numbers.Integral) or threads < 0:
+        raise ValueError(f"threads: expected a non-negative integer (0 or None: all cores); got {threads!r}")
     return min(int(threads), 1 << 16)
 
 
@@ -481,7 +490,7 @@ def _objects(name, seq, cls):
 
 
 def _rows(values, tail):
-    return np.array(values, dtype=np.float64).reshape((len(values),) + tail)
+    return _np.array(values, dtype=_np.float64).reshape((len(values),) + tail)
 
 
 _SHAPES_AS_SEQUENCE = ("for a sequence of boxes pass a list, or an array of shape (N, 2, 3) with boxes[i] = "
@@ -491,7 +500,7 @@ _SHAPES_AS_SEQUENCE = ("for a sequence of boxes pass a list, or an array of shap
 def _aligned_boxes(boxes):
     """(min, max) float64 arrays of shape (M, 3), and whether they are one box for all."""
     if isinstance(boxes, _core.AlignedBox):
-        return [np.array([boxes.min]), np.array([boxes.max])], True
+        return [_np.array([boxes.min]), _np.array([boxes.max])], True
     if _objects("boxes", boxes, _core.AlignedBox):
         return [_rows([b.min for b in boxes], (3,)), _rows([b.max for b in boxes], (3,))], False
     if isinstance(boxes, tuple):
@@ -512,14 +521,14 @@ def _aligned_boxes(boxes):
         raise ValueError(f"boxes: expected shape (N, 2, 3) or (2, 3), got {b.shape}")
     single = b.ndim == 2
     if single:
-        b = b[np.newaxis]
+        b = b[_np.newaxis]
     return [b[:, 0, :], b[:, 1, :]], single  # views: the core reads any strides
 
 
 def _frame_boxes(boxes, cls=_core.OrientedBox):
     """(center, axes, extents) float64 arrays of shapes (M, 3), (M, 3, 3), (M, 3), and whether single."""
     if isinstance(boxes, cls):
-        return [np.array([boxes.center]), np.array([boxes.axes]), np.array([boxes.extents])], True
+        return [_np.array([boxes.center]), _np.array([boxes.axes]), _np.array([boxes.extents])], True
     if _objects("boxes", boxes, cls):
         return [_rows([b.center for b in boxes], (3,)), _rows([b.axes for b in boxes], (3, 3)),
                 _rows([b.extents for b in boxes], (3,))], False
@@ -533,7 +542,7 @@ def _cylinders(cylinders):
     """(center, axis, radius, height) float64 arrays of shapes (M, 3), (M, 3), (M,), (M,); single."""
     if isinstance(cylinders, _core.Cylinder):
         c = cylinders
-        return [np.array([c.center]), np.array([c.axis]), np.array([c.radius]), np.array([c.height])], True
+        return [_np.array([c.center]), _np.array([c.axis]), _np.array([c.radius]), _np.array([c.height])], True
     if _objects("cylinders", cylinders, _core.Cylinder):
         return [_rows([c.center for c in cylinders], (3,)), _rows([c.axis for c in cylinders], (3,)),
                 _rows([c.radius for c in cylinders], ()), _rows([c.height for c in cylinders], ())], False
@@ -567,7 +576,7 @@ def intersects_aligned(boxes, cylinders, *, algorithm=Algorithm.inequalities, ar
     algorithm, arithmetic : Algorithm / Arithmetic or their names, optional
         The default (``"inequalities"``, ``"filtered"``) is the exact query.
     threads : int or None, optional
-        How many threads answer (None, the default: all cores; small batches use fewer).
+        How many threads answer (None or 0, the default: all cores; small batches use fewer).
 
     Returns
     -------
@@ -651,3 +660,67 @@ def intersects_parallelepiped(boxes, cylinders, *, algorithm=Algorithm.inequalit
     _check_lengths(box_arrays + cyl)
     return _core._intersects_parallelepiped(*box_arrays, box_single, *cyl, cylinder_single,
                                             *_options(algorithm, arithmetic), _threads(threads))
+
+
+# ---- The grid query. ---------------------------------------------------------------------------------
+
+def _counts(value):
+    """Three cell counts as Python ints, or a ValueError naming grid.counts."""
+    if isinstance(value, _np.ndarray):
+        items = value.tolist() if value.ndim == 1 else None
+    elif isinstance(value, (list, tuple)):
+        items = list(value)
+    else:
+        items = None
+    if items is None or len(items) != 3:
+        raise ValueError(f"grid.counts: expected 3 integers, got {value!r}")
+    for k, x in enumerate(items):
+        if isinstance(x, (bool, _np.bool_)) or not isinstance(x, _numbers.Integral):
+            raise ValueError(f"grid.counts[{k}]: is {_a(type(x).__name__)} ({x!r}); expected an integer")
+        if x > 1 << 53:
+            raise ValueError(f"grid.counts[{k}]: exceeds 2^53")
+        if x < 0:
+            raise ValueError(f"grid.counts[{k}]: is negative")
+    return tuple(int(x) for x in items)
+
+
+def grid_cells(origin, cell_size, counts, cylinder, *, max_cells=None):
+    """The cells of a regular axis-aligned grid that the cylinder intersects, exactly.
+
+    Cell ``(i, j, k)``, ``0 <= i < counts[0]`` etc., is the closed box whose bounds along each axis
+    are ``fma(n, cell_size, origin)`` — ``origin + n*cell_size`` rounded once to the nearest float64
+    — for ``n = i`` and ``i + 1`` (``j``, ``j + 1`` along y; ``k``, ``k + 1`` along z). Adjacent
+    cells share their faces exactly and tile the grid's box. A cell is listed if and only if
+    :func:`intersects` (the exact default: closed solids, touching counts) is true for that box —
+    the cells of C++'s ``boxcyl::cells(grid, cylinder)`` and of ``boxcyl grid``.
+
+    Parameters
+    ----------
+    origin, cell_size : array_like (3,)
+        The grid's corner and its cells' sides (> 0 each).
+    counts : 3 integers
+        Cells per axis, 0 to 2^53 (0: no cells); the far bound ``origin + counts*cell_size`` must
+        stay within the float64 range.
+    cylinder : Cylinder
+    max_cells : int or None, optional
+        Refuse (``ValueError``) an answer of more cells than this, found without listing them all.
+
+    Returns
+    -------
+    numpy.ndarray of int64, shape (M, 3)
+        The cells' indices, in lexicographic order of (i, j, k).
+
+    The walk discards blocks of cells that miss the cylinder with one exact query each, so its cost
+    grows with the cells near the cylinder's surface, not with the grid's size; it runs with the GIL
+    released, and Ctrl-C stops it.
+    """
+    if not isinstance(cylinder, _core.Cylinder):
+        raise ValueError(f"cylinder: expected a Cylinder, got {_type_name(cylinder)}")
+    if max_cells is None:
+        limit = -1
+    elif isinstance(max_cells, (bool, _np.bool_)) or not isinstance(max_cells, _numbers.Integral) or max_cells < 0:
+        raise ValueError(f"max_cells: expected a non-negative integer or None; got {max_cells!r}")
+    else:
+        limit = min(int(max_cells), (1 << 63) - 1)
+    return _core._grid_cells(_vector("grid.origin", origin), _vector("grid.cell_size", cell_size), _counts(counts),
+                             cylinder, limit)

@@ -1,6 +1,6 @@
 # Type stubs of the package boxcyl (PEP 561: see py.typed). The runtime is __init__.py over the
 # compiled boxcyl._core; these describe what users call.
-from typing import ClassVar, Dict, Literal, Optional, Sequence, SupportsFloat, Tuple, Union
+from typing import Any, ClassVar, Dict, Literal, Optional, Sequence, SupportsFloat, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -85,6 +85,9 @@ class Parallelepiped:
     def extents(self) -> _Vector3: ...
     def __eq__(self, other: object) -> bool: ...
     def __hash__(self) -> int: ...
+    @classmethod
+    def from_transform(cls, transform: npt.ArrayLike, *, half_extents: Optional[npt.ArrayLike] = ...,
+                       size: Optional[npt.ArrayLike] = ...) -> Parallelepiped: ...
 
 class Cylinder:
     def __init__(self, center: npt.ArrayLike, axis: npt.ArrayLike, radius: _Real, height: _Real) -> None: ...
@@ -109,12 +112,16 @@ class Cylinder:
     @classmethod
     def from_transform(cls, transform: npt.ArrayLike, *, radius: _Real, height: Optional[_Real] = ...,
                        half_height: Optional[_Real] = ..., along: Literal["x", "y", "z"] = ...) -> Cylinder: ...
+    @classmethod
+    def from_endpoints(cls, p0: npt.ArrayLike, p1: npt.ArrayLike, *, radius: _Real) -> Cylinder: ...
 
 _AlignedBoxes = Union[npt.ArrayLike, Tuple[npt.ArrayLike, npt.ArrayLike], AlignedBox, Sequence[AlignedBox]]
 _OrientedBoxes = Union[Tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike], OrientedBox, Sequence[OrientedBox]]
 _Parallelepipeds = Union[Tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike], Parallelepiped, Sequence[Parallelepiped]]
 _Cylinders = Union[Cylinder, Sequence[Cylinder], Tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike]]
 
+def grid_cells(origin: npt.ArrayLike, cell_size: npt.ArrayLike, counts: Union[Sequence[int], npt.NDArray[np.integer[Any]]],
+               cylinder: Cylinder, *, max_cells: Optional[int] = ...) -> npt.NDArray[np.int64]: ...
 def intersects(box: Union[AlignedBox, OrientedBox, Parallelepiped], cylinder: Cylinder, *, algorithm: _AlgorithmLike = ...,
                arithmetic: _ArithmeticLike = ...) -> bool: ...
 def intersects_aligned(boxes: _AlignedBoxes, cylinders: _Cylinders, *, algorithm: _AlgorithmLike = ...,

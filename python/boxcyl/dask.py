@@ -7,12 +7,14 @@
 >>> boxcyl.dask.intersects_aligned(boxes, cyl).compute().tolist()
 [True, True, True, True, True, True]
 
-Each block of boxes is answered by the numpy batch form (:func:`boxcyl.intersects_aligned` /
-:func:`boxcyl.intersects_oriented`) where Dask runs it: in a thread, a process, or a worker of a
+Each block of boxes is answered by the numpy batch form (:func:`boxcyl.intersects_aligned`,
+:func:`boxcyl.intersects_oriented`, :func:`boxcyl.intersects_parallelepiped`) where Dask runs it: in a thread, a process, or a worker of a
 ``distributed`` cluster. The answer is a lazy Dask array of bools (one byte per box) with the boxes'
 chunks along the first axis; reduce it (``.sum()``, ``.nonzero()``) or store it (``.to_zarr``) so that
 neither boxes nor answers need to fit in memory at once. The cylinder and the options travel with
-each task (shapes pickle). The answers equal one call of the numpy form on the whole array.
+each task (shapes pickle). The answers equal one call of the numpy form on the whole array, and the
+input is refused as the numpy form refuses it (booleans, complex numbers, strings, NaN, ...), an
+invalid box named by its index in the whole array.
 
 Within a block, ``threads`` (default 1) threads answer: Dask already runs blocks in parallel; give
 more for few large blocks.
@@ -24,7 +26,7 @@ import numpy as np
 
 import boxcyl
 
-__all__ = ["intersects_aligned", "intersects_oriented"]
+__all__ = ["intersects_aligned", "intersects_oriented", "intersects_parallelepiped"]
 
 
 def _cylinder(cylinder):
@@ -61,12 +63,39 @@ def _aligned_block(block, cylinder, algorithm, arithmetic, threads, block_info=N
         raise _renamed(e, block_info) from None
 
 
-def _oriented_block(rows, cylinder, algorithm, arithmetic, threads, block_info=None):
+def _frame_block(rows, form, cylinder, algorithm, arithmetic, threads, block_info=None):
     boxes = (rows[:, 0:3], rows[:, 3:12].reshape(-1, 3, 3), rows[:, 12:15])
     try:
-        return boxcyl.intersects_oriented(boxes, cylinder, algorithm=algorithm, arithmetic=arithmetic, threads=threads)
+        return form(boxes, cylinder, algorithm=algorithm, arithmetic=arithmetic, threads=threads)
     except ValueError as e:
         raise _renamed(e, block_info) from None
+
+
+def _real_dtype(name, array):
+    """What the numpy form refuses by dtype, refused before the fields are joined into one array (a
+    join would turn booleans into 0 and 1, or make every field complex)."""
+    kind = array.dtype.kind
+    if kind not in "iufO":
+        _, many = boxcyl._REFUSED_KINDS.get(kind, ("a value", "an array of values"))
+        raise ValueError(f"{name}: is {many} (dtype {array.dtype}); expected real numbers")
+
+
+def _frames(boxes, cylinder, form, algorithm, arithmetic, threads):
+    """The oriented and parallelepiped forms: (center, axes, extents) joined into (N, 15) rows whose
+    blocks hold whole boxes, each block split again and answered by `form`."""
+    if not isinstance(boxes, tuple) or len(boxes) != 3:
+        raise ValueError("boxes: expected a tuple (center, axes, extents) of Dask arrays")
+    center = _rows("boxes.center", boxes[0], (3,))
+    axes = _rows("boxes.axes", boxes[1], (3, 3))
+    extents = _rows("boxes.extents", boxes[2], (3,))
+    if not axes.shape[0] == extents.shape[0] == center.shape[0]:
+        raise ValueError(f"boxes: lengths {center.shape[0]}, {axes.shape[0]}, {extents.shape[0]} differ")
+    for name, array in (("boxes.center", center), ("boxes.axes", axes), ("boxes.extents", extents)):
+        _real_dtype(name, array)
+    # One (N, 15) array: center, axes (row by row), extents; each block holds whole boxes.
+    rows = da.concatenate([center, axes.reshape(-1, 9), extents], axis=1).rechunk({0: center.chunks[0], 1: -1})
+    return da.map_blocks(_frame_block, rows, form, _cylinder(cylinder), algorithm, arithmetic, threads,
+                         drop_axis=[1], dtype=np.bool_, meta=np.empty((0,), dtype=np.bool_))
 
 
 def intersects_aligned(boxes, cylinder, *, algorithm="inequalities", arithmetic="filtered", threads=1):
@@ -107,14 +136,23 @@ def intersects_oriented(boxes, cylinder, *, algorithm="inequalities", arithmetic
     -------
     dask.array.Array of bool, shape (N,), chunks those of ``center`` along the first axis
     """
-    if not isinstance(boxes, tuple) or len(boxes) != 3:
-        raise ValueError("boxes: expected a tuple (center, axes, extents) of Dask arrays")
-    center = _rows("boxes.center", boxes[0], (3,))
-    axes = _rows("boxes.axes", boxes[1], (3, 3))
-    extents = _rows("boxes.extents", boxes[2], (3,))
-    if not axes.shape[0] == extents.shape[0] == center.shape[0]:
-        raise ValueError(f"boxes: lengths {center.shape[0]}, {axes.shape[0]}, {extents.shape[0]} differ")
-    # One (N, 15) array: center, axes (row by row), extents; each block holds whole boxes.
-    rows = da.concatenate([center, axes.reshape(-1, 9), extents], axis=1).rechunk({0: center.chunks[0], 1: -1})
-    return da.map_blocks(_oriented_block, rows, _cylinder(cylinder), algorithm, arithmetic, threads,
-                         drop_axis=[1], dtype=np.bool_, meta=np.empty((0,), dtype=np.bool_))
+    return _frames(boxes, cylinder, boxcyl.intersects_oriented, algorithm, arithmetic, threads)
+
+
+def intersects_parallelepiped(boxes, cylinder, *, algorithm="inequalities", arithmetic="filtered", threads=1):
+    """Whether each parallelepiped of Dask arrays intersects one cylinder.
+
+    Parameters
+    ----------
+    boxes : a tuple (center, axes, extents) of dask.array.Array
+        As for :func:`intersects_oriented`, with any axes (rows), as for
+        :func:`boxcyl.intersects_parallelepiped`.
+    cylinder : boxcyl.Cylinder
+    algorithm, arithmetic, threads :
+        As for :func:`intersects_aligned`.
+
+    Returns
+    -------
+    dask.array.Array of bool, shape (N,), chunks those of ``center`` along the first axis
+    """
+    return _frames(boxes, cylinder, boxcyl.intersects_parallelepiped, algorithm, arithmetic, threads)

@@ -282,6 +282,44 @@ def test_threads_share_the_module_safely():
     assert all(np.array_equal(r, expected) for r in results)
 
 
+def test_large_batches_on_threads_equal_the_scalar_path():
+    """Batches long enough for the runner thread and the library's threads (threads=0: all cores, as
+    the CLI's --threads 0): each layout of aligned boxes (rows read in place, a (min, max) tuple and a
+    strided view gathered in chunks), oriented boxes and parallelepipeds against one cylinder (the
+    batch API) give the answers of the per-element path (the same cylinder repeated per box)."""
+    rng = np.random.default_rng(SEED + 7)
+    n = 140_000
+    cyl = boxcyl.Cylinder(center=(0.25, -0.5, 1.0), axis=(1.0, 2.0, -0.5), radius=1.5, height=4.0)
+    per_box = (np.tile(cyl.center, (n, 1)), cyl.axis, cyl.radius, cyl.height)
+    lo = rng.uniform(-4, 4, size=(n, 3))
+    aligned = np.stack([lo, lo + rng.uniform(0, 1.5, size=(n, 3))], axis=1)
+    expected = boxcyl.intersects_aligned(aligned, per_box, threads=1)
+    assert 0.05 < expected.mean() < 0.9
+    wide = np.zeros((2 * n, 2, 3))
+    wide[::2] = aligned
+    for threads in (0, 1, 2, None):
+        assert np.array_equal(boxcyl.intersects_aligned(aligned, cyl, threads=threads), expected)
+        assert np.array_equal(boxcyl.intersects_aligned((aligned[:, 0], aligned[:, 1]), cyl, threads=threads),
+                              expected)
+        assert np.array_equal(boxcyl.intersects_aligned(wide[::2], cyl, threads=threads), expected)
+        assert np.array_equal(boxcyl.intersects_aligned(aligned, per_box, threads=threads), expected)
+    frames = (rng.uniform(-4, 4, size=(n, 3)), _random_rotations(rng, n), rng.uniform(0, 1.0, size=(n, 3)))
+    oriented = boxcyl.intersects_oriented(frames, per_box, threads=1)
+    skewed = (frames[0], frames[1] * rng.uniform(0.5, 2, size=(n, 3, 1)), frames[2])
+    parallelepipeds = boxcyl.intersects_parallelepiped(skewed, per_box, threads=1)
+    for threads in (0, 2):
+        assert np.array_equal(boxcyl.intersects_oriented(frames, cyl, threads=threads), oriented)
+        assert np.array_equal(boxcyl.intersects_parallelepiped(skewed, cyl, threads=threads), parallelepipeds)
+    # The first invalid box by index is named, whichever thread finds it.
+    aligned[100_003, 1, 2] = np.nan
+    aligned[120_000, 0, 0] = np.inf
+    for threads in (0, 1, 2):
+        with pytest.raises(ValueError, match=re.escape("boxes[100003].max[2]: is NaN")):
+            boxcyl.intersects_aligned(aligned, cyl, threads=threads)
+        with pytest.raises(ValueError, match=re.escape("boxes[100003].max[2]: is NaN")):
+            boxcyl.intersects_aligned((aligned[:, 0], aligned[:, 1]), cyl, threads=threads)
+
+
 def test_readme_examples_run():
     """python/README.md's examples, in order, in one scope (later ones use earlier names)."""
     readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
@@ -333,3 +371,31 @@ def test_one_cylinder_batch_equals_scalar():
     for i in range(0, n, 97):
         box = boxcyl.OrientedBox(center=centers[i], axes=axes[i], extents=extents[i])
         assert obatch[i] == boxcyl.intersects(box, cyl), (i, box, cyl)
+
+
+def test_the_package_exports_only_its_api():
+    """Module imports are private (numpy as _np, ...): the public names are __all__ (and submodules)."""
+    assert not any(hasattr(boxcyl, name) for name in ("np", "numbers", "decimal"))
+    public = {name for name in dir(boxcyl) if not name.startswith("_")} - {"dask"}
+    assert public == set(boxcyl.__all__) - {"__version__"}
+
+
+def test_equality_hash_and_pickling_by_value_for_every_shape():
+    import pickle
+
+    shapes = [unit_box(), boxcyl.OrientedBox(center=(1, 2, 3), axes=np.eye(3), extents=(1, 2, 3)),
+              boxcyl.Parallelepiped(center=(1, 2, 3), axes=np.eye(3), extents=(1, 2, 3)),
+              boxcyl.Cylinder(center=(1, 2, 3), axis=(0, 0, 2), radius=1, height=2)]
+    for shape in shapes:
+        again = pickle.loads(pickle.dumps(shape))
+        assert type(again) is type(shape) and again == shape and hash(again) == hash(shape)
+        assert eval(repr(shape), vars(boxcyl)) == shape
+    # Same fields, another kind: not equal (an OrientedBox is no Parallelepiped), hashes apart.
+    assert shapes[1] != shapes[2] and len({hash(s) for s in shapes}) == 4
+    assert (shapes[0] == (unit_box().min, unit_box().max)) is False
+
+    class Named(boxcyl.AlignedBox):  # a user's subclass compares and pickles as the box it is
+        __slots__ = ()
+
+    assert Named(min=(-1, -1, -1), max=(1, 1, 1)) == unit_box()
+    assert pickle.loads(pickle.dumps(Named(min=(-1, -1, -1), max=(1, 1, 1)))) == unit_box()

@@ -87,3 +87,49 @@ def test_an_invalid_box_is_named_by_its_index_in_the_whole_array(client):
         boxcyl.dask.intersects_aligned(da.zeros((5, 3)), CYL)
     with pytest.raises(ValueError, match=re.escape("cylinder: expected a boxcyl.Cylinder, got tuple")):
         boxcyl.dask.intersects_aligned(da.zeros((5, 2, 3)), ((0, 0, 0), (0, 0, 1), 1, 1))
+
+
+def frames(rng, n):
+    q, r = np.linalg.qr(rng.normal(size=(n, 3, 3)))
+    axes = np.swapaxes(q * np.sign(np.diagonal(r, axis1=1, axis2=2))[:, None, :], 1, 2).copy()
+    return rng.uniform(-4, 4, (n, 3)), axes, rng.uniform(0, 1, (n, 3))
+
+
+def test_parallelepipeds_on_a_cluster_equal_one_call(client):
+    rng = np.random.default_rng(SEED + 3)
+    center, axes, extents = frames(rng, 20_000)
+    axes = axes * rng.uniform(0.2, 2, (20_000, 3, 1))  # any lengths
+    axes[::50, 2] = axes[::50, 0]  # some flat ones
+    expected = boxcyl.intersects_parallelepiped((center, axes, extents), CYL)
+    assert 0.05 < expected.mean() < 0.7
+    lazy = boxcyl.dask.intersects_parallelepiped(
+        (da.from_array(center, chunks=3_000), da.from_array(axes, chunks=(7_000, 3, 3)), da.from_array(extents)), CYL,
+        threads=0)
+    assert lazy.chunks[0] == (3_000,) * 6 + (2_000,)
+    assert np.array_equal(client.compute(lazy).result(), expected)
+    extents[12_345, 1] = -1
+    bad = boxcyl.dask.intersects_parallelepiped((da.from_array(center, chunks=3_000), da.from_array(axes),
+                                                 da.from_array(extents)), CYL)
+    with pytest.raises(ValueError, match=re.escape("boxes[12345].extents[1]: is negative")):
+        client.compute(bad).result()
+
+
+@pytest.mark.parametrize("form", [boxcyl.dask.intersects_oriented, boxcyl.dask.intersects_parallelepiped])
+def test_frame_forms_refuse_what_the_numpy_forms_refuse(form):
+    """The fields are joined into one array per block, which would read booleans as 0 and 1: they are
+    refused by dtype first, as the numpy forms refuse them."""
+    center, axes, extents = frames(np.random.default_rng(SEED + 4), 10)
+    with pytest.raises(ValueError, match=re.escape("boxes.extents: is an array of booleans (dtype bool); "
+                                                   "expected real numbers")):
+        form((da.from_array(center), da.from_array(axes), da.from_array(extents > 0.5)), CYL)
+    with pytest.raises(ValueError, match=re.escape("boxes.axes: is an array of complex numbers (dtype complex128)")):
+        form((da.from_array(center), da.from_array(axes + 0j), da.from_array(extents)), CYL)
+    with pytest.raises(ValueError, match=re.escape("boxes.center: is an array of strings (dtype <U1)")):
+        form((da.from_array(np.full((10, 3), "a")), da.from_array(axes), da.from_array(extents)), CYL)
+    numpy_form = boxcyl.intersects_oriented if form is boxcyl.dask.intersects_oriented else boxcyl.intersects_parallelepiped
+    with pytest.raises(ValueError, match=re.escape("boxes.extents: is an array of booleans (dtype bool)")):
+        numpy_form((center, axes, extents > 0.5), CYL)
+    # Integer fields are numbers, as in the numpy form.
+    ints = form((da.from_array(np.zeros((10, 3), dtype=np.int32)), da.from_array(axes),
+                 da.from_array(np.ones((10, 3), dtype=np.int64))), CYL).compute()
+    assert np.array_equal(ints, numpy_form((np.zeros((10, 3), dtype=np.int32), axes, np.ones((10, 3))), CYL))

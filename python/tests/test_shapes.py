@@ -160,3 +160,96 @@ def test_cylinder_height_half_height_and_local_axis():
         boxcyl.Cylinder.from_rotation((0, 0, 0), np.eye(3), radius=1, height=1, along="w")
     with raises("cylinder.radius: is negative"):
         boxcyl.Cylinder.from_rotation((0, 0, 0), np.eye(3), radius=-1, height=1)
+
+
+# --- Scaled poses, end points, quaternions of any size --------------------------------------------------
+
+def test_a_scaled_transform_gives_a_parallelepiped_not_an_oriented_box():
+    """trimesh's box(extents, transform) with a scaled transform is the parallelepiped spanned by the
+    transform's columns; OrientedBox.from_transform refuses it and says where to go."""
+    t = np.eye(4)
+    t[:3, :3] = R30 @ np.diag([3.0, 4.0, 5.0])
+    t[:3, 3] = (10, -2, 1)
+    p = boxcyl.Parallelepiped.from_transform(t, size=(1, 1, 1))
+    assert p == boxcyl.Parallelepiped(center=(10, -2, 1), axes=t[:3, :3].T, extents=(0.5, 0.5, 0.5))
+    assert boxcyl.Parallelepiped.from_transform(t, half_extents=(0.5, 0.5, 0.5)) == p
+    # Half sizes 1.5, 2, 2.5 along the local axes: 1.9 along local y is inside, 2.1 outside.
+    assert boxcyl.intersects(p, dot(np.array([10, -2, 1]) + 1.9 * Y_LOCAL, radius=0.01))
+    assert not boxcyl.intersects(p, dot(np.array([10, -2, 1]) + 2.1 * Y_LOCAL, radius=0.01))
+    with raises("transform: its top-left 3×3 block is not a rotation (column 0 has squared length 4; its columns "
+                "must be orthonormal within 1e-4): a box under a transform with scale or shear is a "
+                "parallelepiped: use Parallelepiped.from_transform"):
+        boxcyl.OrientedBox.from_transform(np.diag([2.0, 1, 1, 1]), size=(1, 1, 1))
+    with raises("rotation: is not a rotation matrix (columns 0 and 1 have dot product 0.5;"):
+        boxcyl.OrientedBox.from_rotation((0, 0, 0), [[1, 0.5, 0], [0, 1, 0], [0, 0, 1]], size=(1, 1, 1))
+    bottom = np.eye(4)
+    bottom[3, 0] = 1
+    with raises("boxcyl: transform: the bottom row is not (0, 0, 0, 1)"):
+        boxcyl.Parallelepiped.from_transform(bottom, size=(1, 1, 1))
+    with raises("box: give exactly one of half_extents= or size="):
+        boxcyl.Parallelepiped.from_transform(t)
+
+
+@pytest.mark.parametrize("scale", [np.diag([2.0, 2.0, 2.0, 1.0]), np.diag([1.0, 1.0, 3.0, 1.0]),
+                                   np.diag([1.0, 0.5, 1.0, 1.0])])
+def test_a_scaled_transform_is_refused_for_a_cylinder(scale):
+    """trimesh reads cylinder(radius, height, transform) with a scaled transform as a scaled solid
+    (radius·2, height·2 for a uniform 2, an elliptic cylinder otherwise); boxcyl refuses it rather than
+    drop the scale."""
+    with raises("transform: its top-left 3×3 block is not a rotation (column "):
+        boxcyl.Cylinder.from_transform(scale, radius=1, height=2)
+    try:
+        boxcyl.Cylinder.from_transform(scale, radius=1, height=2)
+    except ValueError as e:
+        assert str(e).endswith("a scaled transform changes the cylinder's radius and height (a non-uniform scale "
+                               "makes an elliptic cylinder, which is not a cylinder), and boxcyl takes them "
+                               "explicitly: pass the unscaled pose with the scaled radius= and height=")
+    with raises("rotation: is not a rotation matrix (column "):
+        boxcyl.Cylinder.from_rotation((0, 0, 0), scale[:3, :3], radius=1, height=2)
+
+
+def test_rotations_within_the_tolerance_are_accepted():
+    printed = np.round(R30, 5)  # a rotation printed to 5 digits is still one
+    assert boxcyl.Cylinder.from_rotation((0, 0, 0), printed, radius=1, height=2).axis == (0.0, 0.0, 1.0)
+    assert boxcyl.OrientedBox.from_rotation((0, 0, 0), printed, size=(1, 1, 1)).axes[0] == tuple(printed[:, 0])
+
+
+def test_quaternions_of_any_magnitude():
+    s, c = math.sin(math.pi / 12), math.cos(math.pi / 12)
+    unit = boxcyl.OrientedBox.from_quaternion((0, 0, 0), xyzw=(0, 0, s, c), size=(2, 8, 2))
+    for scale in (2.0 ** -1000, 1e-300, 1e300, 2.0 ** 1000):
+        scaled = boxcyl.OrientedBox.from_quaternion((0, 0, 0), xyzw=(0, 0, s * scale, c * scale), size=(2, 8, 2))
+        assert np.allclose(scaled.axes, unit.axes, rtol=0, atol=4e-16), scale
+    assert boxcyl.OrientedBox.from_quaternion((0, 0, 0), xyzw=(0, 0, s * 2.0 ** 1000, c * 2.0 ** 1000),
+                                              size=(2, 8, 2)) == unit
+    with raises("boxcyl: quaternion: is NaN"):
+        boxcyl.OrientedBox.from_quaternion((0, 0, 0), wxyz=(1, math.nan, 0, 0), size=(1, 1, 1))
+    with raises("boxcyl: quaternion: is infinite"):
+        boxcyl.Cylinder.from_quaternion((0, 0, 0), wxyz=(1, 0, math.inf, 0), radius=1, height=1)
+
+
+def test_cylinder_between_two_points():
+    """MuJoCo's <geom type="cylinder" fromto="1 2 3 1 2 7" size="0.5">, trimesh's cylinder(radius,
+    segment=...): the axis segment is the segment given."""
+    c = boxcyl.Cylinder.from_endpoints((1, 2, 3), (1, 2, 7), radius=0.5)
+    assert c == boxcyl.Cylinder(center=(1, 2, 5), axis=(0, 0, 4), radius=0.5, height=4)
+    assert boxcyl.intersects(boxcyl.AlignedBox(min=(0.9, 1.9, 7), max=(1.1, 2.1, 7.1)), c)  # touches the end at p1
+    assert not boxcyl.intersects(boxcyl.AlignedBox(min=(0.9, 1.9, math.nextafter(7, 8)), max=(1.1, 2.1, 7.1)), c)
+    integer = boxcyl.Cylinder.from_endpoints((-1, -1, -1), (2, 3, 11), radius=0.25)  # length 13, exact
+    assert (integer.center, integer.axis, integer.height) == ((0.5, 1.0, 5.0), (3.0, 4.0, 12.0), 13.0)
+    # A length that is no float64 is rounded up: the smallest float64 whose square is >= |p1 - p0|².
+    from fractions import Fraction
+    rng = np.random.default_rng(41)
+    for p0, p1 in [((0, 0, 0), (1, 1, 1)), ((0, 0, 0), (1, 1, 0))] + [
+            (tuple(rng.normal(size=3) * 10.0 ** rng.integers(-5, 5)), tuple(rng.normal(size=3))) for _ in range(200)]:
+        cyl = boxcyl.Cylinder.from_endpoints(p0, p1, radius=1)
+        squared = sum(Fraction(a) ** 2 for a in cyl.axis)
+        assert Fraction(cyl.height) ** 2 >= squared > Fraction(math.nextafter(cyl.height, 0)) ** 2
+        assert cyl.axis == tuple(float(b) - float(a) for a, b in zip(p0, p1))
+    assert boxcyl.Cylinder.from_endpoints((0, 0, 0), (1, 1, 1), radius=1).height == math.nextafter(math.sqrt(3), 2)
+    with raises("p0, p1: are the same point (1.0, 2.0, 3.0); a cylinder between them has no axis"):
+        boxcyl.Cylinder.from_endpoints((1, 2, 3), [1, 2, 3], radius=1)
+    with raises("cylinder.radius: is negative"):
+        boxcyl.Cylinder.from_endpoints((0, 0, 0), (0, 0, 1), radius=-1)
+    with raises("p1: expected 3 numbers, got shape (2,)"):
+        boxcyl.Cylinder.from_endpoints((0, 0, 0), (0, 1), radius=1)

@@ -40,6 +40,11 @@ GOOD = textwrap.dedent("""
     posed = boxcyl.OrientedBox.from_transform(np.eye(4), half_extents=(1, 1, 1))
     tube: boxcyl.Cylinder = boxcyl.Cylinder.from_rotation((0, 0, 0), np.eye(3), radius=1, half_height=2, along="y")
     same: bool = box == boxcyl.AlignedBox((-1, -1, -1), (1, 1, 1))
+    rod: boxcyl.Cylinder = boxcyl.Cylinder.from_endpoints((0, 0, 0), [0, 0, 2], radius=0.5)
+    sheared: boxcyl.Parallelepiped = boxcyl.Parallelepiped.from_transform(np.diag([2.0, 1, 1, 1]), size=(1, 1, 1))
+    cells: npt.NDArray[np.int64] = boxcyl.grid_cells((0, 0, 0), (1, 1, 1), (4, 4, 4), rod, max_cells=100)
+    hits = boxcyl.intersects_parallelepiped([sheared], rod, threads=0)
+    lazy = boxcyl.dask.intersects_parallelepiped((np.zeros((4, 3)), np.zeros((4, 3, 3)), np.ones((4, 3))), rod)
     print(boxcyl.__version__, boxcyl.Algorithm.oracle.name, hash(cyl))
 """)
 
@@ -53,6 +58,7 @@ BAD = textwrap.dedent("""
     boxcyl.intersects_aligned(box, cyl, threads=1.5)
     n: int = box.min
     boxcyl.Cylinder.from_rotation((0, 0, 0), ((1, 0, 0), (0, 1, 0), (0, 0, 1)), radius=1, height=1, along="w")
+    boxcyl.grid_cells((0, 0, 0), (1, 1, 1), (4, 4, 4), box)
 """)
 
 
@@ -75,7 +81,7 @@ def test_mypy_strict_accepts_documented_use(tmp_path):
 def test_mypy_rejects_misuse_line_by_line(tmp_path):
     done = mypy(tmp_path, BAD)
     lines = sorted({int(line.split(":")[1]) for line in done.stdout.splitlines() if ": error:" in line})
-    assert lines == [5, 6, 7, 8, 9, 10], done.stdout
+    assert lines == [5, 6, 7, 8, 9, 10, 11], done.stdout
 
 
 def test_stubtest_finds_the_stubs_consistent_with_the_module(tmp_path):

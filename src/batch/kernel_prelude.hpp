@@ -10,6 +10,10 @@
 // template is instantiated where first used, under the pragma, so these files are compiled at -O2 in
 // every build type (where such helpers are inlined; CMakeLists.txt), and scripts/check_isa_leaks.py
 // verifies the built objects (CTest: batch.kernels_keep_their_instruction_sets).
+//
+// The scalar exact default, which the kernels call for the lanes their filter leaves, is not compiled
+// here at all: BOXCYL_PIPELINE_EXTERN (CMakeLists.txt) declares its instantiations extern, and they link
+// pipeline.cpp's one plain x86-64 copy, which saves most of these files' build time.
 #pragma once
 
 // <experimental/simd>'s own includes (libstdc++ 12).
@@ -43,7 +47,6 @@
 #include "boxcyl/batch/dispatch.hpp"
 #include "boxcyl/batch/split.hpp"
 #include "boxcyl/batch/types.hpp"
-#include "boxcyl/filtered.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/validate.hpp"

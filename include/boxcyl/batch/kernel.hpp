@@ -25,7 +25,11 @@
 #include "boxcyl/batch/filter.hpp"
 #include "boxcyl/batch/split.hpp"
 #include "boxcyl/batch/types.hpp"
+#if defined(BOXCYL_BATCH_SCALAR_APART)
+#include "boxcyl/batch/dispatch.hpp"  // scalar_intersects
+#else
 #include "boxcyl/filtered.hpp"
+#endif
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/validate.hpp"
@@ -329,6 +333,7 @@ Stats run(const Cylinder<double>& cyl, const Source& s, std::size_t n, const Opt
     split::for_each_range(blocks, threads, [&](std::size_t first, std::size_t last, unsigned t) {
         Stats x;
         for (std::size_t blk = first; blk < last; ++blk) {
+            if (opt.stop.stop_requested()) throw Stopped();
             const std::size_t begin = blk * 64, count = std::min<std::size_t>(64, n - begin);
             emit(blk, block_bits(f, cyl, s, begin, count, opt.check_boxes, x), count);
         }

@@ -48,6 +48,7 @@ Stats run(const Cylinder<double>& cyl, std::span<const Parallelepiped<T>> boxes,
     std::vector<std::size_t> exact(threads, 0);
     split::for_each_range(blocks, threads, [&](std::size_t first, std::size_t last, unsigned t) {
         for (std::size_t blk = first; blk < last; ++blk) {
+            if (opt.stop.stop_requested()) throw Stopped();
             const std::size_t begin = blk * 64, count = std::min<std::size_t>(64, n - begin);
             std::uint64_t bits = 0;
             if (opt.check_boxes)

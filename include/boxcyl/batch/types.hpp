@@ -5,7 +5,8 @@
 #include <cstddef>    // std::size_t
 #include <cstdint>    // std::uint64_t
 #include <span>       // inputs and outputs
-#include <stdexcept>  // InvalidBox
+#include <stdexcept>  // InvalidBox, Stopped
+#include <stop_token>  // Options::stop
 #include <string>     // its message
 
 #include "boxcyl/geometry/box.hpp"
@@ -50,6 +51,10 @@ struct Options {
     // numbers, extents ≥ 0, the axes' Gram matrix in double); a block they cannot clear is judged by
     // is_valid. Parallelepipeds call is_valid per box.
     bool check_boxes = false;
+    // Cancellation: every thread looks at it before each 64-box block, and once a stop is requested
+    // the call throws Stopped (the answers written so far are of whole blocks; the others are
+    // unspecified). A default token never stops; looking costs a load per block.
+    std::stop_token stop = {};
 };
 
 // Thrown with Options::check_boxes for an invalid box: `index` is the first invalid box of the
@@ -61,6 +66,11 @@ struct InvalidBox : std::invalid_argument {
         : std::invalid_argument("boxcyl::batch::intersects: boxes[" + std::to_string(i) +
                                 "] is invalid (see boxcyl::validate)"),
           index(i) {}
+};
+
+// Thrown when Options::stop was requested before the batch was answered.
+struct Stopped : std::runtime_error {
+    Stopped() : std::runtime_error("boxcyl::batch::intersects: stopped (Options::stop)") {}
 };
 
 struct Stats {
