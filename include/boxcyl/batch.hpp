@@ -50,8 +50,13 @@
 // boxcyl::fp_environment_ok()). Needs the exact backend (link boxcyl::exact), like the default query.
 #pragma once
 
+// With the compiled library (boxcyl::boxcyl, which defines neither macro) this header is its
+// declarations of the same batch queries (double and float): the same calls, compiled in libboxcyl.
+#if !defined(BOXCYL_HAS_EXACT) && !defined(BOXCYL_HEADER_ONLY)
+#include "boxcyl/compiled.hpp"
+#else
 #if !defined(BOXCYL_HAS_EXACT)
-#error "boxcyl/batch.hpp answers exactly and needs the exact backend: link boxcyl::exact (GMP), or link the compiled boxcyl::boxcyl and include <boxcyl/boxcyl.hpp>"
+#error "boxcyl/batch.hpp answers exactly and needs the exact backend: link boxcyl::exact (GMP), or the compiled boxcyl::boxcyl"
 #endif
 
 #include <cstddef>           // std::size_t
@@ -202,3 +207,5 @@ Stats intersects(const Cylinder<float>& cyl, const Boxes& boxes, Out&& out, cons
 }
 
 }  // namespace boxcyl::batch
+
+#endif  // the templates

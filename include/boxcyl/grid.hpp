@@ -32,6 +32,12 @@
 // default query; the grid itself (Grid, grid_bound, cell_box, validate: boxcyl/grid_types.hpp) does not.
 #pragma once
 
+// With the compiled library (boxcyl::boxcyl, which defines neither macro) this header is its
+// declarations of the same grid query: the same calls, compiled in libboxcyl.
+#if !defined(BOXCYL_HAS_EXACT) && !defined(BOXCYL_HEADER_ONLY)
+#include "boxcyl/compiled.hpp"
+#else
+
 #include <algorithm>  // std::max, std::sort
 #include <array>      // cell indices
 #include <cassert>    // debug-build precondition checks
@@ -292,9 +298,19 @@ inline std::vector<CellIndex> cells(const Grid& g, const Cylinder<double>& c, Gr
 template <class F>
 void for_each_cell(const Grid&, const Cylinder<double>&, F&&, GridStats* = nullptr) {
     static_assert(detail::dependent_false<F>,
-                  "boxcyl::for_each_cell is exact and needs the exact backend: link boxcyl::exact (GMP)");
+                  "boxcyl::for_each_cell is exact and needs the exact backend: link boxcyl::exact (GMP) or the "
+                  "compiled boxcyl::boxcyl");
+}
+template <class G = Grid>
+std::vector<CellIndex> cells(const G&, const Cylinder<double>&, GridStats* = nullptr) {
+    static_assert(detail::dependent_false<G>,
+                  "boxcyl::cells is exact and needs the exact backend: link boxcyl::exact (GMP) or the compiled "
+                  "boxcyl::boxcyl");
+    return {};
 }
 
 #endif  // BOXCYL_HAS_EXACT
 
 }  // namespace boxcyl
+
+#endif  // the templates

@@ -9,11 +9,11 @@
 #include <span>     // batch inputs and outputs
 #include <vector>   // batch arrays
 
-#include <boxcyl/boxcyl.hpp>
-#if defined(BOXCYL_HEADER_ONLY)
+// Every header the README shows: with the compiled library, <boxcyl/batch.hpp> and <boxcyl/grid.hpp>
+// are its declarations; with the templates, the templates.
 #include <boxcyl/batch.hpp>
+#include <boxcyl/boxcyl.hpp>
 #include <boxcyl/grid.hpp>
-#endif
 
 namespace {
 
