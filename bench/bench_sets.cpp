@@ -13,10 +13,11 @@
 //   uniform      4096 random queries of CaseGenerator's uniform profile (seed 0xb0c5c708: plain data,
 //                no zero sizes or tiny components), and 512 one-ulp boundary pairs of it (seed
 //                0xb0c5c709): a second generator's mix, for the ratios not to rest on one
-// Columns per set: the default query (`intersects(box, cyl)`) and plain double §4
-// (`{Algorithm::inequalities, Arithmetic::float64}`). Per row of the pipeline (filtered/schedule.hpp):
-// the queries it decides and its statistics, read from the library (filtered::Stats), and the default
-// query's mean time on the queries each row decides, timed on their own without statistics.
+// Columns per set: the default query (`intersects(box, cyl)`, which checks its inputs), the same
+// unchecked (`intersects_unchecked`), and plain double §4 (`{Algorithm::inequalities,
+// Arithmetic::float64}`). Per row of the pipeline (filtered/schedule.hpp): the queries it decides and its
+// statistics, read from the library (filtered::Stats), and the default query's mean time on the queries
+// each row decides, timed on their own without statistics.
 //
 // Usage: bench_sets [--markdown=FILE] [--quick] [benchmark flags...]
 #include <benchmark/benchmark.h>
@@ -43,15 +44,18 @@ using namespace boxcyl;
 using boxcyl::testing::Case;
 using boxcyl::testing::with_box;
 
-// The methods timed: the default query and plain double §4.
-enum class Method { default_query, double_s4 };
-constexpr const char* kMethodKey[] = {"default", "double_s4"};
+// The methods timed: the default query (its front door checks the inputs), the same without the check,
+// and plain double §4 (also checked).
+enum class Method { default_query, unchecked, double_s4 };
+constexpr const char* kMethodKey[] = {"default", "unchecked", "double_s4"};
 
 template <Method M>
 bool answer(const Case& c) {
     return with_box(c, [](const auto& b, const Cylinder<double>& cyl) {
         if constexpr (M == Method::default_query)
             return intersects(b, cyl);
+        else if constexpr (M == Method::unchecked)
+            return intersects_unchecked(b, cyl);
         else
             return intersects(b, cyl, {Algorithm::inequalities, Arithmetic::float64});
     });
@@ -90,10 +94,11 @@ void timed(benchmark::State& state, const std::vector<Case>* cases) {
 
 void add(const std::string& name, Method m, const std::vector<Case>* cases) {
     if (cases->empty()) return;
-    if (m == Method::default_query)
-        benchmark::RegisterBenchmark(name.c_str(), timed<Method::default_query>, cases);
-    else
-        benchmark::RegisterBenchmark(name.c_str(), timed<Method::double_s4>, cases);
+    switch (m) {
+        case Method::default_query: benchmark::RegisterBenchmark(name.c_str(), timed<Method::default_query>, cases); break;
+        case Method::unchecked: benchmark::RegisterBenchmark(name.c_str(), timed<Method::unchecked>, cases); break;
+        case Method::double_s4: benchmark::RegisterBenchmark(name.c_str(), timed<Method::double_s4>, cases); break;
+    }
 }
 
 // ---- the voxel workload: per-box cost through the three interfaces ----
@@ -198,12 +203,13 @@ std::string row_key(const std::string& set, std::size_t k) {
 
 void summary(std::FILE* out, const std::vector<Set>& sets) {
     std::fprintf(out, "\n**The sets** (time per query, median of the repetitions; ratios from this run)\n\n");
-    std::fprintf(out, "| set | queries | default | double §4 | default / double §4 | wrong (default vs oracle) |\n");
-    std::fprintf(out, "| --- | ---: | ---: | ---: | ---: | ---: |\n");
+    std::fprintf(out, "| set | queries | default | unchecked | double §4 | default / double §4 | wrong (default vs oracle) |\n");
+    std::fprintf(out, "| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     for (const Set& s : sets) {
-        const double d = ns(s.name + "/default"), b = ns(s.name + "/double_s4");
-        std::fprintf(out, "| %s | %zu | %s | %s | %s | %ld |\n", s.title.c_str(), s.cases.size(), ns_text(d).c_str(),
-                     ns_text(b).c_str(), ratio_text(d / b).c_str(), s.wrong_default);
+        const double d = ns(s.name + "/default"), u = ns(s.name + "/unchecked"), b = ns(s.name + "/double_s4");
+        std::fprintf(out, "| %s | %zu | %s | %s | %s | %s | %ld |\n", s.title.c_str(), s.cases.size(),
+                     ns_text(d).c_str(), ns_text(u).c_str(), ns_text(b).c_str(), ratio_text(d / b).c_str(),
+                     s.wrong_default);
     }
     std::fprintf(out, "\n**By deciding row** (the queries each row of the pipeline decides, and the default query's "
                       "mean time on them, timed on their own; their share of the set's total time)\n\n");
@@ -309,7 +315,7 @@ int main(int argc, char** argv) {
     }
 
     for (const Set& s : sets) {
-        for (int m = 0; m < 2; ++m) add(s.name + "/" + kMethodKey[m], Method(m), &s.cases);
+        for (int m = 0; m < 3; ++m) add(s.name + "/" + kMethodKey[m], Method(m), &s.cases);
         for (std::size_t k = 0; k < filtered::row_count; ++k)
             add(row_key(s.name, k), Method::default_query, &s.by_row[k]);
     }

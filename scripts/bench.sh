@@ -88,7 +88,8 @@ The sets:
   in [−1, 1], no zero sizes or tiny components), and 512 one-ulp boundary pairs of it: a second mix, so
   that no ratio rests on one generator's choices.
 
-Columns: *default* is \`boxcyl::intersects(box, cyl)\`; *double §4* is
+Columns: *default* is \`boxcyl::intersects(box, cyl)\`, which checks its inputs first; *unchecked* is
+\`boxcyl::intersects_unchecked(box, cyl)\`, the same without the check; *double §4* is
 \`intersects(box, cyl, {Algorithm::inequalities, Arithmetic::float64})\`, plain rounded double, wrong
 near touching. *wrong* counts the default query's answers that differ from the oracle's. The rows of the
 pipeline, by the names below, are described in [pipeline.md](pipeline.md); *by deciding row* times the
