@@ -1,8 +1,11 @@
 # cmake -DSOURCE_DIR=<repo> -DWORK_DIR=... -DCXX=... -P plain_build.cmake  (CTest: consumer.plain_build)
-# The README's C++ install commands as a user runs them: a configure with no options (on a machine without
-# GoogleTest, pybind11 or Google Benchmark, hidden here), a build, an install, then a program built
-# against the installed compiled library with pkg-config. Checks that the configure chose a Release
-# build and left tests, benchmarks and the Python module off.
+# The README's C++ install commands as a user runs them, kept in step with it:
+#   cmake -S . -B build                    (no options, on a machine without GoogleTest, pybind11 or
+#                                           Google Benchmark, hidden here)
+#   cmake --build build -j "$(nproc)"      (ProcessorCount: the CPUs available, as nproc counts them)
+#   cmake --install build --prefix PREFIX
+# then a program built against the installed compiled library with pkg-config. Checks that the
+# configure chose a Release build and left tests, benchmarks and the Python module off.
 cmake_minimum_required(VERSION 3.25)  # policies for script mode (IN_LIST)
 file(REMOVE_RECURSE ${WORK_DIR})
 set(build ${WORK_DIR}/build)

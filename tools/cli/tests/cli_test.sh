@@ -859,6 +859,27 @@ skewed_frames)
     run 0 intersect --help
     contains "$work/out" "2^-49"
     ;;
+readme_commands)
+    # Every `echo '<input>' | boxcyl <subcommand>` line of the README (the quick start's intersect, the
+    # grid example) with its output shown under it as `# <output>`: run as written, output compared.
+    readme=$examples/../README.md
+    awk -v work="$work" '
+        pending { if ($0 ~ /^# /) { n++; print substr($0, 3) > (work "/want" n); print sub_ > (work "/sub" n); print in_ > (work "/in" n) } pending = 0 }
+        /^echo \x27.*\x27 \| boxcyl [a-z]+$/ {
+            in_ = $0; sub(/^echo \x27/, "", in_); sub(/\x27 \| boxcyl [a-z]+$/, "", in_)
+            sub_ = $0; sub(/.* \| boxcyl /, "", sub_); pending = 1
+        }
+        END { print n + 0 > (work "/count") }' "$readme"
+    count=$(cat "$work/count")
+    [[ $count -ge 2 ]] || fail "expected the intersect and grid commands with their output in $readme, found $count"
+    grep -qx intersect "$work"/sub* || fail "no 'echo ... | boxcyl intersect' line in $readme"
+    for ((i = 1; i <= count; ++i)); do
+        cp "$work/in$i" "$work/stdin"
+        run 0 "$(cat "$work/sub$i")"
+        same_bytes "$work/out" "$work/want$i"
+    done
+    rm -f "$work/stdin"
+    ;;
 *)
     echo "unknown case $case_name" >&2
     exit 2
