@@ -16,8 +16,9 @@
 //   parallel, any lengths and angles), so nothing about them is checked.
 // - Magnitudes: every finite double is accepted, subnormals to ±DBL_MAX; the default query answers
 //   exactly there too (no intermediate overflow turns into a wrong answer).
-// For valid input, boxcyl::intersects() with default options never throws; it asserts validity in
-// debug builds; in release builds invalid input gets an unspecified answer or an exception.
+// boxcyl::intersects() refuses invalid input in every build type: std::invalid_argument whose message is
+// validate()'s; for valid input with default options it never throws. intersects_unchecked() skips the
+// check (it asserts validity in debug builds).
 //
 // Cost: is_valid() is a few comparisons (no allocation, never throws), and validate() on valid input
 // is is_valid() plus an empty Validity; the strings naming the field are built only when something
