@@ -74,7 +74,7 @@ inline std::string describe(const Cylinder<double>& c) {
 }
 
 template <class Box, class Recorder>
-Result run(const Box& box, const Cylinder<double>& cyl, Recorder& stats) {
+BOXCYL_FORCE_INLINE inline Result run(const Box& box, const Cylinder<double>& cyl, Recorder& stats) {
     assert(is_valid(box) && "boxcyl::filtered::query: invalid box (see boxcyl::validate)");
     assert(is_valid(cyl) && "boxcyl::filtered::query: invalid cylinder (see boxcyl::validate)");
 #if defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT

@@ -164,7 +164,7 @@ public:
     };
 
     // The query is not copied (the rows read the caller's box and cylinder), unless it is rescaled.
-    Prepared(const Box& b, const Cylinder<double>& c)
+    BOXCYL_FORCE_INLINE Prepared(const Box& b, const Cylinder<double>& c)
         : in_range(semi_static::problem(b, c, p)),
           scaled_(in_range ? std::nullopt : rescaled(b, c)),
           box(scaled_ ? scaled_->first : b),

@@ -626,7 +626,7 @@ inline constexpr const Kappas& kappas_of<OrientedBox<double>> = oriented_kappas;
 // it on to the witness search). The tests pass other κ (zero: the computed values alone, unsound)
 // through the generic decide() above.
 template <class Box>
-std::optional<bool> decide(const Problem& p, const Box& b, const Cylinder<double>& cyl) {
+BOXCYL_FORCE_INLINE inline std::optional<bool> decide(const Problem& p, const Box& b, const Cylinder<double>& cyl) {
     if constexpr (std::is_same_v<Box, AlignedBox<double>>)
         return decide(p, aligned_kappas, [&](int w) { return witness_offset(p, w, b, cyl); });
     else

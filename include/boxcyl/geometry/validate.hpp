@@ -69,6 +69,18 @@ int finite3(const Vec3<T>& p) noexcept {
     return finite(p[0]) & finite(p[1]) & finite(p[2]);
 }
 
+// 1 when every value is finite: x·0 is an exact ±0 for finite x and NaN for ±Inf and NaN, in every
+// rounding mode, so a sum of them is 0 exactly when all are finite — a few vectorisable flops instead of
+// a comparison per field (the front door runs this on every query). Summed pairwise: a short chain.
+template <class T>
+T zero_if_finite(const Vec3<T>& v) noexcept {
+    return (v[0] * T(0) + v[1] * T(0)) + v[2] * T(0);
+}
+template <class T>
+int all_finite(T sum_of_zeros) noexcept {
+    return static_cast<int>(sum_of_zeros == T(0));
+}
+
 template <class T>
 int size_ok(T x) noexcept {
     return finite(x) & static_cast<int>(!(x < T(0)));
@@ -265,25 +277,31 @@ Validity describe(const Parallelepiped<T>& b, const std::string& prefix) {
 // True when validate() would say ok: the same checks, without building any text.
 template <class T>
 bool is_valid(const Cylinder<T>& c) noexcept {
-    return (detail::finite3(c.center) & detail::finite3(c.axis) & (detail::is_zero3(c.axis) ^ 1) &
-            detail::size_ok(c.radius) & detail::size_ok(c.height)) != 0;
+    using namespace detail;
+    const T sizes = c.radius * T(0) + c.height * T(0);
+    return (all_finite((zero_if_finite(c.center) + zero_if_finite(c.axis)) + sizes) & (is_zero3(c.axis) ^ 1) &
+            ordered(T(0), c.radius) & ordered(T(0), c.height)) != 0;
 }
 
 template <class T>
 bool is_valid(const AlignedBox<T>& b) noexcept {
-    return (detail::finite3(b.min) & detail::finite3(b.max) & detail::ordered(b.min[0], b.max[0]) &
-            detail::ordered(b.min[1], b.max[1]) & detail::ordered(b.min[2], b.max[2])) != 0;
+    using namespace detail;
+    return (all_finite(zero_if_finite(b.min) + zero_if_finite(b.max)) & ordered(b.min[0], b.max[0]) &
+            ordered(b.min[1], b.max[1]) & ordered(b.min[2], b.max[2])) != 0;
 }
 
 template <class T>
 bool is_valid(const CanonicalBox<T>& b) noexcept {
-    return (detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) & detail::size_ok(b.extents[2])) != 0;
+    using namespace detail;
+    return (all_finite(zero_if_finite(b.extents)) & ordered(T(0), b.extents[0]) & ordered(T(0), b.extents[1]) &
+            ordered(T(0), b.extents[2])) != 0;
 }
 
 template <class T>
 bool is_valid(const OrientedBox<T>& b) noexcept {
-    const bool others = (detail::finite3(b.center) & detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) &
-                         detail::size_ok(b.extents[2])) != 0;
+    using namespace detail;
+    const bool others = (all_finite(zero_if_finite(b.center) + zero_if_finite(b.extents)) &
+                         ordered(T(0), b.extents[0]) & ordered(T(0), b.extents[1]) & ordered(T(0), b.extents[2])) != 0;
     // gram_clearly_ok() implies finite, non-zero axes: a NaN or ±Inf component makes a Gram entry NaN
     // or +Inf, a zero axis makes |Ai|² zero.
     if (others && detail::gram_clearly_ok(b.axes)) return true;
@@ -295,9 +313,10 @@ bool is_valid(const OrientedBox<T>& b) noexcept {
 // Any axes: only finite fields and non-negative extents are asked.
 template <class T>
 bool is_valid(const Parallelepiped<T>& b) noexcept {
-    return (detail::finite3(b.center) & detail::finite3(b.axes[0]) & detail::finite3(b.axes[1]) &
-            detail::finite3(b.axes[2]) & detail::size_ok(b.extents[0]) & detail::size_ok(b.extents[1]) &
-            detail::size_ok(b.extents[2])) != 0;
+    using namespace detail;
+    const T axes = (zero_if_finite(b.axes[0]) + zero_if_finite(b.axes[1])) + zero_if_finite(b.axes[2]);
+    return (all_finite((zero_if_finite(b.center) + zero_if_finite(b.extents)) + axes) & ordered(T(0), b.extents[0]) &
+            ordered(T(0), b.extents[1]) & ordered(T(0), b.extents[2])) != 0;
 }
 
 // Names the first bad field and why. `prefix` names the object in messages ("cylinder", or
