@@ -6,7 +6,7 @@
 //                   signed-permutation frames: §4 in integers) and turned (frames orthonormal only up
 //                   to rounding: the parallelepiped test in integers)
 //   boundary:       one-ulp boundary pairs of the random generator (support/cases.hpp, seed 0xb0c5c702,
-//                   1024 pairs as in bench_sets, both members), those that reach exact arithmetic,
+//                   1024 pairs as in bench_pipeline, both members), those that reach exact arithmetic,
 //                   integer frames (subnormal axis components beside full 53-bit mantissas)
 // and, for the ratio the goals are stated in, the default query and plain double §4
 // ({Algorithm::inequalities, Arithmetic::float64}) on the whole touching set.

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Compares the default query's time per benchmark set between two commits, side by side in one run on
-# this machine: bench/bench_sets of each commit (built in temporary worktrees, as scripts/bench.sh builds
+# this machine: bench/bench_pipeline of each commit (built in temporary worktrees, as scripts/bench.sh builds
 # it), run in turn ROUNDS times (old, new, old, new, ...), each set's median time per query taken over
 # the rounds, and the ratio new/old. A change to the pipeline should leave every set within 10%.
 # Usage: scripts/bench-compare.sh BASE [HEAD]     (HEAD defaults to the working tree's HEAD)
@@ -24,16 +24,20 @@ for side in old new; do
     rev=$base
     [ "$side" = new ] && rev=$head
     git worktree add --detach -q "$work/$side" "$rev"
-    echo "building bench_sets at $(git -C "$work/$side" rev-parse --short HEAD) ($side)" >&2
+    # The benchmark as that commit names it (bench_sets at older commits).
+    target=bench_pipeline
+    [ -f "$work/$side/bench/bench_pipeline.cpp" ] || target=bench_sets
+    echo "$target" > "$work/$side.target"
+    echo "building $target at $(git -C "$work/$side" rev-parse --short HEAD) ($side)" >&2
     cmake -S "$work/$side" -B "$work/$side/build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2 -g -DNDEBUG" \
         -DBOXCYL_BUILD_BENCHMARKS=ON -DBOXCYL_BENCH_PEERS=OFF -DBOXCYL_BUILD_TESTS=OFF -DBOXCYL_BUILD_TOOLS=OFF \
         -DBOXCYL_BUILD_PYTHON=OFF -DBOXCYL_INSTALL=OFF >/dev/null
-    cmake --build "$work/$side/build" -j "${JOBS:-$(nproc)}" --target bench_sets >/dev/null
+    cmake --build "$work/$side/build" -j "${JOBS:-$(nproc)}" --target "$target" >/dev/null
 done
 for ((r = 1; r <= rounds; ++r)); do
     for side in old new; do
         echo "round $r: $side" >&2
-        "$work/$side/build/bench/bench_sets" --benchmark_filter='^[a-z_]+/default$' --benchmark_repetitions=1 \
+        "$work/$side/build/bench/$(cat "$work/$side.target")" --benchmark_filter='^[a-z_]+/default$' --benchmark_repetitions=1 \
             --benchmark_out="$work/$side.$r.json" --benchmark_out_format=json >/dev/null
     done
 done

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Regenerates docs/performance.md:
-#  * bench/bench_sets.cpp: the default exact query against plain double §4 on the random, one-ulp
+#  * bench/bench_pipeline.cpp: the default exact query against plain double §4 on the random, one-ulp
 #    boundary, exactly touching, adversarial near-touching and other sets in one run, the time by
 #    deciding pipeline row, the library's per-row statistics (filtered::Stats), and a voxel grid
 #    touching a cylinder through the scalar, batch and grid interfaces;
@@ -22,7 +22,7 @@ opt="-O2 -g -DNDEBUG"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="$opt" \
   -DBOXCYL_BUILD_BENCHMARKS=ON -DBOXCYL_BENCH_PEERS=ON -DBOXCYL_BUILD_TESTS=OFF -DBOXCYL_BUILD_TOOLS=OFF -DBOXCYL_BUILD_PYTHON=OFF \
   -DBOXCYL_INSTALL=OFF >/dev/null
-cmake --build "$build" -j "${JOBS:-$(nproc)}" --target bench_query bench_sets >/dev/null
+cmake --build "$build" -j "${JOBS:-$(nproc)}" --target bench_query bench_pipeline >/dev/null
 
 # The flags the benchmark was actually compiled with (CMake's flags.make), and the compiler.
 flags=$(sed -n 's/^CXX_FLAGS = //p' "$build/bench/CMakeFiles/bench_query.dir/flags.make")
@@ -40,7 +40,7 @@ trap 'rm -f "$table" "$sets" "$kept"' EXIT
 # The hand-written analysis below this marker line survives regeneration.
 marker='<!-- analysis: kept by scripts/bench.sh -->'
 if [ -f "$out" ]; then awk -v m="$marker" 'found || $0 == m { found = 1; print }' "$out" > "$kept"; fi
-"$build/bench/bench_sets" --markdown="$sets" --benchmark_color=false | tee "$log"
+"$build/bench/bench_pipeline" --markdown="$sets" --benchmark_color=false | tee "$log"
 "$build/bench/bench_query" --markdown="$table" --benchmark_color=false "$@" | tee -a "$log"
 
 {
@@ -63,7 +63,7 @@ the **median of 5 repetitions** (each at least 0.2 s). The machine is shared and
 concurrent builds): absolute times move by tens of percent between runs, ratios from one run much
 less; compare ratios.
 
-## The default query near touching (\`bench/bench_sets.cpp\`)
+## The default query near touching (\`bench/bench_pipeline.cpp\`)
 
 The sets:
 
@@ -147,7 +147,7 @@ cat <<TAIL
 **Profiling** (where a query's time goes): the benchmarks are built with \`-g\`, e.g. the default query
 on the boundary queries that the double-double linear inequalities decide (row \`inequalities_dd\`):
 
-    perf record $build/bench/bench_sets --quick --benchmark_filter='boundary/row/inequalities_dd' --benchmark_min_time=25
+    perf record $build/bench/bench_pipeline --quick --benchmark_filter='boundary/row/inequalities_dd' --benchmark_min_time=25
     perf report --no-children --sort symbol
 
 (the first minute is the sets' generation, with the oracle; a long \`min_time\` makes the timed loop

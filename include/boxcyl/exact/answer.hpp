@@ -2,19 +2,13 @@
 // for every box kind. The answer is exact for the inputs as given (each double the rational it
 // denotes, the unit axis D/|D| exactly); the oracle is not used (it stays the independent judge).
 //
-// Routes, cheapest first:
-//   a canonical frame that is exact (aligned and canonical boxes, oriented boxes whose axes are a
-//   signed permutation): the linear-inequalities method in integers and Z[√d]
-//   (exact/integer_inequalities.hpp) — in fixed-width integers on the stack, in integers in powers of a
-//   tiny ε for inputs of two far-apart scales, else in mpz_class;
-//   any other frame, and any parallelepiped: the clipped edges and face cuts in integers
-//   (exact/integer_parallelepiped.hpp);
-//   dependent axes (flat parallelepipeds spanned by parallel or coplanar axes): the convex-hull method
-//   in rationals and Q(√d) (exact/paths.hpp).
-// The tiers let the pipeline ask one route early, where it costs less than any further filter: the
-// fixed-width integers for narrow inputs, the ε-series for narrow inputs of two scales. Each answers
-// nullopt when it cannot (a value outgrew its integers, a sign beyond the series' order, not that kind
-// of input); Tier::full always answers.
+// Routes (docs/pipeline.md, row exact): an exact canonical frame (aligned and canonical boxes, signed
+// permutation frames) takes the linear-inequalities method in integers and Z[√d] — fixed-width
+// integers, else integers in powers of a tiny ε for inputs of two scales, else mpz_class; any other
+// frame and any parallelepiped the clipped edges and face cuts in integers; dependent axes the
+// convex-hull method in Q(√d). The tiers let the pipeline ask one route early (Tier::fixed for narrow
+// inputs, Tier::series for narrow inputs of two scales); they answer nullopt when they cannot, and
+// Tier::full always answers.
 #pragma once
 
 #include <optional>  // the tiers' "cannot"

@@ -371,11 +371,6 @@ private:
         if (!slot) slot = parallelepiped::problem<N>(box, cyl, enclosed::unit_direction<N>(cyl.axis));
         return *slot;
     }
-    template <class F>
-    static bool memo(std::int8_t& slot, F&& compute) {
-        if (slot < 0) slot = compute() ? 1 : 0;
-        return slot != 0;
-    }
     std::optional<parallelepiped::Problem<Bounded>> bounded_;
     std::optional<parallelepiped::Problem<Interval>> interval_;
     std::int8_t nearest_ = -1;

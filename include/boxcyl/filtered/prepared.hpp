@@ -148,6 +148,13 @@ bool answer_moves(const Box& box, const Cylinder<double>& cyl, double m) {
 
 // ---- The prepared query ----
 
+// A fact computed on first use: slot is −1 until then, else 0 or 1.
+template <class F>
+bool memo(std::int8_t& slot, F&& compute) {
+    if (slot < 0) slot = compute() ? 1 : 0;
+    return slot != 0;
+}
+
 template <class Box>
 class Prepared {
 public:
@@ -158,7 +165,6 @@ public:
         int k;            // stage 1's exponent (scale_exponent)
         bool flat;        // a zero size (has_zero_size)
         bool two_scale_axis;  // an axis component below 2^-200 of the largest (and non-zero)
-        Vec3<double> axis_zeroed;  // the axis with those components set to 0
         std::optional<SignedPermutation> frame;  // an oriented box's frame, when a signed permutation
         bool turned;      // an oriented box whose frame is not a signed permutation
     };
@@ -196,7 +202,8 @@ public:
             f.scale = largest_length(box, cyl);
             f.k = scale_exponent(f.scale);
             f.flat = has_zero_size(box, cyl);
-            f.two_scale_axis = tiny_components_zeroed(cyl.axis, f.axis_zeroed, -200);
+            Vec3<double> zeroed;
+            f.two_scale_axis = tiny_components_zeroed(cyl.axis, zeroed, -200);
             if constexpr (is_oriented<Box>) {
                 f.frame = signed_permutation(box.axes);
                 f.turned = !f.frame;
@@ -215,30 +222,15 @@ public:
         });
     }
     // Looks near touching by either hint (the axis's distance from the box near r counts too); a query
-    // out of stage 0's range is looked at scaled to about 1.
+    // out of stage 0's range (one that could not be rescaled exactly) counts as near.
     bool looks_near() {
         return memo(looks_near_, [this] {
-            if (in_range) return witness_search::near_touching(p, semi_static::kappas_of<Box>) || answer_moves(box, cyl, facts().scale);
-            Box b = box;
-            Cylinder<double> c = cyl;
-            const double m = facts().scale;
-            if (!(m > 0) || !(m < std::numeric_limits<double>::infinity())) return true;
-            const int k = -std::ilogb(m);
-            auto scale = [k](double& x) { x = times_two_to(x, k); };
-            for_each_length(b, scale);
-            for_each_length(c, scale);
-            semi_static::Problem q;
-            return !semi_static::problem(b, c, q) || witness_search::near_touching(q, semi_static::kappas_of<Box>) ||
-                   answer_moves(b, c, largest_length(b, c));
+            return !in_range || witness_search::near_touching(p, semi_static::kappas_of<Box>) ||
+                   answer_moves(box, cyl, facts().scale);
         });
     }
 
 private:
-    template <class F>
-    static bool memo(std::int8_t& slot, F&& compute) {
-        if (slot < 0) slot = compute() ? 1 : 0;
-        return slot != 0;
-    }
     std::optional<Facts> facts_;
     std::int8_t nearest_ = -1, near_ = -1, looks_near_ = -1;
 };

@@ -10,7 +10,7 @@
 //    on the adversarial near-touching mix and on one-ulp boundary pairs (of the mixed and of the
 //    uniform profile), in all four rounding modes
 //    (the middle stage declines outside round-to-nearest; the answers must not change). Built a second
-//    time with FMA contraction forced on (tests/CMakeLists.txt: test_middle_fma).
+//    time with FMA contraction forced on (tests/CMakeLists.txt: test_near_touching_fma).
 //  * The hint that orders the middle stage before stage 1's Bounded run near touching
 //    (looks_near_touching: witness_search::near_touching, then answer_moves) on contacts, on boundary
 //    pairs only the second shows, and on queries far from touching.

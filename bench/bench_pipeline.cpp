@@ -19,7 +19,7 @@
 // statistics, read from the library (filtered::Stats), and the default query's mean time on the queries
 // each row decides, timed on their own without statistics.
 //
-// Usage: bench_sets [--markdown=FILE] [--quick] [benchmark flags...]
+// Usage: bench_pipeline [--markdown=FILE] [--quick] [benchmark flags...]
 #include <benchmark/benchmark.h>
 
 #include <algorithm>  // std::sort
