@@ -26,7 +26,8 @@ cmake --build "$build" -j "$jobs" --target boxcyl_cli >&2
 say "answering examples/queries.jsonl: $build/tools/cli/boxcyl intersect ${*:+$* }examples/queries.jsonl"
 rc=0
 "$build/tools/cli/boxcyl" intersect "$@" examples/queries.jsonl | tee "$answers" || rc=$?
-# One line: how many answers of each kind, and which (by id, or by line number where a query has none).
+# A summary: how many answers of each kind, then which (by id, or by line number where a query has
+# none), wrapped to short lines.
 awk '
     function who(   id) {
         if (match($0, /^\{"id": [^,]+,/)) { id = substr($0, 8, RLENGTH - 8); return id }
@@ -37,13 +38,22 @@ awk '
     /"intersect": false/ { add("apart", who()); next }
     /"error":/           { add("error", who()); next }
     { add("other", who()) }
-    function part(kind, label) {
-        return n[kind] + 0 " " label (n[kind] ? " (" ids[kind] ")" : "")
+    function list(kind, label,   line, count, i, word, words) {
+        if (!n[kind]) return
+        count = split(ids[kind], words, ", ")
+        line = "  " label ":"
+        for (i = 1; i <= count; ++i) {
+            word = words[i] (i < count ? "," : "")
+            if (length(line) + 1 + length(word) > 100) { print line; line = "   " }
+            line = line " " word
+        }
+        print line
     }
     END {
-        s = "answered " NR " queries: " part("intersect", "intersect") ", " part("apart", "apart") ", " \
-            part("error", n["error"] == 1 ? "error" : "errors")
-        if (n["other"]) s = s ", " part("other", "unrecognised")
+        s = "answered " NR " queries: " n["intersect"] + 0 " intersect, " n["apart"] + 0 " apart, " \
+            n["error"] + 0 (n["error"] == 1 ? " error" : " errors")
+        if (n["other"]) s = s ", " n["other"] " unrecognised"
         print s
+        list("intersect", "intersect"); list("apart", "apart"); list("error", "errors"); list("other", "unrecognised")
     }' "$answers"
 exit "$rc"
