@@ -13,6 +13,11 @@
 //   uniform      4096 random queries of CaseGenerator's uniform profile (seed 0xb0c5c708: plain data,
 //                no zero sizes or tiny components), and 512 one-ulp boundary pairs of it (seed
 //                0xb0c5c709): a second generator's mix, for the ratios not to rest on one
+//   geo_*        CaseGenerator's georeferenced profile (seeds 0xb0c5c70a, 0xb0c5c70b): shapes of 1e-3 to 10
+//                at UTM-like coordinates, aligned and oriented boxes apart, and 256 one-ulp boundary pairs
+//   magnitudes_* its magnitudes profile (seeds 0xb0c5c70c, 0xb0c5c70d): sizes of very different
+//                magnitudes in one query (1e-3 beside 1e4, 1e-300 and subnormal sizes, axis components
+//                hundreds of binary orders apart), likewise
 // Columns per set: the default query (`intersects(box, cyl)`, which checks its inputs), the same
 // unchecked (`intersects_unchecked`), and plain double §4 (`{Algorithm::inequalities,
 // Arithmetic::float64}`). Per row of the pipeline (filtered/schedule.hpp): the queries it decides and its
@@ -29,6 +34,7 @@
 #include <map>        // results by name
 #include <random>     // std::mt19937_64
 #include <string>     // names
+#include <tuple>      // the profiles
 #include <vector>     // sets
 
 #include "boxcyl/batch.hpp"
@@ -269,7 +275,7 @@ int main(int argc, char** argv) {
     if (benchmark::ReportUnrecognizedArguments(cargc, cargs.data())) return 1;
 
     std::fprintf(stderr, "generating the sets (the boundary pairs are found by bisection with the oracle: about a minute)...\n");
-    std::vector<Set> sets(8);
+    std::vector<Set> sets(14);
     sets[0].name = "random", sets[0].title = "random (seed 0xb0c5c701)";
     sets[1].name = "boundary", sets[1].title = "one-ulp boundary pairs (seed 0xb0c5c702)";
     sets[2].name = "touching", sets[2].title = "exactly touching and one-ulp neighbours (seed 0xb0c5c705)";
@@ -278,6 +284,12 @@ int main(int argc, char** argv) {
     sets[5].name = "degenerate", sets[5].title = "random, degenerate profile (seed 0xb0c5c707)";
     sets[6].name = "uniform", sets[6].title = "random, uniform profile (seed 0xb0c5c708)";
     sets[7].name = "uniform_boundary", sets[7].title = "one-ulp boundary pairs, uniform profile (seed 0xb0c5c709)";
+    sets[8].name = "geo_aligned", sets[8].title = "geo-referenced, aligned boxes (seed 0xb0c5c70a)";
+    sets[9].name = "geo_oriented", sets[9].title = "geo-referenced, oriented boxes (seed 0xb0c5c70a)";
+    sets[10].name = "geo_boundary", sets[10].title = "one-ulp boundary pairs, geo-referenced (seed 0xb0c5c70b)";
+    sets[11].name = "magnitudes_aligned", sets[11].title = "mixed magnitudes, aligned boxes (seed 0xb0c5c70c)";
+    sets[12].name = "magnitudes_oriented", sets[12].title = "mixed magnitudes, oriented boxes (seed 0xb0c5c70c)";
+    sets[13].name = "magnitudes_boundary", sets[13].title = "one-ulp boundary pairs, mixed magnitudes (seed 0xb0c5c70d)";
     {
         boxcyl::testing::CaseGenerator gen(0xb0c5c701);
         for (int i = 0; i < 4096; ++i) sets[0].cases.push_back(gen.next());
@@ -306,6 +318,19 @@ int main(int argc, char** argv) {
     {
         boxcyl::testing::CaseGenerator gen(0xb0c5c709, boxcyl::testing::Profile::uniform);
         sets[7].cases = boxcyl::testing::boundary_pairs(gen, 512);
+    }
+    // Coordinates as users have them: far from the origin, and sizes of very different magnitudes; 4096
+    // random queries each, reported by box kind, and their one-ulp boundary pairs.
+    for (const auto& [profile, seed, first] :
+         {std::tuple{boxcyl::testing::Profile::georeferenced, 0xb0c5c70aULL, 8},
+          std::tuple{boxcyl::testing::Profile::magnitudes, 0xb0c5c70cULL, 11}}) {
+        boxcyl::testing::CaseGenerator gen(seed, profile);
+        for (int i = 0; i < 4096; ++i) {
+            const Case c = gen.next();
+            sets[static_cast<std::size_t>(first + (c.kind == boxcyl::testing::BoxKind::oriented ? 1 : 0))].cases.push_back(c);
+        }
+        boxcyl::testing::CaseGenerator pairs(seed + 1, profile);
+        sets[static_cast<std::size_t>(first + 2)].cases = boxcyl::testing::boundary_pairs(pairs, 256);
     }
     for (Set& s : sets) {
         for (const Case& c : s.cases) {

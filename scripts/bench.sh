@@ -86,7 +86,14 @@ The sets:
 - **uniform** and **uniform boundary**: 4096 random queries of the generator's uniform profile (plain
   data: scales 2^±4, box extents in [0.05, 2], radius and height in [0.1, 3], axis components uniform
   in [−1, 1], no zero sizes or tiny components), and 512 one-ulp boundary pairs of it: a second mix, so
-  that no ratio rests on one generator's choices.
+  that no ratio rests on one generator's choices;
+- **geo** (aligned and oriented boxes apart) and **geo boundary**: 4096 random queries of the generator's
+  georeferenced profile — boxes and cylinders of 1e-3 to 10 at UTM-like coordinates (eastings 1e5–1e6,
+  northings 1e6–1e7, elevations to 5e3, half of them surveyed to the millimetre), rounded rotations —
+  and 256 one-ulp boundary pairs of it;
+- **magnitudes** (aligned and oriented apart) and **magnitudes boundary**: the magnitudes profile — sizes
+  of very different magnitudes in one query (1e-3 beside 1e4, 1e-300 and subnormal sizes, axis
+  components 100–300 binary orders apart), near the origin or far from it — and 256 one-ulp pairs.
 
 Columns: *default* is \`boxcyl::intersects(box, cyl)\`, which checks its inputs first; *unchecked* is
 \`boxcyl::intersects_unchecked(box, cyl)\`, the same without the check; *double §4* is

@@ -76,9 +76,14 @@ const Sets& sets() {
         for (long i = 0; i < scaled(600); ++i) r.boxes.push_back(touching_case(touching));
         for (long i = 0; i < scaled(600); ++i) r.boxes.push_back(adversarial_case(adversarial));
         CaseGenerator boundary(7303), random(7304), degenerate(7305, Profile::degenerate);
+        CaseGenerator geo(7307, Profile::georeferenced), magnitudes(7308, Profile::magnitudes);
+        CaseGenerator geo_boundary(7309, Profile::georeferenced);
         for (const Case& c : boundary_pairs(boundary, static_cast<std::size_t>(scaled(60)))) r.boxes.push_back(c);
+        for (const Case& c : boundary_pairs(geo_boundary, static_cast<std::size_t>(scaled(40)))) r.boxes.push_back(c);
         for (long i = 0; i < scaled(600); ++i) r.boxes.push_back(random.next());
         for (long i = 0; i < scaled(300); ++i) r.boxes.push_back(degenerate.next());
+        for (long i = 0; i < scaled(300); ++i) r.boxes.push_back(geo.next());
+        for (long i = 0; i < scaled(300); ++i) r.boxes.push_back(magnitudes.next());
         for (const Case& c : r.boxes) r.box_want.push_back(oracle_answer(c));
         // Parallelepipeds: the oriented cases as the parallelepipeds they are, and the same with their
         // axes scaled and sheared (any lengths and angles), near touching or not.
@@ -183,6 +188,60 @@ TEST(Schedule, FactsOfThePreparedQuery) {
     filtered::Prepared<AlignedBox<double>> far(AlignedBox<double>{{-0x1p500, -1, -1}, {1, 1, 1}}, cyl);
     EXPECT_TRUE(far.in_range);
     EXPECT_EQ(far.box.min[0], -1.0);
+    // Far from the origin for its size (UTM coordinates, a millimetre box): moved near it, exactly.
+    const AlignedBox<double> block{{512345.125, 6712345.5, 1234.25}, {512345.126, 6712345.501, 1234.251}};
+    const Cylinder<double> hole{{512345.1255, 6712345.5005, 1234.2}, {0, 0, 1}, 0.0002, 0.5};
+    filtered::Prepared<AlignedBox<double>> moved(block, hole);
+    EXPECT_EQ(moved.box.min, (Vec3<double>{0, 0, 0}));
+    EXPECT_EQ(moved.box.max[0], block.max[0] - block.min[0]);  // exact: Sterbenz
+    EXPECT_EQ(moved.cyl.center[2], hole.center[2] - block.min[2]);
+    EXPECT_EQ(moved.cyl.radius, hole.radius);
+    // Not when a difference would round: a position of 2^-60 beside one of 2^40 on the same axis.
+    filtered::Prepared<AlignedBox<double>> kept(AlignedBox<double>{{0x1p40, 0, 0}, {0x1p40 + 1, 1, 1}},
+                                                Cylinder<double>{{0x1p-60, 0.5, 0.5}, {0, 0, 1}, 0.001, 0.002});
+    EXPECT_EQ(kept.box.min[0], 0x1p40);
+}
+
+// The exact translation: every difference it makes is the exact one (rationals), in every rounding
+// mode, and it happens exactly when all of them are doubles; the answer never changes.
+TEST(Schedule, TranslationNearTheOriginIsExact) {
+    std::mt19937_64 rng(7310);
+    std::uniform_real_distribution<double> offset(1e5, 1e7), size(1e-3, 10), unit(-1, 1);
+    long moved = 0, kept = 0;
+    for (int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+        for (int n = 0; n < 2000; ++n) {
+            const Vec3<double> k{offset(rng), -offset(rng), offset(rng) * (n % 3 == 0 ? 1e-9 : 1)};
+            const double s = size(rng);
+            OrientedBox<double> box{k, {Vec3<double>{1, 0, 0}, Vec3<double>{0, 1, 0}, Vec3<double>{0, 0, 1}}, {s, s / 2, s}};
+            Cylinder<double> cyl{{k[0] + s * unit(rng), k[1] + s * unit(rng), k[2] + s * unit(rng)},
+                                 {unit(rng), unit(rng), 1}, s * 0.3, s};
+            if (n % 7 == 0) cyl.center[0] = 0x1p-70;  // a difference that cannot be a double
+            OrientedBox<double> b = box;
+            Cylinder<double> c = cyl;
+            bool ok;
+            {
+                const RoundingMode guard(mode);
+                ok = filtered::translated_exactly(b, c);
+            }
+            if (!ok) {
+                EXPECT_EQ(b.center, box.center);
+                ++kept;
+                continue;
+            }
+            ++moved;
+            for (int i = 0; i < 3; ++i) {
+                ASSERT_EQ(to_rational(b.center[i]), to_rational(box.center[i]) - to_rational(box.center[i]));
+                ASSERT_EQ(to_rational(c.center[i]), to_rational(cyl.center[i]) - to_rational(box.center[i]))
+                    << mode_name(mode) << " axis " << i;
+            }
+            if (n % 50 == 0) {
+                const RoundingMode guard(mode);
+                EXPECT_EQ(intersects(box, cyl), oracle::intersects(to_exact(box), to_exact(cyl)));
+            }
+        }
+    }
+    EXPECT_GT(moved, 4000);
+    EXPECT_GT(kept, 500);
 }
 
 // The statistics: a query through the front door with QueryOptions::stats counts one query, one

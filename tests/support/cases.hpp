@@ -101,7 +101,13 @@ inline std::array<Vec3<double>, 3> random_signed_permutation(std::mt19937_64& rn
 // sizes that are zero or differ by 2^±40 within a case) on top of the mixed choices; `uniform` is
 // plain data, unlike the mixed set's choices: scales 2^±4, box extents uniform in [0.05, 2], radius
 // and height in [0.1, 3], axis components uniform in [−1, 1] (no zero sizes, no tiny components).
-enum class Profile { mixed, degenerate, uniform };
+// `georeferenced`: coordinates as geo-referenced data has them — shapes of 1e-3 to 10 (log-uniform)
+// far from the origin (UTM-like eastings 1e5–1e6, northings 1e6–1e7, elevations 0–5e3, each position
+// rounded to 1e-3 like surveyed data half of the time), rounded rotations, axes of plain directions.
+// `magnitudes`: sizes of very different magnitudes in one query — a box of 1e-3 against a cylinder of
+// 1e4 and the reverse, a radius or extent of 1e-300 or a subnormal beside ordinary ones, axis components
+// up to 300 binary orders apart — at positions near the origin or offset as in `georeferenced`.
+enum class Profile { mixed, degenerate, uniform, georeferenced, magnitudes };
 
 class CaseGenerator {
 public:
@@ -110,6 +116,7 @@ public:
     std::mt19937_64& rng() { return rng_; }
 
     Case next() {
+        if (profile_ == Profile::georeferenced || profile_ == Profile::magnitudes) return far_or_mixed();
         Case c;
         const int range = profile_ == Profile::degenerate ? 600 : profile_ == Profile::uniform ? 4 : 20;
         const double scale = std::ldexp(1.0, static_cast<int>(uniform(-range, range)));  // 2^±20 ≈ 1e-6 … 1e6
@@ -152,6 +159,57 @@ public:
     double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng_); }
 
 private:
+    double log_uniform(double lo, double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
+    // A surveyed coordinate: rounded to a millimetre half of the time.
+    double survey(double x) { return uniform(0, 1) < 0.5 ? std::nearbyint(x * 1000) / 1000 : x; }
+    Vec3<double> offset() {
+        if (profile_ == Profile::magnitudes && uniform(0, 1) < 0.5) return {0, 0, 0};
+        return {survey(sign() * uniform(1e5, 1e6)), survey(sign() * uniform(1e6, 1e7)), survey(uniform(0, 5e3))};
+    }
+    // A size of the `magnitudes` profile: ordinary, or one of the extremes.
+    double mixed_size(double ordinary) {
+        switch (static_cast<int>(uniform(0, 8))) {
+            case 0: return ordinary * 1e-7;   // 1e-3 beside 1e4
+            case 1: return ordinary * 1e7;
+            case 2: return 1e-300;
+            case 3: return std::numeric_limits<double>::denorm_min() * uniform(1, 1e6);
+            default: return ordinary;
+        }
+    }
+    Vec3<double> plain_axis() {
+        Vec3<double> a{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
+        if (profile_ == Profile::magnitudes && uniform(0, 1) < 0.5) a[static_cast<int>(uniform(0, 3))] *= std::ldexp(1.0, -static_cast<int>(uniform(100, 300)));
+        if (a[0] == 0 && a[1] == 0 && a[2] == 0) a[2] = 1;
+        return a;
+    }
+    Case far_or_mixed() {
+        Case c;
+        c.kind = uniform(0, 1) < 0.5 ? BoxKind::aligned : BoxKind::oriented;
+        const double size = log_uniform(1e-3, 10);
+        Vec3<double> ext{size * uniform(0.2, 1), size * uniform(0.2, 1), size * uniform(0.2, 1)};
+        double radius = log_uniform(1e-3, 10) * 0.5, height = log_uniform(1e-3, 10);
+        if (profile_ == Profile::magnitudes) {
+            for (int i = 0; i < 3; ++i) ext[i] = mixed_size(ext[i]);
+            radius = mixed_size(radius);
+            height = mixed_size(height);
+        }
+        const Vec3<double> k = offset();
+        if (c.kind == BoxKind::aligned) {
+            for (int i = 0; i < 3; ++i) c.aligned.min[i] = survey(k[i] - ext[i]), c.aligned.max[i] = survey(k[i] + ext[i]);
+            for (int i = 0; i < 3; ++i)
+                if (c.aligned.max[i] < c.aligned.min[i]) std::swap(c.aligned.min[i], c.aligned.max[i]);
+        } else {
+            c.oriented.center = k;
+            c.oriented.axes = random_rotation(rng_);
+            c.oriented.extents = ext;
+        }
+        c.cylinder.axis = plain_axis();
+        c.cylinder.radius = radius;
+        c.cylinder.height = height;
+        const double reach = ext[0] + ext[1] + ext[2] + radius + height * 0.5;
+        for (int i = 0; i < 3; ++i) c.cylinder.center[i] = k[i] + reach * uniform(-0.45, 0.45);
+        return c;
+    }
     double extent_factor() {
         if (profile_ == Profile::uniform) return uniform(0.05, 2.0);
         if (profile_ == Profile::degenerate && uniform(0, 1) < 0.3) return std::ldexp(uniform(0.5, 1.0), uniform(0, 1) < 0.5 ? -40 : 40);

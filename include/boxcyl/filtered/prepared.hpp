@@ -93,6 +93,54 @@ bool rescaled_exactly(Box& box, Cylinder<double>& cyl, double m) {
     return true;
 }
 
+// ---- Positions far from the origin ----
+
+// The exponent of x's lowest set bit: x ≠ 0 is an integer multiple of 2^that (INT_MAX for 0).
+inline int granularity(double x) {
+    if (x == 0) return std::numeric_limits<int>::max();
+    const auto bits = std::bit_cast<std::uint64_t>(x);
+    const auto biased = static_cast<int>((bits >> 52) & 0x7ff);
+    const std::uint64_t mantissa = (bits & ((std::uint64_t{1} << 52) - 1)) | (biased != 0 ? std::uint64_t{1} << 52 : 0);
+    return (biased != 0 ? biased : 1) - 1075 + std::countr_zero(mantissa);
+}
+// The positions of a query (box corners or centre, the cylinder's centre) on one axis.
+template <class F>
+void for_each_position(AlignedBox<double>& b, Cylinder<double>& c, int i, F&& f) {
+    f(b.min[i]), f(b.max[i]), f(c.center[i]);
+}
+template <class Box, class F>  // OrientedBox, Parallelepiped
+void for_each_position(Box& b, Cylinder<double>& c, int i, F&& f) {
+    f(b.center[i]), f(c.center[i]);
+}
+// The same question with every position moved by −t on each axis (t: the box's first position there),
+// when every difference is exact: shapes small and far from the origin (a block model in UTM
+// coordinates, a part in machine coordinates) then get error bounds of their own size. x and t are
+// integer multiples of 2^g (g: the least granularity of the axis' values), so x − t is, and it is a
+// double exactly when |x − t| < 2^(g+53): rounding is monotone and 2^(g+53) a double, so the computed
+// difference tells, in every rounding mode.
+template <class Box>
+bool translated_exactly(Box& box, Cylinder<double>& cyl) {
+    Box b = box;
+    Cylinder<double> c = cyl;
+    for (int i = 0; i < 3; ++i) {
+        double t = 0;
+        bool first = true;
+        int g = std::numeric_limits<int>::max();
+        for_each_position(b, c, i, [&](double& x) {
+            if (first) t = x, first = false;
+            g = std::min(g, granularity(x));
+        });
+        if (g == std::numeric_limits<int>::max() || t == 0) continue;  // all zero, or nothing to move
+        const double limit = std::ldexp(1.0, std::min(g + 53, 1024));  // ∞ beyond the double range
+        bool exact = true;
+        for_each_position(b, c, i, [&](double& x) { exact &= std::fabs(x - t) < limit; });
+        if (!exact) return false;
+        for_each_position(b, c, i, [&](double& x) { x -= t; });
+    }
+    box = b, cyl = c;
+    return true;
+}
+
 // Stage 1's exponent: lengths times 2^k bring the largest m to [1, 2) when m is beyond 2^±200 (the
 // linear-inequalities method forms products of up to four lengths), else k = 0.
 inline int scale_exponent(double m) {
@@ -170,9 +218,11 @@ public:
     };
 
     // The query is not copied (the rows read the caller's box and cylinder), unless it is rescaled.
+    // A query far from the origin for its size is moved near it, exactly where that can be; one beyond
+    // stage 0's range of scales is scaled to about 1, exactly where that can be.
     BOXCYL_FORCE_INLINE Prepared(const Box& b, const Cylinder<double>& c)
         : in_range(semi_static::problem(b, c, p)),
-          scaled_(in_range ? std::nullopt : rescaled(b, c)),
+          scaled_(in_range && !far_from_origin(p) ? std::nullopt : moved(b, c, in_range)),
           box(scaled_ ? scaled_->first : b),
           cyl(scaled_ ? scaled_->second : c) {
         if (scaled_) in_range = semi_static::problem(box, cyl, p);
@@ -184,9 +234,20 @@ public:
     bool in_range;           // within stage 0's range of scales
 
 private:
-    static std::optional<std::pair<Box, Cylinder<double>>> rescaled(const Box& b, const Cylinder<double>& c) {
+    // Stage 0's scale L (twice the largest length) more than 2^6 times the largest size: its error bounds
+    // would be those of the positions, not of the shapes.
+    static bool far_from_origin(const semi_static::Problem& q) {
+        const double size = std::max(std::max(std::max(q.e[0], q.e[1]), std::max(q.e[2], q.r)), q.h);
+        return q.l > 0x1p7 * size;
+    }
+    static std::optional<std::pair<Box, Cylinder<double>>> moved(const Box& b, const Cylinder<double>& c, bool in_range) {
         std::pair<Box, Cylinder<double>> s{b, c};
-        if (!rescaled_exactly(s.first, s.second, largest_length(b, c))) return std::nullopt;
+        if (in_range) {
+            if constexpr (std::is_same_v<Box, CanonicalBox<double>>) return std::nullopt;  // the box is the origin
+            else if (!translated_exactly(s.first, s.second)) return std::nullopt;
+        } else if (!rescaled_exactly(s.first, s.second, largest_length(b, c))) {
+            return std::nullopt;
+        }
         return s;
     }
     std::optional<std::pair<Box, Cylinder<double>>> scaled_;
