@@ -74,6 +74,7 @@ struct GridStats {
                                       // (0 unless the bounding box's margin was too small)
     std::int64_t corner_inside = 0;   // queries settled by a box corner inside the cylinder
     std::int64_t blocks_inside = 0;   // blocks of several cells found inside the cylinder, reported whole
+    std::int64_t batched_cells = 0;   // cells of small blocks answered through the batch API's filter
 };
 
 }  // namespace boxcyl
