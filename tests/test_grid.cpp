@@ -451,6 +451,16 @@ TEST(GridFat, WholeBlocksInsideMatchBruteForce) {
     EXPECT_GT(inside_blocks, 40) << "the cases should exercise whole-block acceptance";
 }
 
+// Counts whose product overflows 64-bit integers (4·10^20 cells): block sizes are compared per axis
+// first, so the walk descends to the one cell the small cylinder meets.
+TEST(GridScale, HugeCountsDoNotOverflowBlockSizes) {
+    const Grid g{{0, 0, 0}, {1, 1, 1}, {10000000, 10000000, 4000000}};
+    const Cylinder<double> c{{5000000.5, 5000000.5, 2000000.5}, {0, 0, 1}, 0.25, 0.5};
+    const std::vector<CellIndex> got = cells(g, c);
+    ASSERT_EQ(got.size(), 1u);
+    EXPECT_EQ(got[0], (CellIndex{5000000, 5000000, 2000000}));
+}
+
 // ---- Scale: a 1000³-cell grid, where brute force (10^9 queries) is out of reach ----
 //
 // Local check instead: every reported cell intersects (exact query), no cell is reported twice, and

@@ -245,9 +245,9 @@ private:
             f_(lo[0], lo[1], lo[2]);
             return;
         }
-        const std::int64_t cells = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
-        if (cells <= kBatchCells) {
-            batched(lo, hi, cells);
+        const std::int64_t n0 = hi[0] - lo[0], n1 = hi[1] - lo[1], n2 = hi[2] - lo[2];
+        if (n0 <= kBatchCells && n1 <= kBatchCells && n2 <= kBatchCells && n0 * n1 * n2 <= kBatchCells) {  // no overflow
+            batched(lo, hi, n0 * n1 * n2);
             return;
         }
         if (block_inside(lo, hi)) {

@@ -50,7 +50,6 @@ Row(RowId, Modes, When, Certify) -> Row<When, Certify>;
 
 inline constexpr auto always = [](auto&) { return true; };
 inline constexpr auto in_range = [](auto& q) { return q.in_range; };
-inline constexpr auto flat = [](auto& q) { return q.facts().flat; };
 inline constexpr auto flat_two_scale_axis = [](auto& q) { return q.facts().flat && q.facts().two_scale_axis; };
 inline constexpr auto flat_in_range = [](auto& q) { return q.facts().flat && q.in_range; };
 // The box kind of a prepared query.
