@@ -27,7 +27,12 @@ public:
 
     std::uint8_t byte() { return p_ < end_ ? *p_++ : 0; }
     bool remaining() const { return p_ < end_; }
-    std::int16_t i16() { return static_cast<std::int16_t>(byte() | (byte() << 8)); }
+    // Operands and arguments are read in separate statements: their order of evaluation is unspecified
+    // (gcc and clang differ), and the same bytes must decode alike in the replay and the fuzz builds.
+    std::int16_t i16() {
+        const unsigned lo = byte();
+        return static_cast<std::int16_t>(lo | (unsigned{byte()} << 8));
+    }
 
     // One double: the first byte chooses how the rest is read.
     double value() {
@@ -36,7 +41,11 @@ public:
         switch (tag % 8) {
             case 0: v = static_cast<std::int8_t>(byte()); break;               // small integers
             case 1: v = static_cast<std::int8_t>(byte()) / 8.0; break;         // exact eighths
-            case 2: v = std::ldexp(static_cast<double>(i16()), i16() % 1100); break;  // any magnitude, subnormals
+            case 2: {  // any magnitude, subnormals
+                const double m = i16();
+                v = std::ldexp(m, i16() % 1100);
+                break;
+            }
             case 3: {                                                            // any bit pattern
                 std::uint64_t b = 0;
                 for (int i = 0; i < 8; ++i) b |= std::uint64_t{byte()} << (8 * i);
