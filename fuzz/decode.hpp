@@ -1,8 +1,8 @@
-// The fuzz targets' input decoder (fuzz_query, fuzz_batch): bytes to doubles, vectors, frames and
-// cylinders, favouring what breaks floating point — magnitudes across the whole double range,
+// The fuzz targets' input decoder (fuzz_query, fuzz_batch, fuzz_symmetry): bytes to doubles, vectors,
+// frames, boxes and cylinders, favouring what breaks floating point — magnitudes across the whole double range,
 // subnormals, signed zeros, repeated values and one-ulp neighbours (touching configurations), raw bit
 // patterns, exactly orthonormal frames (signed permutations) and rotations rounded to double — and the
-// hex-float printing of a failing case.
+// hex-float printing of a failing case (cpp(): as C++ that compiles).
 #pragma once
 
 #include <array>    // decoder tables
@@ -16,6 +16,7 @@
 
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
 
 namespace boxcyl::fuzz {
 
@@ -25,22 +26,47 @@ class Decoder {
 public:
     Decoder(const std::uint8_t* data, std::size_t size) : p_(data), end_(data + size) {}
 
+    // From now on, every value within about 64 binades of 2^e (e itself anywhere), instead of mixing the
+    // whole double range within one query: the exact stage's integers then stay short and a query
+    // costs microseconds, not up to milliseconds (fuzz_symmetry, which asks many questions per second).
+    void narrow(int e) {
+        narrow_ = true;
+        e_ = e;
+    }
+
     std::uint8_t byte() { return p_ < end_ ? *p_++ : 0; }
     bool remaining() const { return p_ < end_; }
-    std::int16_t i16() { return static_cast<std::int16_t>(byte() | (byte() << 8)); }
+    // Operands and arguments are read in separate statements: their order of evaluation is unspecified
+    // (gcc and clang differ), and the same bytes must decode alike in the replay and the fuzz builds.
+    std::int16_t i16() {
+        const unsigned lo = byte();
+        return static_cast<std::int16_t>(lo | (unsigned{byte()} << 8));
+    }
 
     // One double: the first byte chooses how the rest is read.
     double value() {
         const std::uint8_t tag = byte();
         double v = 0;
         switch (tag % 8) {
-            case 0: v = static_cast<std::int8_t>(byte()); break;               // small integers
-            case 1: v = static_cast<std::int8_t>(byte()) / 8.0; break;         // exact eighths
-            case 2: v = std::ldexp(static_cast<double>(i16()), i16() % 1100); break;  // any magnitude, subnormals
-            case 3: {                                                            // any bit pattern
+            case 0: v = scaled(static_cast<std::int8_t>(byte())); break;        // small integers
+            case 1: v = scaled(static_cast<std::int8_t>(byte()) / 8.0); break;  // exact eighths
+            case 2: {  // any magnitude, subnormals
+                const double m = i16();
+                v = narrow_ ? std::ldexp(m, e_ + i16() % 64) : std::ldexp(m, i16() % 1100);
+                break;
+            }
+            case 3: {  // any bit pattern (narrow: any sign and significand, the exponent near e)
                 std::uint64_t b = 0;
                 for (int i = 0; i < 8; ++i) b |= std::uint64_t{byte()} << (8 * i);
-                std::memcpy(&v, &b, sizeof v);
+                if (narrow_) {
+                    constexpr std::uint64_t one = std::uint64_t{1023} << 52, fraction = (std::uint64_t{1} << 52) - 1;
+                    const int e = e_ + static_cast<int>(b >> 52 & 63) - 32;
+                    b = (b & ~(std::uint64_t{2047} << 52 | fraction)) | one | (b & fraction);  // in [1, 2), signed
+                    std::memcpy(&v, &b, sizeof v);
+                    v = std::ldexp(v, e);
+                } else {
+                    std::memcpy(&v, &b, sizeof v);
+                }
                 break;
             }
             case 4: v = last_; break;  // coincident values: touching
@@ -48,7 +74,7 @@ public:
                                                         : -std::numeric_limits<double>::infinity());
                 break;  // one ulp away from touching
             case 6: v = (tag & 8) ? -0.0 : 0.0; break;
-            case 7: v = static_cast<std::int8_t>(byte()) / 10.0; break;  // decimals rounded to double
+            case 7: v = scaled(static_cast<std::int8_t>(byte()) / 10.0); break;  // decimals rounded to double
         }
         last_ = v;
         return v;
@@ -59,9 +85,13 @@ public:
     }
 
 private:
+    double scaled(double v) const { return e_ != 0 ? std::ldexp(v, e_) : v; }
+
     const std::uint8_t* p_;
     const std::uint8_t* end_;
     double last_ = 0;
+    bool narrow_ = false;
+    int e_ = 0;
 };
 
 // The oriented-box frame: a signed permutation (exactly orthonormal), a rotation from a quaternion with
@@ -130,6 +160,45 @@ inline boxcyl::OrientedBox<double> oriented_box(Decoder& d) {
     const Vec3<double> e = d.vec();
     box.extents = {std::fabs(e[0]), std::fabs(e[1]), std::fabs(e[2])};
     return box;
+}
+
+// Any three axes (the frame's modes: signed permutations, rotations, nine decoded values, so also zero
+// and parallel axes), non-negative extents: every finite one is valid.
+inline boxcyl::Parallelepiped<double> parallelepiped(Decoder& d) {
+    boxcyl::Parallelepiped<double> box;
+    box.axes = frame(d);
+    box.center = d.vec();
+    const Vec3<double> e = d.vec();
+    box.extents = {std::fabs(e[0]), std::fabs(e[1]), std::fabs(e[2])};
+    return box;
+}
+inline boxcyl::CanonicalBox<double> canonical_box(Decoder& d) {
+    const Vec3<double> e = d.vec();
+    return {{std::fabs(e[0]), std::fabs(e[1]), std::fabs(e[2])}};
+}
+
+// The shapes as C++ expressions (hex floats), so that a failing case can be pasted into a test.
+inline std::string cpp(const Vec3<double>& v) { return "boxcyl::Vec3<double>" + hex(v); }
+inline std::string cpp(double x) {
+    char s[40];
+    std::snprintf(s, sizeof s, "%a", x);
+    return s;
+}
+inline std::string cpp(const boxcyl::Cylinder<double>& c) {
+    return "boxcyl::Cylinder<double>{" + cpp(c.center) + ", " + cpp(c.axis) + ", " + cpp(c.radius) + ", " +
+           cpp(c.height) + "}";
+}
+inline std::string cpp(const boxcyl::AlignedBox<double>& b) {
+    return "boxcyl::AlignedBox<double>{" + cpp(b.min) + ", " + cpp(b.max) + "}";
+}
+inline std::string cpp(const boxcyl::CanonicalBox<double>& b) { return "boxcyl::CanonicalBox<double>{" + cpp(b.extents) + "}"; }
+inline std::string cpp(const boxcyl::OrientedBox<double>& b) {
+    return "boxcyl::OrientedBox<double>{" + cpp(b.center) + ", {" + cpp(b.axes[0]) + ", " + cpp(b.axes[1]) + ", " +
+           cpp(b.axes[2]) + "}, " + cpp(b.extents) + "}";
+}
+inline std::string cpp(const boxcyl::Parallelepiped<double>& b) {
+    return "boxcyl::Parallelepiped<double>{" + cpp(b.center) + ", {" + cpp(b.axes[0]) + ", " + cpp(b.axes[1]) + ", " +
+           cpp(b.axes[2]) + "}, " + cpp(b.extents) + "}";
 }
 
 }  // namespace boxcyl::fuzz

@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-20}"
 export BUILD_DIR="${BUILD_DIR:-build-ci-sanitize}"
 export JOBS="${JOBS:-$(nproc)}"
-export FUZZ_ALSO_BUILD="test_validate test_jsonl fuzz_replay_jsonl fuzz_replay_query fuzz_replay_batch boxcyl_cli"
+export FUZZ_ALSO_BUILD="test_validate test_jsonl fuzz_replay_jsonl fuzz_replay_query fuzz_replay_batch fuzz_replay_symmetry boxcyl_cli"
 bash scripts/fuzz.sh 0  # configure and build only
 
 # Left out: test_explain's placeholder (also labelled cli; not built here) and large_line_count (200,000
