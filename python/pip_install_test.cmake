@@ -58,6 +58,8 @@ assert boxcyl.__file__.startswith(venv + "/"), f"imported {boxcyl.__file__}, not
 cyl = boxcyl.Cylinder(center=(3, 0, 0), axis=(0, 0, 5), radius=2, height=1)
 assert boxcyl.intersects(boxcyl.AlignedBox(min=(-1, -1, -1), max=(1, 1, 1)), cyl) is True
 assert boxcyl.intersects(boxcyl.AlignedBox(min=(-1, -1, -1), max=(0.5, 1, 1)), cyl) is False
+from importlib.metadata import metadata
+assert metadata("boxcyl")["License"] == "MIT", metadata("boxcyl")["License"]
 print("boxcyl", boxcyl.__file__)
 ]=])
 
