@@ -419,29 +419,30 @@ TEST(GridScales, MatchesBruteForceAtExtremeScales) {
     }
 }
 
-// Cylinders several cells thick, so that whole blocks lie inside and are reported without descending
-// (GridStats::blocks_inside), including blocks whose corners lie exactly on the side or on a disk:
-// radius 5 about a vertex line of unit cells has the corners (±3, ±4) and (±5, 0) on its side.
+// Cylinders many cells thick, so that whole blocks (larger than the 64 cells that go to the batch filter)
+// lie inside and are reported without descending (GridStats::blocks_inside), including blocks whose
+// corners lie exactly on the side or on a disk: radius 20 about a vertex line of unit cells has the
+// corners (±12, ±16) and (±20, 0) on its side.
 TEST(GridFat, WholeBlocksInsideMatchBruteForce) {
     std::mt19937_64 rng(0x6d1d0401u);
     auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
     std::normal_distribution<double> normal;
     std::int64_t inside_blocks = 0;
     for (int n = 0; n < 40; ++n) {
-        const Grid g{{-8, -8, -6}, {1, 1, 1}, {16, 16, 12}};
+        const Grid g{{-32, -32, -24}, {1, 1, 1}, {64, 64, 48}};
         Cylinder<double> c;
         if (n % 2 == 0) {  // along a grid axis through a vertex line, ends on grid planes
             const std::size_t a = static_cast<std::size_t>(pick(0, 2));
             c.axis = {0, 0, 0};
             c.axis[a] = pick(0, 1) ? 1 : -3;
-            c.center = {static_cast<double>(pick(-2, 2)), static_cast<double>(pick(-2, 2)), static_cast<double>(pick(-2, 2))};
-            c.radius = pick(0, 1) ? 5 : 4.5;
-            c.height = 2 * pick(1, 5);
+            c.center = {static_cast<double>(pick(-8, 8)), static_cast<double>(pick(-8, 8)), static_cast<double>(pick(-8, 8))};
+            c.radius = pick(0, 1) ? 20 : 18.5;
+            c.height = 8 * pick(1, 5);
         } else {
             c.axis = {normal(rng), normal(rng), normal(rng)};
-            c.center = {normal(rng), normal(rng), normal(rng)};
-            c.radius = 3 + 3 * std::abs(normal(rng));
-            c.height = 4 + 8 * std::abs(normal(rng));
+            c.center = {4 * normal(rng), 4 * normal(rng), 4 * normal(rng)};
+            c.radius = 12 + 12 * std::abs(normal(rng));
+            c.height = 16 + 32 * std::abs(normal(rng));
         }
         GridStats s;
         cells(g, c, &s);
