@@ -41,6 +41,7 @@
 #include "boxcyl/filtered.hpp"
 #include "boxcyl/grid.hpp"
 #include "boxcyl/query.hpp"
+#include "command_line.hpp"
 #include "support/cases.hpp"
 #include "support/near_touching.hpp"
 
@@ -255,24 +256,12 @@ void summary(std::FILE* out, const std::vector<Set>& sets) {
 
 int main(int argc, char** argv) {
     std::string markdown;
-    bool quick = false;
-    std::vector<std::string> user;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a.rfind("--markdown=", 0) == 0) markdown = a.substr(11);
-        else if (a == "--quick") quick = true;
-        else user.push_back(a);
-    }
-    std::vector<std::string> args{argv[0], "--benchmark_display_aggregates_only=true"};
-    args.push_back(quick ? "--benchmark_repetitions=1" : "--benchmark_repetitions=5");
-    args.push_back(quick ? "--benchmark_min_time=0.01" : "--benchmark_min_time=0.2");
-    args.insert(args.end(), user.begin(), user.end());
-    std::vector<char*> cargs;
-    cargs.reserve(args.size());
-    for (std::string& a : args) cargs.push_back(a.data());
-    int cargc = static_cast<int>(cargs.size());
-    benchmark::Initialize(&cargc, cargs.data());
-    if (benchmark::ReportUnrecognizedArguments(cargc, cargs.data())) return 1;
+    const bool ok = boxcyl::bench::initialize(argc, argv, [&](const std::string& a) {
+        if (a.rfind("--markdown=", 0) != 0) return false;
+        markdown = a.substr(11);
+        return true;
+    });
+    if (!ok) return 1;
 
     std::fprintf(stderr, "generating the sets (the boundary pairs are found by bisection with the oracle: about a minute)...\n");
     std::vector<Set> sets(14);

@@ -35,6 +35,7 @@
 
 #include "boxcyl/filtered.hpp"
 #include "boxcyl/query.hpp"
+#include "command_line.hpp"
 #include "support/cases.hpp"
 #ifdef BOXCYL_BENCH_PEERS
 #include "peers.hpp"
@@ -508,28 +509,15 @@ void print_summary(std::FILE* out, const std::vector<DataSet>& sets, long sample
 
 int main(int argc, char** argv) {
     std::string markdown;
-    bool quick = false;
     std::size_t pairs = kBoundaryPairs;
-    std::vector<std::string> user;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
+    const bool ok = boxcyl::bench::initialize(argc, argv, [&](const std::string& a) {
         if (a.rfind("--markdown=", 0) == 0) markdown = a.substr(11);
         else if (a.rfind("--boundary-pairs=", 0) == 0) pairs = std::stoul(a.substr(17));
-        else if (a == "--quick") quick = true;
         else if (a == "--no-checks") g_checks = false;
-        else user.push_back(a);
-    }
-    // Defaults first, so that benchmark flags given on the command line (parsed later) override them.
-    std::vector<std::string> args{argv[0], "--benchmark_display_aggregates_only=true"};
-    args.push_back(quick ? "--benchmark_repetitions=1" : "--benchmark_repetitions=5");
-    args.push_back(quick ? "--benchmark_min_time=0.01" : "--benchmark_min_time=0.2");
-    args.insert(args.end(), user.begin(), user.end());
-    std::vector<char*> cargs;
-    cargs.reserve(args.size());
-    for (std::string& a : args) cargs.push_back(a.data());
-    int cargc = static_cast<int>(cargs.size());
-    benchmark::Initialize(&cargc, cargs.data());
-    if (benchmark::ReportUnrecognizedArguments(cargc, cargs.data())) return 1;
+        else return false;
+        return true;
+    });
+    if (!ok) return 1;
 
     // All inputs, the oracle's answers, the fallback counts and the checks, before any timing.
     std::fprintf(stderr, "generating inputs (about a minute: boundary pairs are found by bisection with the oracle)...\n");
