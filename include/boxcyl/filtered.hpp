@@ -122,6 +122,10 @@ extern template Result query(const AlignedBox<double>&, const Cylinder<double>&)
 extern template Result query(const OrientedBox<double>&, const Cylinder<double>&);
 extern template Result query(const CanonicalBox<double>&, const Cylinder<double>&);
 extern template Result query(const Parallelepiped<double>&, const Cylinder<double>&);
+extern template Result query(const AlignedBox<double>&, const Cylinder<double>&, Stats&);
+extern template Result query(const OrientedBox<double>&, const Cylinder<double>&, Stats&);
+extern template Result query(const CanonicalBox<double>&, const Cylinder<double>&, Stats&);
+extern template Result query(const Parallelepiped<double>&, const Cylinder<double>&, Stats&);
 #endif
 
 }  // namespace boxcyl::filtered

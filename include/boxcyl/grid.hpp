@@ -206,7 +206,10 @@ private:
                 return true;
             }
         }
-        return intersects_unchecked(b, c_);  // blocks of a valid grid are valid (checked once, up front)
+        // The exact default itself (what intersects_unchecked(b, c_) runs), called directly: blocks of a
+        // valid grid are valid (checked once, up front), and a translation unit that compiles the grid
+        // query then instantiates the pipeline alone, not every algorithm the options could choose.
+        return filtered::query(b, c_).intersect;
     }
 
     static Vec3<double> corner(const AlignedBox<double>& b, std::size_t m) {
