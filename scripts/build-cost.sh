@@ -4,7 +4,7 @@
 #      largest memory of any one compiler process (each compile runs under /usr/bin/time through a
 #      compiler launcher), with -j1 so that the CPU figure is not inflated by contention;
 #   2. `pip install --no-build-isolation ./python` into a fresh venv: CPU seconds and peak memory.
-# Goals it is held to (docs/reliability.md): the C++ build ≤ 120 s CPU and ≤ 500 MB per compiler
+# Goals it is held to (docs/design.md records the figures): the C++ build ≤ 120 s CPU and ≤ 500 MB per compiler
 # process, pip ≤ 90 s CPU. Prints the figures and the five heaviest translation units.
 # Usage: scripts/build-cost.sh [cpp|python ...]   (default both). Machines under load give higher CPU.
 set -euo pipefail

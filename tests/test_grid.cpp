@@ -419,7 +419,7 @@ TEST(GridScales, MatchesBruteForceAtExtremeScales) {
     }
 }
 
-// Cylinders many cells thick, so that whole blocks (larger than the 64 cells that go to the batch filter)
+// Cylinders many cells thick, so that whole blocks (larger than the 64 cells that always go to the batch filter)
 // lie inside and are reported without descending (GridStats::blocks_inside), including blocks whose
 // corners lie exactly on the side or on a disk: radius 20 about a vertex line of unit cells has the
 // corners (±12, ±16) and (±20, 0) on its side.
