@@ -31,8 +31,8 @@ EOF
             /usr/bin/time -o "$work/total" -f "%U %S %e" cmake --build "$work/build" -j1 >/dev/null
             read -r user sys wall < "$work/total"
             awk -v u="$user" -v s="$sys" -v w="$wall" '
-                { cpu = $1 + $2; total += cpu; if ($3 > peak) peak = $3; n++; printf "%.1f %.0f %s\n", cpu, $3 / 1024, $4 > "/dev/stderr" }
-                END { printf "C++ default build (library + tool, -j1): %.0f s CPU (%d compiles %.0f s, the rest linking and CMake), %.0f s wall, largest compiler process %.0f MB\n", u + s, n, total, w, peak / 1024 }' \
+                { cpu = $1 + $2; total += cpu; if ($3 > peak) { peak = $3; peak_src = $4 } n++; printf "%.1f %.0f %s\n", cpu, $3 / 1024, $4 > "/dev/stderr" }
+                END { printf "C++ default build (library + tool, -j1): %.0f s CPU (%d compiles %.0f s, the rest linking and CMake), %.0f s wall, largest compiler process %.0f MB (%s)\n", u + s, n, total, w, peak / 1024, peak_src }' \
                 "$work/compiles" 2> "$work/per_file"
             echo "heaviest compiles (CPU s, MB, source):"
             sort -rn "$work/per_file" | head -5 | sed 's/^/  /'
@@ -40,7 +40,12 @@ EOF
         python)
             bash scripts/deps.sh python time >/dev/null
             /usr/bin/python3 -m venv --system-site-packages "$work/venv"
-            /usr/bin/time -o "$work/pip" -f "%U %S %e %M" "$work/venv/bin/python" -m pip install --no-build-isolation -q ./python >/dev/null
+            # From a copy of the sources without what git ignores: a python/build/ left by an earlier
+            # install would otherwise be reused and the figure would say nothing about a fresh clone.
+            mkdir "$work/src"
+            git ls-files -z --cached --others --exclude-standard |
+                tar --null --ignore-failed-read -T - -cf - 2>/dev/null | tar -xf - -C "$work/src"
+            /usr/bin/time -o "$work/pip" -f "%U %S %e %M" "$work/venv/bin/python" -m pip install --no-build-isolation -q "$work/src/python" >/dev/null
             read -r user sys wall mem < "$work/pip"
             awk -v u="$user" -v s="$sys" -v w="$wall" -v m="$mem" \
                 'BEGIN { printf "pip install ./python: %.0f s CPU, %.0f s wall, largest process %.0f MB\n", u + s, w, m / 1024 }'
