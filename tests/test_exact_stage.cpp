@@ -64,12 +64,11 @@ struct StageTally {
                               << describe(c);
         }
         if (c.kind == BoxKind::oriented) {
-            if (const std::optional<bool> got = exact::integer::intersects_parallelepiped(as_parallelepiped(c.oriented), c.cylinder)) {
-                ++judged_parallelepiped;
-                if (*got != want && ++wrong <= 10)
-                    ADD_FAILURE() << where << ": parallelepiped stage answered " << *got << ", oracle " << want << "\n  "
-                                  << describe(c);
-            }
+            const bool got = exact::integer::intersects_parallelepiped(as_parallelepiped(c.oriented), c.cylinder);
+            ++judged_parallelepiped;
+            if (got != want && ++wrong <= 10)
+                ADD_FAILURE() << where << ": parallelepiped stage answered " << got << ", oracle " << want << "\n  "
+                              << describe(c);
         }
         const filtered::Result r =
             with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::query(b, cyl); });
@@ -619,10 +618,30 @@ TEST(ExactStage, NarrowTwoScaleInputsAnswerBeforeTheMiddleStage) {
     EXPECT_EQ(checked, 39);
 }
 
+// Runs f(arg) on a thread with a stack of `bytes`, allocated and painted here; returns the bytes of it
+// used (the high-water mark: the bytes no longer holding the paint).
+std::size_t used_stack(std::size_t bytes, void* (*f)(void*), void* arg) {
+    constexpr unsigned char kPaint = 0xa5;
+    void* memory = nullptr;
+    EXPECT_EQ(posix_memalign(&memory, 1 << 16, bytes), 0);
+    std::memset(memory, kPaint, bytes);
+    pthread_attr_t attr;
+    EXPECT_EQ(pthread_attr_init(&attr), 0);
+    EXPECT_EQ(pthread_attr_setstack(&attr, memory, bytes), 0);
+    pthread_t thread;
+    EXPECT_EQ(pthread_create(&thread, &attr, f, arg), 0);
+    EXPECT_EQ(pthread_join(thread, nullptr), 0);
+    pthread_attr_destroy(&attr);
+    const auto* painted = static_cast<const unsigned char*>(memory);
+    std::size_t untouched = 0;
+    while (untouched < bytes && painted[untouched] == kPaint) ++untouched;
+    std::free(memory);
+    return bytes - untouched;
+}
+
 // The stack the exact stage needs, on its deepest path: a two-scale query whose signs hang beyond the
 // series' order 2 (two tiny axis components 104 binary orders apart beside a large one, integer lengths),
-// so that it runs both series runs, the order-4 one deciding. Threads run on stacks allocated and
-// painted here; the high-water mark is the bytes no longer holding the paint.
+// so that it runs both series runs, the order-4 one deciding.
 struct DeepestQuery {
     CanonicalBox<double> box{{0x1.8p+13, 0x1.8p+13, 0x1p+12}};
     Cylinder<double> cyl{{0x1.cp+14, -0x1.8p+13, -0x1p+12}, {-0x1.338p-408, 0x1p+0, 0x1.a28p-512}, 0x1p+14, 0x1.8p+14};
@@ -642,25 +661,7 @@ struct DeepestQuery {
         c.cylinder = cyl;
         return oracle_answer(c);
     }
-    // Runs on a thread with a stack of `bytes`; returns the bytes of it used.
-    std::size_t on_stack_of(std::size_t bytes) {
-        constexpr unsigned char kPaint = 0xa5;
-        void* memory = nullptr;
-        EXPECT_EQ(posix_memalign(&memory, 1 << 16, bytes), 0);
-        std::memset(memory, kPaint, bytes);
-        pthread_attr_t attr;
-        EXPECT_EQ(pthread_attr_init(&attr), 0);
-        EXPECT_EQ(pthread_attr_setstack(&attr, memory, bytes), 0);
-        pthread_t thread;
-        EXPECT_EQ(pthread_create(&thread, &attr, &DeepestQuery::run, this), 0);
-        EXPECT_EQ(pthread_join(thread, nullptr), 0);
-        pthread_attr_destroy(&attr);
-        const auto* painted = static_cast<const unsigned char*>(memory);
-        std::size_t untouched = 0;
-        while (untouched < bytes && painted[untouched] == kPaint) ++untouched;
-        std::free(memory);
-        return bytes - untouched;
-    }
+    std::size_t on_stack_of(std::size_t bytes) { return used_stack(bytes, &run, this); }
 };
 
 TEST(ExactStage, StackHighWaterMark) {
@@ -691,6 +692,55 @@ TEST(ExactStage, SmallStackSkipsTheSeriesRuns) {
     EXPECT_FALSE(q.series_answered);
     EXPECT_EQ(q.answer, q.oracle());
     EXPECT_LT(used, std::size_t{64} << 10);  // not the series runs' hundreds of KB
+}
+
+// A rounded rotation whose exact test runs every clipped edge and face cut (a miss) with values beyond
+// 16 limbs: the parallelepiped route's deepest path, in 64 limbs with room for them, else in 16 limbs
+// and then mpz_class.
+struct DeepestParallelepiped {
+    Parallelepiped<double> box{{-0x1.63bb0836f09f2p-2, -0x1.08ac48622c85ap-1, 0x1.4156348727058p-1},
+                               {Vec3<double>{-0x1.c214454064453p-1, -0x1.e82687d9c8ecbp-2, 0x0p+0},
+                                Vec3<double>{0x1.d43307b714838p-2, -0x1.afaf1bdf1110bp-1, 0x1.21c2a0d704dfp-2},
+                                Vec3<double>{-0x1.14434fa0f2b5cp-3, 0x1.fd6f1050dedcep-3, 0x1.eb12f69133e86p-1}},
+                               {0x1.75994f30cdfd3p+0, 0x1.af153d1c696e6p-2, 0x1.6f3418dbd203fp-1}};
+    Cylinder<double> cyl{{-0x1.20e20e788d53ap-1, -0x1.def0dc2426b9fp+0, -0x1.436b1b9236969p-1},
+                         {-0x1.1dd515fb0e78p-6, -0x1.b4bb7c9ed40f8p-3, 0x1.eec059dbdd21p-1}, 0x1.ffd7dbc2a8e66p-2,
+                         0x1.9b3480e2e90bbp+0};
+    bool answer = true, fixed_answered = false;
+
+    static void* run(void* self) {
+        auto& q = *static_cast<DeepestParallelepiped*>(self);
+        q.fixed_answered = exact::integer::parallelepiped_small(q.box, q.cyl).has_value();
+        q.answer = exact::integer::intersects_parallelepiped(q.box, q.cyl);
+        return nullptr;
+    }
+    std::size_t on_stack_of(std::size_t bytes) { return used_stack(bytes, &run, this); }
+};
+
+TEST(ExactStage, ParallelepipedStack) {
+    DeepestParallelepiped q;
+    FixedOverflow::flag() = false;
+    (void)exact::integer::detail::run_turned<exact::integer::Small>(q.box, q.cyl);
+    ASSERT_TRUE(FixedOverflow::flag()) << "the case must outgrow 16 limbs";
+    const bool want = exact::integer::detail::run_turned<mpz_class>(q.box, q.cyl);
+    EXPECT_FALSE(want);
+    Case c;
+    c.kind = BoxKind::oriented;
+    c.oriented = {q.box.center, q.box.axes, q.box.extents};
+    c.cylinder = q.cyl;
+    EXPECT_EQ(oracle_answer(c), want);
+
+    const std::size_t used = q.on_stack_of(std::size_t{8} << 20);
+    std::printf("parallelepiped route, deepest path in 64 limbs: %zu KB of stack\n", used >> 10);
+    EXPECT_TRUE(q.fixed_answered);
+    EXPECT_EQ(q.answer, want);
+    EXPECT_LT(used, exact::integer::kParallelepipedStackRoom);
+
+    DeepestParallelepiped small;
+    const std::size_t used_small = small.on_stack_of(std::size_t{128} << 10);
+    std::printf("the same on a 128 KB stack: %zu KB used\n", used_small >> 10);
+    EXPECT_FALSE(small.fixed_answered);  // 16 limbs: overflowed
+    EXPECT_EQ(small.answer, want);
 }
 
 // The stage's two integer types give the same answers wherever the fixed one does not overflow.
@@ -762,7 +812,7 @@ TEST(ExactStage, ParallelepipedAgreesWithOracle) {
         c.oriented = b;
         c.cylinder = cyl;
         ASSERT_EQ(oracle_answer(c), hit) << describe(c);
-        EXPECT_EQ(exact::integer::intersects_parallelepiped(as_parallelepiped(b), cyl), std::optional<bool>(hit)) << describe(c);
+        EXPECT_EQ(exact::integer::intersects_parallelepiped(as_parallelepiped(b), cyl), hit) << describe(c);
         EXPECT_EQ(filtered::intersects(b, cyl), hit) << describe(c);
     }
 
@@ -773,7 +823,7 @@ TEST(ExactStage, ParallelepipedAgreesWithOracle) {
         const Case c = touching.next();
         if (c.kind != BoxKind::oriented) continue;
         FixedOverflow::flag() = false;
-        const std::optional<bool> small = exact::integer::detail::run_turned<exact::integer::Small>(as_parallelepiped(c.oriented), c.cylinder);
+        const bool small = exact::integer::detail::run_turned<exact::integer::Small>(as_parallelepiped(c.oriented), c.cylinder);
         if (FixedOverflow::flag()) continue;
         ++compared;
         EXPECT_EQ(small, exact::integer::detail::run_turned<mpz_class>(as_parallelepiped(c.oriented), c.cylinder)) << describe(c);

@@ -18,6 +18,7 @@
 #include "boxcyl/batch.hpp"
 #include "boxcyl/boxcyl.hpp"
 #include "boxcyl/exact/answer.hpp"
+#include "boxcyl/exact/paths.hpp"
 #include "boxcyl/filtered.hpp"
 #include "boxcyl/oracle/oracle.hpp"
 #include "support/fp.hpp"
@@ -296,9 +297,59 @@ TEST(ParallelepipedOracle, FlatSolidsAgreeWithExactHull) {
         for (int n = 0; n < 150; ++n) {
             const P b = random_box(rng, flavour);
             const C c{{u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}, n % 7 == 0 ? 0.0 : pos(rng), pos(rng)};
-            EXPECT_EQ(oracle_answer(b, c), *exact::answer(b, c)) << describe(b, c);
+            EXPECT_EQ(oracle_answer(b, c), exact::intersects(exact::Method::hull, to_exact(b), to_exact(c))) << describe(b, c);
         }
     }
+}
+
+// Dependent axes (a zonogon, a parallelogram, a segment, a point) with small integer coordinates, where
+// many queries touch exactly (axes along a coordinate half the time): the exact stage's integer route,
+// the oracle and exact §3 in Q(√d) (three independent exact methods) agree, on each case and with the
+// radius or the height one ulp smaller.
+TEST(ParallelepipedOracle, DependentAxesOnALatticeThreeExactMethodsAgree) {
+    std::mt19937_64 rng(4242);
+    std::uniform_int_distribution<int> small(-3, 3), ext(0, 2), flavour(0, 4), size(0, 6), coord(0, 5);
+    int cases = 0, touching = 0;
+    for (int n = 0; n < 3000; ++n) {
+        auto v = [&] { return Vec3<double>{double(small(rng)), double(small(rng)), double(small(rng))}; };
+        P b{v(), {v(), v(), v()}, {double(ext(rng)), double(ext(rng)), 1}};
+        switch (flavour(rng)) {
+            case 0: b.axes[2] = b.axes[0] + b.axes[1]; break;        // a zonogon (mostly a hexagon)
+            case 1: b.axes[2] = b.axes[0] - 2.0 * b.axes[1]; break;  // another
+            case 2: b.axes[2] = {0, 0, 0}; break;                      // a parallelogram
+            case 3: b.axes[1] = 2.0 * b.axes[0], b.axes[2] = -1.0 * b.axes[0]; break;  // a segment
+            default: b.axes[1] = b.axes[0], b.extents[2] = 0; break;   // a segment or parallelogram
+        }
+        Vec3<double> axis = v();
+        if (const int k = coord(rng); k < 3) axis = {0, 0, 0}, axis[k] = 1;
+        if (axis[0] == 0 && axis[1] == 0 && axis[2] == 0) axis = {0, 0, 1};
+        C c{v(), axis, 0.5 * size(rng), 0.5 * size(rng)};
+        if (n % 2 == 0) {  // a cap on the vertex farthest along a coordinate, the rim through it or not
+            const int k = coord(rng) % 3;
+            const double sk = small(rng) < 0 ? -1.0 : 1.0;
+            Vec3<double> top = b.center;
+            for (int i = 0; i < 3; ++i) top = top + (sk * b.axes[i][k] >= 0 ? b.extents[i] : -b.extents[i]) * b.axes[i];
+            c.axis = {0, 0, 0}, c.axis[k] = sk;
+            c.center = top, c.center[k] += sk * 0.5 * c.height;
+            if (coord(rng) < 3) c.center[(k + 1) % 3] += 1.5, c.center[(k + 2) % 3] -= 2, c.radius = 2.5;
+        }
+        if (!validate(b).ok() || !validate(c).ok()) continue;
+        bool touches = false;
+        const bool hit = oracle_answer(b, c);
+        for (const C& q : {c, C{c.center, c.axis, below(c.radius), c.height}, C{c.center, c.axis, c.radius, below(c.height)}}) {
+            if (!(q.radius >= 0) || !(q.height >= 0)) continue;
+            const bool want = oracle_answer(b, q);
+            touches |= want != hit;
+            ++cases;
+            EXPECT_EQ(exact::integer::intersects_parallelepiped(b, q), want) << describe(b, q);
+            EXPECT_EQ(exact::intersects(exact::Method::hull, to_exact(b), to_exact(q)), want) << describe(b, q);
+            EXPECT_EQ(filtered::query(b, q).intersect, want) << describe(b, q);
+        }
+        touching += touches;
+    }
+    EXPECT_GT(cases, 6000);
+    EXPECT_GT(touching, 1000);
+    std::printf("dependent axes on a lattice: %d cases, %d queries touching exactly\n", cases, touching);
 }
 
 TEST(ParallelepipedOracle, FlatHandCases) {

@@ -5,18 +5,15 @@
 // Routes (docs/pipeline.md, row exact): an exact canonical frame (aligned and canonical boxes, signed
 // permutation frames) takes the linear-inequalities method in integers and Z[√d] — fixed-width
 // integers, else integers in powers of a tiny ε for inputs of two scales, else mpz_class; any other
-// frame and any parallelepiped the clipped edges and face cuts in integers; dependent axes the
-// convex-hull method in Q(√d). The tiers let the pipeline ask one route early (Tier::fixed for narrow
-// inputs, Tier::series for narrow inputs of two scales); they answer nullopt when they cannot, and
-// Tier::full always answers.
+// frame and any parallelepiped (dependent axes too) the clipped edges and face cuts in integers. The
+// tiers let the pipeline ask one route early (Tier::fixed for narrow inputs, Tier::series for narrow
+// inputs of two scales); they answer nullopt when they cannot, and Tier::full always answers.
 #pragma once
 
 #include <optional>  // the tiers' "cannot"
 
-#include "boxcyl/exact/convert.hpp"
 #include "boxcyl/exact/integer_inequalities.hpp"
 #include "boxcyl/exact/integer_parallelepiped.hpp"
-#include "boxcyl/exact/paths.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
@@ -35,8 +32,7 @@ inline std::optional<bool> answer(const Parallelepiped<double>& b, const Cylinde
         case Tier::series: return std::nullopt;
         case Tier::full: break;
     }
-    if (const std::optional<bool> r = integer::intersects_parallelepiped(b, c)) return r;
-    return intersects(Method::hull, to_exact(b), to_exact(c));
+    return integer::intersects_parallelepiped(b, c);
 }
 
 // Aligned, canonical and oriented boxes.

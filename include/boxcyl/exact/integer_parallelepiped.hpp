@@ -4,15 +4,25 @@
 // vectors a_m = e_m·A_m exactly as given; the axis test solves for λ by Cramer's rule, and the
 // candidates' end points (box vertices, points where a box edge crosses a slab plane t = ±H) have
 // positive integer denominators, so every test is the sign of a + b√d with integers a, b.
+//
+// Dependent half-edge vectors are answered the same way. B is then a zonogon (rank 2), a segment or a
+// point, and the argument for the solid carries over: the distance to the axis line is convex on the
+// convex B ∩ slab, so its least value is 0 where the axis crosses B inside the slab, or lies on the
+// relative boundary of B ∩ slab. That boundary is covered by the cube's edges mapped into B (the
+// boundary of a linear image of the cube is the image of some of its edges; for a segment, the images
+// of its connected edge graph cover it) clipped to the slab, and by the chords B ∩ {t = ±H}, which the
+// face cuts cover (every point of B is the image of a point on the cube's surface, since the kernel
+// line through any point of the cube leaves it there).
 #pragma once
 
 #include <array>     // vertices, candidate points
 #include <cstddef>   // std::size_t
 #include <cstdint>   // std::int64_t
-#include <optional>  // nullopt: left to §3
+#include <optional>  // nullopt: a value outgrew the fixed-width integers
 #include <type_traits>  // std::is_same_v
 
 #include "boxcyl/exact/integer_inequalities.hpp"
+#include "boxcyl/exact/stack_room.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
@@ -87,13 +97,10 @@ public:
         }
     }
 
-    // nullopt: non-zero half-edge vectors that are linearly dependent (not a valid frame).
-    std::optional<bool> run() const {
+    // Any half-edge vectors: independent ones span a solid, dependent ones a flat zonogon (rank 2), a
+    // segment (rank 1) or a point.
+    bool run() const {
         const Z det = dot(p_.a[0], cross(p_.a[1], p_.a[2]));
-        int zeros = 0, zero = 0;
-        for (int m = 0; m < 3; ++m)
-            if (sgn(p_.a[m][0]) == 0 && sgn(p_.a[m][1]) == 0 && sgn(p_.a[m][2]) == 0) ++zeros, zero = m;
-        if (sgn(det) == 0 && zeros == 0) return std::nullopt;
         // The box outside the slab: every vertex beyond the same plane.
         int above = 0, below = 0;
         for (int s = 0; s < 8; ++s) {
@@ -101,10 +108,13 @@ public:
             above += side > 0, below += side < 0;
         }
         if (above == 8 || below == 8) return false;
-        // The axis segment meets B. A segment or point box (two or three zero extents) needs no such
-        // test: it is its own clipped edge.
-        if (zeros == 0 && axis_meets_box(det)) return true;
-        if (zeros == 1 && axis_meets_flat_box(zero)) return true;
+        // The axis segment meets B. A segment or point (rank ≤ 1) needs no such test: the union of its
+        // clipped edges is B ∩ slab, and each is tested whole.
+        if (sgn(det) != 0) {
+            if (axis_meets_box(det)) return true;
+        } else if (const std::optional<Vec3<Z>> n = plane_normal(); n && axis_meets_flat_box(*n)) {
+            return true;
+        }
         for (int m = 0; m < 3; ++m)
             for (int s = 0; s < 8; ++s)
                 if (!(s >> m & 1) && clipped_edge_within(s, s | (1 << m))) return true;
@@ -190,23 +200,38 @@ private:
         return true;
     }
 
-    // A flat box (a_z = 0): the parallelogram {K + λ_i·a_i + λ_j·a_j}. With n = a_i × a_j, the axis line
-    // crosses its plane at t = (n·G)·√d/(n·D) (G = K − C), where Y = X − K satisfies
-    // (n·D)·Y = W := (n·G)·D − (n·D)·G, and λ_i = Y·(a_j × n)/|n|², λ_j = Y·(n × a_i)/|n|². An axis
-    // parallel to the plane (n·D = 0) meets the parallelogram only inside its plane, and a line in the
-    // plane that meets the bounded P crosses its boundary: the clipped edges then find distance 0.
-    bool axis_meets_flat_box(int z) const {
-        const Vec3<Z>& ai = p_.a[(z + 1) % 3];
-        const Vec3<Z>& aj = p_.a[(z + 2) % 3];
-        const Vec3<Z> n = cross(ai, aj);
+    // A flat box (rank 2): a normal of its plane, a_i × a_j for a pair that is not parallel; none for
+    // rank ≤ 1.
+    std::optional<Vec3<Z>> plane_normal() const {
+        for (int m = 0; m < 3; ++m) {
+            Vec3<Z> n = cross(p_.a[m], p_.a[(m + 1) % 3]);
+            if (sgn(n[0]) != 0 || sgn(n[1]) != 0 || sgn(n[2]) != 0) return n;
+        }
+        return std::nullopt;
+    }
+
+    // A flat box: the zonogon P = {K + Σ λ_m·a_m : |λ_m| ≤ 1} in the plane through K with normal n. The
+    // axis line crosses that plane at t = (n·G)·√d/(n·D) (G = K − C), where Y = X − K satisfies
+    // (n·D)·Y = W := (n·G)·D − (n·D)·G. P is the intersection of the strips across its edges, which are
+    // parallel to the non-zero a_m: with ν_m = n × a_m, Y ∈ P iff |ν_m·Y| ≤ Σ_k |ν_m·a_k| (the support
+    // of P in direction ν_m) for each m. An axis parallel to the plane (n·D = 0) meets P only inside
+    // its plane, and a line in the plane that meets the bounded P crosses its boundary, or ends inside
+    // it at t = ±H: the clipped edges or face cuts then find distance 0.
+    bool axis_meets_flat_box(const Vec3<Z>& n) const {
         const Z nD = dot(n, p_.D);
         if (sgn(nD) == 0) return false;
         const Z nG = dot(n, p_.G);
         const Z abs_nD = abs_of(nD);
         if (ring_.sign(Z(p_.H * abs_nD), Z(-abs_of(nG))) < 0) return false;  // |t| ≤ H
         const Vec3<Z> W = nG * p_.D - nD * p_.G;
-        const Z bound = Z(dot(n, n) * abs_nD);
-        return !(bound < abs_of(Z(dot(cross(aj, n), W)))) && !(bound < abs_of(Z(dot(cross(n, ai), W))));
+        for (int m = 0; m < 3; ++m) {
+            const Vec3<Z> nu = cross(n, p_.a[m]);
+            Z support = abs_of(Z(dot(nu, p_.a[0])));
+            support += abs_of(Z(dot(nu, p_.a[1])));
+            support += abs_of(Z(dot(nu, p_.a[2])));
+            if (Z(abs_nD * support) < abs_of(Z(dot(nu, W)))) return false;
+        }
+        return true;
     }
 
     // The box edge s → s' clipped to the slab.
@@ -249,28 +274,37 @@ private:
 };
 
 template <class Z>
-std::optional<bool> run_turned(const Parallelepiped<double>& b, const Cylinder<double>& c) {
+bool run_turned(const Parallelepiped<double>& b, const Cylinder<double>& c) {
     const ParallelepipedProblem<Z> p = problem_turned<Z>(b, c);
     return ClippedTest<Z>(p).run();
 }
 
 }  // namespace detail
 
-// The exact answer for any parallelepiped (nullopt only for non-zero half-edge vectors that are
-// linearly dependent): FixedInt first, mpz_class when a value outgrew it.
-inline std::optional<bool> intersects_parallelepiped(const Parallelepiped<double>& b, const Cylinder<double>& c) {
-    FixedOverflow::flag() = false;
-    const std::optional<bool> small = detail::run_turned<Small>(b, c);
-    if (!FixedOverflow::flag()) return small;
-    return detail::run_turned<mpz_class>(b, c);
-}
+// The widest values here are far wider than §4's: a clipped end point is a quotient, and the interior
+// test squares a number of Z[√d] built from two of them — about 24·L + 28·M bits for lengths below 2^L
+// and axis components below 2^M, where §4 needs 4·L + 8·M. Rounded rotations (L ≈ 110, M ≈ 53)
+// outgrow 16 limbs on a third of random queries; 64 limbs hold nearly all of them, and cost what 16
+// do where 16 suffice (FixedInt's arithmetic runs on the limbs in use): 8 µs against mpz_class's 20.
+inline constexpr int kParallelepipedLimbs = 64;
+using Wide = FixedInt<kParallelepipedLimbs>;
+// The 64-limb run keeps its values on the stack (test ExactStage.ParallelepipedStack prints how much);
+// with less room than this left it runs in 16 limbs.
+inline constexpr std::size_t kParallelepipedStackRoom = std::size_t{512} << 10;
 
-// The same in FixedInt alone: nullopt also when a value outgrew it.
+// The answer in fixed-width integers (64 limbs where the stack has room, else 16); nullopt when a value
+// outgrew them.
 inline std::optional<bool> parallelepiped_small(const Parallelepiped<double>& b, const Cylinder<double>& c) {
     FixedOverflow::flag() = false;
-    const std::optional<bool> r = detail::run_turned<Small>(b, c);
+    const bool r = stack_room() >= kParallelepipedStackRoom ? detail::run_turned<Wide>(b, c) : detail::run_turned<Small>(b, c);
     if (FixedOverflow::flag()) return std::nullopt;
     return r;
+}
+
+// The exact answer for any parallelepiped: fixed-width integers, mpz_class when a value outgrew them.
+inline bool intersects_parallelepiped(const Parallelepiped<double>& b, const Cylinder<double>& c) {
+    if (const std::optional<bool> r = parallelepiped_small(b, c)) return *r;
+    return detail::run_turned<mpz_class>(b, c);
 }
 
 }  // namespace boxcyl::exact::integer
