@@ -15,7 +15,7 @@
 # crashes, not what only the sanitizers report. FUZZ_COVERAGE=target (implies FUZZ_SANITIZE=0; default
 # BUILD_DIR build-fuzz-target): coverage only on the targets' own code (fuzz/target-coverage.txt), the
 # library uninstrumented: libFuzzer explores the decoding and the metamorphic steps while the queries run
-# at full speed (symmetry: about ten times the inputs per second of the whole-library instrumentation).
+# at full speed (symmetry: four to seven times the inputs per second of the whole-library instrumentation).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-30}"
