@@ -8,12 +8,15 @@
 //   boundary:       one-ulp boundary pairs of the random generator (support/cases.hpp, seed 0xb0c5c702,
 //                   1024 pairs as in bench_pipeline, both members), those that reach exact arithmetic,
 //                   integer frames (subnormal axis components beside full 53-bit mantissas)
+//   turned route:   the parallelepiped route alone on random boxes turned by rounded rotations (seed
+//                   0x7e57, 2048 of them, a third with values beyond 16 limbs), in each integer type
 // and, for the ratio the goals are stated in, the default query and plain double §4
 // ({Algorithm::inequalities, Arithmetic::float64}) on the whole touching set.
 // Counter ns_per_query: CPU time per query (Google Benchmark prints it in seconds: "2.1us" is 2.1 µs).
 // Run: bench_exact_stage --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include <cmath>    // rotations
 #include <cstdint>  // seeds
 #include <optional>  // a frame without an exact canonical form
 #include <random>   // the adversarial set
@@ -138,6 +141,47 @@ void rational_exact_stage(benchmark::State& state, Set which) {
     over(state, which, [](const auto& b, const Cylinder<double>& cyl) { return rational_stage(b, cyl); });
 }
 
+// The parallelepiped route on random rounded rotations: a box turned by two rounded angles, a cylinder
+// of any direction, both of sizes 0.1–2 near the origin.
+const std::vector<std::pair<Parallelepiped<double>, Cylinder<double>>>& turned_route_set() {
+    static const auto s = [] {
+        std::vector<std::pair<Parallelepiped<double>, Cylinder<double>>> r;
+        std::mt19937_64 rng(0x7e57);
+        std::uniform_real_distribution<double> u(-1, 1), size(0.1, 2);
+        for (int i = 0; i < 2048; ++i) {
+            const double a = 3 * u(rng), b = 3 * u(rng);
+            const Vec3<double> x{std::cos(a), std::sin(a), 0};
+            const Vec3<double> y{-std::sin(a) * std::cos(b), std::cos(a) * std::cos(b), std::sin(b)};
+            const Parallelepiped<double> box{{u(rng), u(rng), u(rng)}, {x, y, cross(x, y)}, {size(rng), size(rng), size(rng)}};
+            const Cylinder<double> cyl{{3 * u(rng), 3 * u(rng), 3 * u(rng)}, {u(rng), u(rng), u(rng)}, size(rng), size(rng)};
+            r.emplace_back(box, cyl);
+        }
+        return r;
+    }();
+    return s;
+}
+enum class Route { stage, small_then_mpz, mpz };
+void turned_route(benchmark::State& state, Route route) {
+    const auto& cases = turned_route_set();
+    for (auto _ : state) {
+        long hits = 0;
+        for (const auto& [b, c] : cases) {
+            switch (route) {
+                case Route::stage: hits += exact::integer::intersects_parallelepiped(b, c); break;
+                case Route::small_then_mpz: {  // 16 limbs, then mpz_class
+                    FixedOverflow::flag() = false;
+                    const bool r = exact::integer::detail::run_turned<exact::integer::Small>(b, c);
+                    hits += FixedOverflow::flag() ? exact::integer::detail::run_turned<mpz_class>(b, c) : r;
+                    break;
+                }
+                case Route::mpz: hits += exact::integer::detail::run_turned<mpz_class>(b, c); break;
+            }
+        }
+        benchmark::DoNotOptimize(hits);
+    }
+    counters(state, cases.size());
+}
+
 void query(benchmark::State& state, QueryOptions opt) {
     const std::vector<Case>& cases = set(Set::touching_all);
     for (auto _ : state) {
@@ -161,6 +205,9 @@ BENCHMARK_CAPTURE(rational_exact_stage, boundary_integer, Set::boundary_integer)
 BENCHMARK_CAPTURE(exact_stage, adversarial_integer, Set::adversarial_integer);
 BENCHMARK_CAPTURE(plain_integer_stage, adversarial_integer, Set::adversarial_integer);
 BENCHMARK_CAPTURE(rational_exact_stage, adversarial_integer, Set::adversarial_integer);
+BENCHMARK_CAPTURE(turned_route, stage, Route::stage);
+BENCHMARK_CAPTURE(turned_route, fixed16_then_mpz, Route::small_then_mpz);
+BENCHMARK_CAPTURE(turned_route, mpz, Route::mpz);
 BENCHMARK_CAPTURE(query, touching_default, QueryOptions{});
 BENCHMARK_CAPTURE(query, touching_float64, QueryOptions{Algorithm::inequalities, Arithmetic::float64});
 
