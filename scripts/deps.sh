@@ -9,8 +9,8 @@
 #           pkg-config, pytest, Eigen (the Eigen adapter's test)
 # With no group named, `test` (so `bash scripts/deps.sh` alone installs what the test command needs).
 set -euo pipefail
-build=(cmake g++ make libgmp-dev nlohmann-json3-dev libcli11-dev)
-python=(g++ libgmp-dev python3-dev python3-pybind11 python3-numpy python3-setuptools python3-pip python3-venv)
+build=(cmake g++ make libgmp-dev libflint-dev nlohmann-json3-dev libcli11-dev)
+python=(g++ libgmp-dev libflint-dev python3-dev python3-pybind11 python3-numpy python3-setuptools python3-pip python3-venv)
 test=("${build[@]}" "${python[@]}" libgtest-dev libgmock-dev libbenchmark-dev pkg-config python3-pytest
       python3-mypy python3-dask python3-distributed libeigen3-dev)
 packages=()

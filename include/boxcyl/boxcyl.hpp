@@ -10,6 +10,7 @@
 #pragma once
 
 #if defined(BOXCYL_HEADER_ONLY) || defined(BOXCYL_HAS_EXACT)
+#include "boxcyl/clearance.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"

@@ -55,6 +55,25 @@ bool intersects_unchecked(const OrientedBox<float>& box, const Cylinder<float>& 
 bool intersects_unchecked(const CanonicalBox<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
 bool intersects_unchecked(const Parallelepiped<float>& box, const Cylinder<float>& cyl, const QueryOptions& opt = {});
 
+// ---- Clearance: is the box within distance `margin` of the cylinder? (boxcyl/clearance.hpp) ----
+// Exact; margin finite and ≥ 0 (else std::invalid_argument, like invalid shapes).
+bool within_distance(const AlignedBox<double>& box, const Cylinder<double>& cyl, double margin);
+bool within_distance(const OrientedBox<double>& box, const Cylinder<double>& cyl, double margin);
+bool within_distance(const CanonicalBox<double>& box, const Cylinder<double>& cyl, double margin);
+bool within_distance(const Parallelepiped<double>& box, const Cylinder<double>& cyl, double margin);
+bool within_distance(const AlignedBox<float>& box, const Cylinder<float>& cyl, float margin);
+bool within_distance(const OrientedBox<float>& box, const Cylinder<float>& cyl, float margin);
+bool within_distance(const CanonicalBox<float>& box, const Cylinder<float>& cyl, float margin);
+bool within_distance(const Parallelepiped<float>& box, const Cylinder<float>& cyl, float margin);
+bool within_distance_unchecked(const AlignedBox<double>& box, const Cylinder<double>& cyl, double margin);
+bool within_distance_unchecked(const OrientedBox<double>& box, const Cylinder<double>& cyl, double margin);
+bool within_distance_unchecked(const CanonicalBox<double>& box, const Cylinder<double>& cyl, double margin);
+bool within_distance_unchecked(const Parallelepiped<double>& box, const Cylinder<double>& cyl, double margin);
+bool within_distance_unchecked(const AlignedBox<float>& box, const Cylinder<float>& cyl, float margin);
+bool within_distance_unchecked(const OrientedBox<float>& box, const Cylinder<float>& cyl, float margin);
+bool within_distance_unchecked(const CanonicalBox<float>& box, const Cylinder<float>& cyl, float margin);
+bool within_distance_unchecked(const Parallelepiped<float>& box, const Cylinder<float>& cyl, float margin);
+
 // ---- The grid query (boxcyl/grid.hpp). ----
 // for_each_cell's compiled part: f(context, i, j, k) for every cell.
 using CellCallback = void (*)(void* context, std::int64_t i, std::int64_t j, std::int64_t k);

@@ -20,7 +20,7 @@ set(cmake_files boxcylConfig.cmake boxcylConfigVersion.cmake boxcylTargets.cmake
 if(EXACT)
   list(APPEND expected ${LIBDIR}/pkgconfig/boxcyl.pc ${LIBDIR}/pkgconfig/boxcyl-exact.pc
                        ${LIBDIR}/pkgconfig/boxcyl-batch-dispatch.pc)
-  list(APPEND cmake_files boxcylExactTargets.cmake FindGMP.cmake)
+  list(APPEND cmake_files boxcylExactTargets.cmake FindGMP.cmake FindFLINT.cmake)
   foreach(lib boxcyl boxcyl_batch_dispatch)
     file(GLOB found ${prefix}/${LIBDIR}/lib${lib}.*)
     if(NOT found)

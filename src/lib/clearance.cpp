@@ -1,0 +1,26 @@
+// boxcyl::boxcyl: the clearance queries of boxcyl/compiled.hpp, the header-only templates
+// (boxcyl/clearance.hpp) for double and float, compiled once here: checked and unchecked.
+#include "boxcyl/clearance.hpp"
+
+#include "boxcyl/compiled.hpp"
+
+namespace boxcyl::compiled {
+
+#define BOXCYL_COMPILED_CLEARANCE(Box, T)                                                          \
+    bool within_distance(const Box<T>& box, const Cylinder<T>& cyl, T margin) {                    \
+        return boxcyl::within_distance<Box<T>, T>(box, cyl, margin);                               \
+    }                                                                                              \
+    bool within_distance_unchecked(const Box<T>& box, const Cylinder<T>& cyl, T margin) {          \
+        return boxcyl::within_distance_unchecked<Box<T>, T>(box, cyl, margin);                     \
+    }
+BOXCYL_COMPILED_CLEARANCE(AlignedBox, double)
+BOXCYL_COMPILED_CLEARANCE(OrientedBox, double)
+BOXCYL_COMPILED_CLEARANCE(CanonicalBox, double)
+BOXCYL_COMPILED_CLEARANCE(Parallelepiped, double)
+BOXCYL_COMPILED_CLEARANCE(AlignedBox, float)
+BOXCYL_COMPILED_CLEARANCE(OrientedBox, float)
+BOXCYL_COMPILED_CLEARANCE(CanonicalBox, float)
+BOXCYL_COMPILED_CLEARANCE(Parallelepiped, float)
+#undef BOXCYL_COMPILED_CLEARANCE
+
+}  // namespace boxcyl::compiled

@@ -1,0 +1,149 @@
+// The clearance query, boxcyl::within_distance (include/boxcyl/clearance.hpp): exact answers on
+// constructions whose distance is known by hand — one for each way the nearest points can lie (box
+// face, edge, vertex against the cylinder's side, cap and rim), each exactly at the margin (within)
+// and one ulp of the margin below (not within) — and its properties on random pairs: margin 0 is
+// intersects(), the answer is monotone in the margin, and every box kind agrees with the parallelepiped
+// it is.
+#include <gtest/gtest.h>
+
+#include <cmath>      // std::nextafter, std::ldexp
+#include <cstdint>    // seeds
+#include <random>     // random margins
+#include <stdexcept>  // std::invalid_argument
+#include <string>     // error messages
+
+#include "boxcyl/clearance.hpp"
+#include "support/cases.hpp"
+
+namespace boxcyl {
+namespace {
+
+using namespace boxcyl::testing;
+
+double below(double x) { return std::nextafter(x, 0.0); }
+
+// dist == m exactly: within at m, not within one ulp below; far inside and outside too.
+template <class Box>
+void expect_distance(const Box& box, const Cylinder<double>& cyl, double dist) {
+    EXPECT_TRUE(within_distance(box, cyl, dist));
+    EXPECT_FALSE(within_distance(box, cyl, below(dist)));
+    EXPECT_TRUE(within_distance(box, cyl, 2 * dist));
+    EXPECT_FALSE(within_distance(box, cyl, dist / 2));
+    EXPECT_FALSE(within_distance(box, cyl, 0.0));
+}
+
+const Cylinder<double> kUnit{{0, 0, 0}, {0, 0, 1}, 1, 2};  // r = 1, caps at z = ±1
+
+TEST(Clearance, FaceAgainstSide) { expect_distance(AlignedBox<double>{{2, -1, -1}, {3, 1, 1}}, kUnit, 1.0); }
+
+TEST(Clearance, FaceAgainstCap) { expect_distance(AlignedBox<double>{{-1, -1, 3}, {1, 1, 4}}, kUnit, 2.0); }
+
+TEST(Clearance, AxisOfAnyLength) {
+    Cylinder<double> c = kUnit;
+    c.axis = {0, 0, 2};
+    expect_distance(AlignedBox<double>{{-1, -1, 3}, {1, 1, 4}}, c, 2.0);
+    c.axis = {0, 0, -0x1p-40};
+    expect_distance(AlignedBox<double>{{2, -1, -1}, {3, 1, 1}}, c, 1.0);
+}
+
+// r = 3, h = 2: the top rim is the circle of radius 3 at z = 1.
+const Cylinder<double> kRim{{0, 0, 0}, {0, 0, 1}, 3, 2};
+
+TEST(Clearance, VertexAgainstRim) {
+    // (6, 0, 5) is 5 from the rim point (3, 0, 1): (6 − 3)² + (5 − 1)² = 25.
+    expect_distance(AlignedBox<double>{{6, 0, 5}, {7, 1, 6}}, kRim, 5.0);
+    // The same below the bottom rim (z = −1).
+    expect_distance(AlignedBox<double>{{6, 0, -6}, {7, 1, -5}}, kRim, 5.0);
+}
+
+TEST(Clearance, VertexAgainstRimAtAnAzimuth) {
+    // r = 5; the vertex (6, 8, 13) has ρ = 10, height 12 over the rim plane z = 1: distance 13. The box
+    // extends radially (3, 4, 0), tangentially (−4, 3, 0) and up, so that vertex is its nearest point.
+    const Cylinder<double> c{{0, 0, 0}, {0, 0, 1}, 5, 2};
+    const Parallelepiped<double> box{{5.5, 11.5, 13.5}, {Vec3<double>{3, 4, 0}, {-4, 3, 0}, {0, 0, 1}}, {0.5, 0.5, 0.5}};
+    expect_distance(box, c, 13.0);
+}
+
+TEST(Clearance, EdgeAgainstRim) {
+    // The edge x = 6, z = 5 (y from −1 to 1) comes nearest the rim at its middle (6, 0, 5): distance 5.
+    expect_distance(AlignedBox<double>{{6, -1, 5}, {7, 1, 6}}, kRim, 5.0);
+}
+
+TEST(Clearance, EdgeAgainstRimAtAnAzimuth) {
+    // r = 5: the edge (6, 8, 13) + s·(−4, 3, 0), |s| ≤ 1/2, has ρ² = 100 + 25s² at height 12 over the rim
+    // plane: nearest the rim at its middle, distance 13.
+    const Cylinder<double> c{{0, 0, 0}, {0, 0, 1}, 5, 2};
+    const Parallelepiped<double> box{{7.5, 10, 13.5}, {Vec3<double>{3, 4, 0}, {-4, 3, 0}, {0, 0, 1}}, {0.5, 0.5, 0.5}};
+    expect_distance(box, c, 13.0);
+}
+
+TEST(Clearance, FaceAgainstRim) {
+    // The plane 3x + 4z = 38 is 5 from the rim point (3, 0, 1) (3·3 + 4·1 = 13, (38 − 13)/5 = 5), the
+    // farthest point of the cylinder towards it; the foot (6, 0, 5) is the centre of the box's face.
+    const Parallelepiped<double> box{{7.5, 0, 7}, {Vec3<double>{4, 0, -3}, {0, 1, 0}, {3, 0, 4}}, {0.5, 0.5, 0.5}};
+    expect_distance(box, kRim, 5.0);
+}
+
+TEST(Clearance, SegmentAndDiskCylinders) {
+    // r = 0: the segment from (0,0,−1) to (0,0,1); the vertex (3, 0, 5) is 5 from its end.
+    const Cylinder<double> segment{{0, 0, 0}, {0, 0, 1}, 0, 2};
+    expect_distance(AlignedBox<double>{{3, 0, 5}, {4, 1, 6}}, segment, 5.0);
+    // h = 0: the disk of radius 3 at z = 0; the vertex (6, 0, 4) is 5 from its rim point (3, 0, 0).
+    const Cylinder<double> disk{{0, 0, 0}, {0, 0, 1}, 3, 0};
+    expect_distance(AlignedBox<double>{{6, 0, 4}, {7, 1, 5}}, disk, 5.0);
+}
+
+TEST(Clearance, FloatInputs) {
+    const AlignedBox<float> box{{6, 0, 5}, {7, 1, 6}};
+    const Cylinder<float> c{{0, 0, 0}, {0, 0, 1}, 3, 2};
+    EXPECT_TRUE(within_distance(box, c, 5.0f));
+    EXPECT_FALSE(within_distance(box, c, std::nextafter(5.0f, 0.0f)));
+}
+
+TEST(Clearance, RefusesABadMargin) {
+    const AlignedBox<double> box{{2, -1, -1}, {3, 1, 1}};
+    auto message = [&](double m) {
+        try {
+            (void)within_distance(box, kUnit, m);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(message(-1.0), "margin: is negative");
+    EXPECT_EQ(message(std::nan("")), "margin: is NaN");
+    EXPECT_EQ(message(INFINITY), "margin: is +Inf");
+    EXPECT_EQ(message(-0.0), "no error");
+    EXPECT_TRUE(within_distance(box, kUnit, 1e300));
+    EXPECT_TRUE(within_distance(box, kUnit, 0x1.fffffffffffffp1023));
+}
+
+// Random pairs at random margins (0 to 2^±20 of the shapes, and subnormal): margin 0 is intersects(),
+// and the answer never turns from within to not within as the margin grows.
+TEST(Clearance, RandomPairsMarginZeroAndMonotone) {
+    constexpr std::uint64_t seed = 0xc1ea0001;
+    CaseGenerator gen(seed);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int within_count = 0;
+    for (int i = 0; i < 300; ++i) {
+        const Case c = gen.next();
+        SCOPED_TRACE(describe(c));
+        const bool touches = with_box(c, [](const auto& box, const Cylinder<double>& cyl) { return intersects(box, cyl); });
+        EXPECT_EQ(with_box(c, [](const auto& box, const Cylinder<double>& cyl) { return within_distance(box, cyl, 0.0); }),
+                  touches);
+        bool previous = touches;
+        for (double m : {0x1p-1074, std::ldexp(unit(rng), -20), unit(rng), std::ldexp(unit(rng), 20)}) {
+            const double scaled = m * (c.cylinder.radius + c.cylinder.height + 1e-300);
+            const bool w =
+                with_box(c, [&](const auto& box, const Cylinder<double>& cyl) { return within_distance(box, cyl, scaled); });
+            EXPECT_TRUE(!previous || w) << "margin " << hex(scaled);
+            previous = w;
+            within_count += w;
+        }
+    }
+    EXPECT_GT(within_count, 100);
+}
+
+}  // namespace
+}  // namespace boxcyl
