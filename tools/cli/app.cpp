@@ -28,8 +28,11 @@ namespace {
 
 constexpr const char* help_body = R"(INPUT
   JSON Lines (UTF-8): one query per line, a JSON object
-    {"id": ID, "box": BOX, "cylinder": CYLINDER}
+    {"id": ID, "box": BOX, "cylinder": CYLINDER, "margin": M}
   ID        optional; a string or a number, echoed back unchanged as the first key
+  M         optional; a number >= 0: the question becomes "does the box come within
+            distance M of the cylinder?" (M = 0: do they touch?), answered exactly
+            whatever --algorithm and --arithmetic say
   BOX       an aligned box   {"min": [x,y,z], "max": [x,y,z]}                 (min <= max)
             or an oriented box
                              {"center": [x,y,z], "axes": [[x,y,z],[x,y,z],[x,y,z]],

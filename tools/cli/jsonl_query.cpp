@@ -482,9 +482,14 @@ std::string read_vec3_field(const json& obj, const char* key, const std::string&
 ParsedLine parse_line(std::string_view text, std::size_t line_number) {
     Query q;
     const ObjectLine o = parse_object_line(text, line_number, [&q](const json& root) -> std::string {
-        if (auto e = check_keys(root, "", {"id", "box", "cylinder"}); !e.empty()) return e;
+        if (auto e = check_keys(root, "", {"id", "box", "cylinder", "margin"}); !e.empty()) return e;
         if (auto e = read_box(root, q.box); !e.empty()) return e;
         if (auto e = read_cylinder(root, q.cylinder); !e.empty()) return e;
+        if (root.contains("margin")) {
+            double m = 0;
+            if (auto e = read_number(root, "margin", "margin", m); !e.empty()) return e;
+            q.margin = m;
+        }
         const Validity vb = std::visit([](const auto& b) { return validate(b); }, q.box);
         if (!vb.ok()) {
             // Axes off orthonormal are a valid parallelepiped: say how to ask for one.
@@ -494,6 +499,8 @@ ParsedLine parse_line(std::string_view text, std::size_t line_number) {
             return vb.message();
         }
         if (const Validity vc = validate(q.cylinder); !vc.ok()) return vc.message();
+        if (q.margin)
+            if (const Validity vm = validate_margin(*q.margin); !vm.ok()) return vm.message();
         return {};
     });
     ParsedLine r;

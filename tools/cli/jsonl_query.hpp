@@ -31,6 +31,7 @@ using AnyBox = std::variant<AlignedBox<double>, OrientedBox<double>, Parallelepi
 struct Query {
     AnyBox box;
     Cylinder<double> cylinder;
+    std::optional<double> margin;  // "margin": within that distance (always answered exactly)
 };
 
 // The outcome of reading one input line.
@@ -68,7 +69,8 @@ std::string check_keys_field(const nlohmann::json& obj, const std::string& field
 // underflows to zero, ...). When `opt.rounds_to_float`, says which field breaks; otherwise ok().
 Validity check_arithmetic(const Query& q, const RunOptions& opt);
 
-// The one place the tool asks the library (boxcyl::intersects). In float or double arithmetic the
+// The one place the tool asks the library (boxcyl::intersects; boxcyl::within_distance for a line with a
+// margin, exact whatever the options). In float or double arithmetic the
 // linear-inequalities and LCP methods take a box's axes as an orthonormal frame; a box whose axes are
 // further from orthonormal than that arithmetic's rounding (needs_hull_for_frame: |Ai·Aj − δij| above
 // 2^-49 in double, 2^-20 in float) is answered by the convex-hull method instead, in the same

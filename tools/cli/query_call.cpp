@@ -2,6 +2,7 @@
 // not depend on which algorithms exist).
 #include <array>    // box axes
 #include <cmath>    // std::fabs
+#include <stdexcept>  // a margin without the exact backend
 #include <variant>  // std::visit over the box kinds
 
 #if defined(BOXCYL_CLI_EXACT)
@@ -47,6 +48,13 @@ bool needs_hull_for_frame(const Query& q, const QueryOptions& opt) {
 }
 
 bool run_query(const Query& q, const QueryOptions& opt) {
+    if (q.margin) {
+#if defined(BOXCYL_CLI_EXACT)
+        return std::visit([&](const auto& box) { return boxcyl::within_distance(box, q.cylinder, *q.margin); }, q.box);
+#else
+        throw std::invalid_argument("margin: needs the exact backend (this boxcyl was built without GMP/FLINT)");
+#endif
+    }
     // The linear-inequalities and LCP methods work in the box's frame, taking its axes as orthonormal:
     // in rounded arithmetic, axes further from orthonormal than rounding (an oriented box's axes may be
     // 1e-4 off) would answer for a different box. The convex-hull method takes the parallelepiped the

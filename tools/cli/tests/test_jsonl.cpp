@@ -338,6 +338,29 @@ TEST(JsonlAnswer, AnswersWithTheChosenAlgorithm) {
         }
 }
 
+// "margin": within that distance, exactly whatever the options; a bad margin names the field.
+TEST(JsonlAnswer, MarginIsTheExactClearanceQuery) {
+    // The box's corner (6, 0, 5) is exactly 5 from the rim point (3, 0, 1).
+    const std::string shapes = R"("box": {"min": [6, 0, 5], "max": [7, 1, 6]}, )"
+                               R"("cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 3, "height": 2})";
+    for (const char* ari : {"exact", "float", "double"}) {
+        const RunOptions opt = make_run_options("inequalities", ari);
+        EXPECT_EQ(answer_line("{\"id\": 1, " + shapes + ", \"margin\": 5}", 1, opt).text, R"({"id": 1, "intersect": true})")
+            << ari;
+        EXPECT_EQ(answer_line("{\"id\": 2, " + shapes + ", \"margin\": 4.999999999999999}", 2, opt).text,
+                  R"({"id": 2, "intersect": false})")
+            << ari;
+        EXPECT_EQ(answer_line("{\"id\": 3, " + shapes + ", \"margin\": 0}", 3, opt).text, R"({"id": 3, "intersect": false})")
+            << ari;
+    }
+    const RunOptions opt = make_run_options("inequalities", "exact");
+    EXPECT_EQ(answer_line("{" + shapes + ", \"margin\": -1}", 4, opt).text, R"({"error": "line 4: margin: is negative"})");
+    EXPECT_EQ(answer_line("{" + shapes + ", \"margin\": \"1\"}", 5, opt).text,
+              R"({"error": "line 5: margin: expected a number"})");
+    EXPECT_EQ(answer_line("{" + shapes + ", \"margin\": 1e999}", 6, opt).text,
+              R"({"error": "line 6: margin: out of double range"})");
+}
+
 TEST(JsonlOptions, TableMapping) {
     const RunOptions d = make_run_options(default_algorithm, default_arithmetic);
     EXPECT_EQ(d.query.algorithm, Algorithm::inequalities);
@@ -794,14 +817,14 @@ TEST(JsonlFrames, RotationsComputedInDoubleKeepTheChosenMethod) {
                                      Vec3<double>{2 * (a * b - w * c), 1 - 2 * (a * a + c * c), 2 * (b * c + w * a)},
                                      Vec3<double>{2 * (a * c + w * b), 2 * (b * c - w * a), 1 - 2 * (a * a + b * b)}},
                                     {1, 1, 1}},
-                Cylinder<double>{{0, 0, 0}, {0, 0, 1}, 1, 1}};
+                Cylinder<double>{{0, 0, 0}, {0, 0, 1}, 1, 1}, std::nullopt};
         EXPECT_FALSE(needs_hull_for_frame(q, d.query)) << k;
         EXPECT_FALSE(needs_hull_for_frame(q, f.query)) << k;
         q.box = Parallelepiped<double>{std::get<OrientedBox<double>>(q.box).center, std::get<OrientedBox<double>>(q.box).axes,
                                        {1, 1, 1}};
         EXPECT_FALSE(needs_hull_for_frame(q, d.query)) << k;
     }
-    const Query aligned{AlignedBox<double>{{0, 0, 0}, {1, 1, 1}}, Cylinder<double>{{0, 0, 0}, {0, 0, 1}, 1, 1}};
+    const Query aligned{AlignedBox<double>{{0, 0, 0}, {1, 1, 1}}, Cylinder<double>{{0, 0, 0}, {0, 0, 1}, 1, 1}, std::nullopt};
     EXPECT_FALSE(needs_hull_for_frame(aligned, d.query));
 }
 
