@@ -82,6 +82,20 @@ TEST(ClearanceByHand, EdgeVsRim) {
     expect_distance(b, along_z(3, 2), 5.0);
 }
 
+// The nearest point is inside an edge that neither is ⊥ u nor lies in a facet whose plane holds the
+// plane's own nearest point: only the edge's own candidates find it.
+TEST(ClearanceByHand, SkewEdgeOnly) {
+    // Rim: the edge (6, 0, 5) + s(4, 5, −3) lies in the tangent plane 3x + 4z = 38 (gap 5 from the
+    // cylinder r = 3, h = 2); the box (6, 0, 5) + s·v + α(7, 0, 1) + β(−1, 0, 7), α, β ∈ [0, 1], lies
+    // beyond that plane (3·7 + 4·1 > 0, 3·(−1) + 4·7 > 0) and touches it only along the edge.
+    P rim{V{9, 0, 9}, {V{4, 5, -3}, V{7, 0, 1}, V{-1, 0, 7}}, V{1, Rational(1, 2), Rational(1, 2)}};
+    expect_distance(rim, along_z(3, 2), 5.0);
+    // Side: the edge (2, s, s) with the box (2, 0, 0) + s(0, 1, 1) + α(1, 1, −1) + β(1, −1, 1), α, β ∈ [0, 1]:
+    // every point has x ≥ 2 (so ρ ≥ 2), and x = 2, y = 0 only at (2, 0, 0): distance 1 from r = 1, h = 2.
+    P side{V{3, 0, 0}, {V{0, 1, 1}, V{1, 1, -1}, V{1, -1, 1}}, V{1, Rational(1, 2), Rational(1, 2)}};
+    expect_distance(side, along_z(1, 2), 1.0);
+}
+
 TEST(ClearanceByHand, TiltedFaceVsRim) {
     // The plane 3x + 4z = 38 is tangent to the distance-5 offset of the rim at (6, 0, 5) (foot (3, 0, 1));
     // a box whose facet lies in it, with (6, 0, 5) inside the facet, and the box beyond it.
