@@ -199,13 +199,27 @@ void edge_candidates(const V& y0, const V& a, const V& D, const Consts& k, Verdi
     // The point nearest the axis line (side region, and cap region when the edge is ⊥ u).
     const V p0 = project_perp(y0, D, k.d), p1 = project_perp(a, D, k.d);
     const Rational pp = dot(p1, p1);
+    Rational lam_near = 0;  // the parameter in [−1, 1] of the edge point nearest the axis line
     if (sgn(pp) != 0) {
         const Rational lam = -dot(p0, p1) / pp;
         if (abs(lam) <= 1) out.add(sign_at_point<Rational>(y0, av, {lam}, Rational(1), D, k));
         if (out.done()) return;
+        lam_near = lam > 1 ? Rational(1) : (lam < -1 ? Rational(-1) : lam);
+    }
+    const Rational T0 = dot(D, y0), T1 = dot(D, a);
+    // Pruning (exact, a shortcut only): the root finding is skipped when every point of the edge has F > v,
+    // shown by ρ ≥ ρ_min > r + √v or by |t| ≥ t_min > H + √v (F ≥ max(ρ − r, 0)², F ≥ max(|t| − H, 0)²).
+    {
+        const V pn = p0 + lam_near * p1;
+        const Rational q_min = dot(pn, pn);  // min ρ² over the edge
+        if (sign_minus_sqrt<Rational>(q_min - k.r * k.r - k.v, 4 * k.r * k.r * k.v) > 0) return;
+        const Rational T1abs = abs(T1);
+        const Rational Tabs = sgn(T0) > 0 ? Rational(T0 - T1abs) : Rational(-T0 - T1abs);  // min |T| if > 0
+        if (sgn(Tabs) > 0 && Tabs * Tabs > k.H * k.H * k.d &&
+            sign_minus_sqrt<Rational>(Tabs * Tabs / k.d + k.H * k.H - k.v, 4 * k.H * k.H * Tabs * Tabs / k.d) > 0)
+            return;
     }
     // Rim-stationary points: real roots of A² − d·B² (both rims), see the header.
-    const Rational T0 = dot(D, y0), T1 = dot(D, a);
     const Poly T{T0, T1};
     const Poly Y2{dot(y0, y0), 2 * dot(y0, a), dot(a, a)};
     const Poly q = padd(Y2, pscale(pmul(T, T), -1 / k.d));
