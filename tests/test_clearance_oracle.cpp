@@ -1,7 +1,7 @@
-// The clearance oracle (tests/support/clearance_oracle.hpp) on constructions whose distance is known by
+// The clearance oracle (tests/clearance/clearance_oracle.hpp) on constructions whose distance is known by
 // hand, exactly at the margin and one double ulp below it, and on random cases against the m = 0
 // oracle, monotonicity in m, and sampled points of the box.
-#include "support/clearance_oracle.hpp"
+#include "clearance/clearance_oracle.hpp"
 
 #include <gtest/gtest.h>
 

@@ -35,6 +35,8 @@
 //      checked first. Candidates are rational, biquadratic (a + b√d + c√N + e√(dN), signs by nested
 //      squaring), or polynomials in an algebraic root λ (sign: exactly 0 iff the minimal polynomial of λ
 //      divides it; otherwise Arb interval evaluation at rising precision, which must terminate).
+//  (e) Shortcut: an edge whose points all have F > m² (exact rational bounds on min ρ and min |t| over
+//      it) skips its root finding; it could not change the answer.
 // Nothing is rounded: the only floating point is Arb's rigorous ball arithmetic, used only to read the
 // sign of a quantity already proven non-zero. It shares no code with the production query and is
 // different in kind from its decomposition (fat cylinder, tall cylinder, rim tori).
@@ -44,6 +46,9 @@
 // algebraic numbers with their minimal polynomials and certified enclosures — exactly what the
 // degree-8 edge equation needs — and nothing hand-rolled finds roots. CGAL's CORE::Expr (the brief's
 // fallback) was not needed. Antic (libantic-dev) is needed only by Calcium's ca.h, not used here.
+// Calcium 0.4.1's headers are valid C but not C++ (implicit void* conversions in inline functions), so
+// the calls live in a small C file, clearance_qqbar.c. These files sit in tests/clearance/, not
+// tests/support/, so that they are not among the sources the recorded long runs depend on.
 #pragma once
 
 #include "boxcyl/geometry/cylinder.hpp"

@@ -1,7 +1,7 @@
 // The clearance oracle (see clearance_oracle.hpp for the method and why it is exact).
-#include "support/clearance_oracle.hpp"
+#include "clearance/clearance_oracle.hpp"
 
-#include "support/clearance_qqbar.h"  // real roots and signs at them (Calcium qqbar, behind a C shim)
+#include "clearance/clearance_qqbar.h"  // real roots and signs at them (Calcium qqbar, behind a C shim)
 
 #include <array>      // face vectors
 #include <stdexcept>  // std::invalid_argument
