@@ -1,0 +1,162 @@
+// The clearance query, boxcyl::within_distance, judged by the independent clearance oracle
+// (tests/clearance/: exact algebraic numbers, a different method) on
+//   - random pairs of every generator profile (mixed, degenerate, uniform, georeferenced, magnitudes) at
+//     random margins from subnormal to 2^20 times the shapes;
+//   - the same pairs at their flip margin: the least double m the query says is within, and the double
+//     below it — the distance lies between them, so both are at-margin queries one ulp apart;
+//   - a lattice of small integer shapes (aligned boxes and parallelepipeds with integer axes, dependent
+//     ones too; integer axis directions of any length) at margins k/2 and their one-ulp neighbours, where
+//     the distance often equals the margin exactly.
+// A disagreement prints the case as C++ to paste into a regression test.
+#include <gtest/gtest.h>
+
+#include <chrono>   // slow cases reported
+#include <cmath>    // std::nextafter, std::ldexp
+#include <cstdlib>  // std::getenv
+#include <cstdint>  // seeds, bit patterns
+#include <cstdio>   // std::printf
+#include <cstring>  // std::memcpy
+#include <random>   // fixed-seed generators
+#include <string>   // describe()
+
+#include "boxcyl/clearance.hpp"
+#include "clearance/clearance_oracle.hpp"
+#include "support/cases.hpp"
+
+namespace boxcyl {
+namespace {
+
+using namespace boxcyl::testing;
+
+Parallelepiped<Rational> exact_box(const Case& c) {
+    const OrientedBox<Rational> o = c.kind == BoxKind::aligned    ? as_oriented_box(to_exact(c.aligned))
+                                    : c.kind == BoxKind::oriented ? to_exact(c.oriented)
+                                                                  : as_oriented_box(to_exact(c.canonical));
+    return {o.center, o.axes, o.extents};
+}
+
+bool judged(const Case& c, double m) { return clearance_oracle::within(exact_box(c), to_exact(c.cylinder), to_rational(m)); }
+bool answered(const Case& c, double m) {
+    return with_box(c, [m](const auto& box, const Cylinder<double>& cyl) { return within_distance(box, cyl, m); });
+}
+
+// The least double m ≥ 0 with answered(c, m), by bisection on the doubles' order (answers are monotone).
+double flip_margin(const Case& c) {
+    if (answered(c, 0.0)) return 0.0;
+    double hi = 1.0;
+    while (!answered(c, hi)) hi *= 4;  // ends: a finite margin covers any pair of finite shapes
+    std::int64_t lo_bits = 0;         // answered(0) is false
+    std::int64_t hi_bits = ordered_bits(hi);
+    while (hi_bits - lo_bits > 1) {
+        const std::int64_t mid = lo_bits + (hi_bits - lo_bits) / 2;
+        (answered(c, from_ordered_bits(mid)) ? hi_bits : lo_bits) = mid;
+    }
+    return from_ordered_bits(hi_bits);
+}
+
+void expect_agreement(const Case& c, double m, int& disagreements) {
+    const bool a = answered(c, m);
+    const bool j = judged(c, m);
+    if (a != j && ++disagreements <= 5)
+        ADD_FAILURE() << "within_distance " << a << ", oracle " << j << " at margin " << hex(m) << " for\n"
+                      << describe(c);
+}
+
+double size_of(const Case& c) { return c.cylinder.radius + c.cylinder.height + 0x1p-1000; }
+
+TEST(ClearanceJudged, RandomPairsAtRandomMarginsEveryProfile) {
+    int disagreements = 0;
+    long checked = 0;
+    for (Profile p : {Profile::mixed, Profile::degenerate, Profile::uniform, Profile::georeferenced, Profile::magnitudes}) {
+        const std::uint64_t seed = 0xc1ea0100 + static_cast<std::uint64_t>(p);
+        CaseGenerator gen(seed, p);
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        const int count = std::getenv("BOXCYL_JUDGED_COUNT") ? std::atoi(std::getenv("BOXCYL_JUDGED_COUNT")) : 120;
+        for (int i = 0; i < count; ++i) {
+            const Case c = gen.next();
+            const auto t0 = std::chrono::steady_clock::now();
+            if (std::getenv("BOXCYL_JUDGED_TRACE")) std::fprintf(stderr, "profile %d case %d: %s\n", static_cast<int>(p), i, describe(c).c_str());
+            for (double f : {0x1p-1074, std::ldexp(unit(rng), -20), unit(rng), 4 * unit(rng), std::ldexp(unit(rng), 20)}) {
+                expect_agreement(c, f == 0x1p-1074 ? f : f * size_of(c), disagreements);
+                ++checked;
+            }
+            const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            if (ms > 200) std::printf("slow (%.0f ms) profile %d case %d\n", ms, static_cast<int>(p), i);
+        }
+    }
+    std::printf("random pairs: %ld queries judged, %d disagreements\n", checked, disagreements);
+    EXPECT_EQ(disagreements, 0);
+}
+
+TEST(ClearanceJudged, FlipMarginsAreOneUlpApartAtTheDistance) {
+    int disagreements = 0;
+    long pairs = 0;
+    for (Profile p : {Profile::mixed, Profile::uniform, Profile::georeferenced, Profile::magnitudes}) {
+        CaseGenerator gen(0xc1ea0200 + static_cast<std::uint64_t>(p), p);
+        for (int i = 0; i < 40; ++i) {
+            const Case c = gen.next();
+            const double m = flip_margin(c);
+            if (m == 0.0) continue;  // they touch: margin 0 is covered above
+            expect_agreement(c, m, disagreements);
+            expect_agreement(c, std::nextafter(m, 0.0), disagreements);
+            ++pairs;
+        }
+    }
+    std::printf("flip margins: %ld pairs at one ulp, %d disagreements\n", pairs, disagreements);
+    EXPECT_GT(pairs, 100);
+    EXPECT_EQ(disagreements, 0);
+}
+
+TEST(ClearanceJudged, IntegerLatticeAtHalfIntegerMarginsAndNeighbours) {
+    std::mt19937_64 rng(0xc1ea0300);
+    auto integer = [&](int lo, int hi) { return static_cast<double>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
+    int disagreements = 0;
+    long checked = 0;
+    long exactly_at_margin = 0;
+    for (int i = 0; i < 250; ++i) {
+        Case c;
+        c.cylinder = {{integer(-3, 3), integer(-3, 3), integer(-3, 3)}, {integer(-2, 2), integer(-2, 2), integer(-2, 2)},
+                      integer(0, 3), 2 * integer(0, 3)};
+        if (c.cylinder.axis == Vec3<double>{0, 0, 0}) c.cylinder.axis = {0, 0, 1};
+        if (i % 2 == 0) {
+            c.kind = BoxKind::aligned;
+            for (int k = 0; k < 3; ++k) {
+                const double a = integer(-7, 7), b = integer(-7, 7);
+                c.aligned.min[k] = std::min(a, b);
+                c.aligned.max[k] = std::max(a, b);
+            }
+        } else {
+            // Integer axes of any length and angle (dependent ones too), as an oriented case's data is
+            // judged as the parallelepiped it spans; the query gets the parallelepiped itself.
+            c.kind = BoxKind::oriented;
+            c.oriented.center = {integer(-6, 6), integer(-6, 6), integer(-6, 6)};
+            for (auto& axis : c.oriented.axes) axis = {integer(-2, 2), integer(-2, 2), integer(-2, 2)};
+            c.oriented.extents = {integer(0, 2) / 2, integer(0, 2) / 2, integer(0, 2) / 2};
+        }
+        const Parallelepiped<Rational> box = exact_box(c);
+        const Cylinder<Rational> cyl = to_exact(c.cylinder);
+        for (int k = 0; k <= 12; ++k) {
+            const double m = k / 2.0;
+            for (double mm : {m, std::nextafter(m, 0.0), std::nextafter(m, 8.0)}) {
+                const bool j = clearance_oracle::within(box, cyl, to_rational(mm));
+                const bool a = c.kind == BoxKind::aligned
+                                   ? within_distance(c.aligned, c.cylinder, mm)
+                                   : within_distance(Parallelepiped<double>{c.oriented.center, c.oriented.axes, c.oriented.extents},
+                                                     c.cylinder, mm);
+                ++checked;
+                if (a != j && ++disagreements <= 5)
+                    ADD_FAILURE() << "within_distance " << a << ", oracle " << j << " at margin " << hex(mm) << " for\n"
+                                  << describe(c) << (c.kind == BoxKind::oriented ? "\n(box as a Parallelepiped)" : "");
+            }
+            if (k > 0 && clearance_oracle::compare_squared_distance(box, cyl, Rational(Rational(k * k) / 4)) == 0) ++exactly_at_margin;
+        }
+    }
+    std::printf("lattice: %ld queries judged, %ld exactly at a half-integer margin, %d disagreements\n", checked,
+                exactly_at_margin, disagreements);
+    EXPECT_GT(exactly_at_margin, 50);
+    EXPECT_EQ(disagreements, 0);
+}
+
+}  // namespace
+}  // namespace boxcyl
