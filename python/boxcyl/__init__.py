@@ -415,8 +415,9 @@ def _a(noun):
     return ("an " if noun[0] in "AEIOU" else "a ") + noun
 
 
-def intersects(box, cylinder, *, algorithm=Algorithm.inequalities, arithmetic=Arithmetic.filtered):
-    """Whether the closed box and the closed cylinder share a point (touching counts).
+def intersects(box, cylinder, *, algorithm=Algorithm.inequalities, arithmetic=Arithmetic.filtered, margin=None):
+    """Whether the closed box and the closed cylinder share a point (touching counts), or with
+    ``margin``, whether the box comes within that distance of the cylinder.
 
     Parameters
     ----------
@@ -430,6 +431,10 @@ def intersects(box, cylinder, *, algorithm=Algorithm.inequalities, arithmetic=Ar
         ``"filtered"`` (default: the exact answer, with a fast certified filter), ``"exact"``, or the
         plain rounded ``"float64"`` / ``"float32"``, which may misjudge inputs within a tiny gap of
         touching.
+    margin : float, optional
+        A distance >= 0: the question becomes ``dist(box, cylinder) <= margin`` (the box meets the
+        cylinder rounded by the margin), answered exactly whatever ``algorithm`` and ``arithmetic``
+        say; ``margin=0`` asks whether they touch.
 
     Returns
     -------
@@ -449,7 +454,10 @@ def intersects(box, cylinder, *, algorithm=Algorithm.inequalities, arithmetic=Ar
                          "(for arrays use intersects_aligned / intersects_oriented / intersects_parallelepiped)")
     if not isinstance(cylinder, _core.Cylinder):
         raise ValueError(f"cylinder: expected a Cylinder, got {_type_name(cylinder)}")
-    return _core.intersects(box, cylinder, *_options(algorithm, arithmetic))
+    options = _options(algorithm, arithmetic)
+    if margin is not None:
+        return _core.within_distance(box, cylinder, _scalar("margin", margin))
+    return _core.intersects(box, cylinder, *options)
 
 
 # ---- Batch arguments: float64 arrays of shape (M, *tail), M = N or 1, never copied when float64. ---

@@ -4,6 +4,7 @@
 // queries, the batch API with its header kernel, the grid query — and the scalar exact default that
 // the AVX2 and AVX-512 kernels (src/batch) call (src/batch/pipeline.cpp's explicit instantiations).
 #include "boxcyl/batch.hpp"
+#include "boxcyl/clearance.hpp"
 #include "boxcyl/grid.hpp"
 #include "boxcyl/query.hpp"
 
@@ -52,6 +53,36 @@ bool intersects(const OrientedBox<double>& box, const Cylinder<double>& cyl, con
 bool intersects(const Parallelepiped<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt) {
     boxcyl::detail::require_valid(box, cyl);
     return boxcyl::detail::dispatch(box, cyl, opt);
+}
+
+// The clearance query calls intersects_unchecked and within_distance_unchecked: defined here, whichever
+// form (template or compiled declaration) a call resolves to.
+bool intersects_unchecked(const AlignedBox<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt) {
+    return boxcyl::detail::dispatch(box, cyl, opt);
+}
+bool intersects_unchecked(const OrientedBox<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt) {
+    return boxcyl::detail::dispatch(box, cyl, opt);
+}
+bool intersects_unchecked(const Parallelepiped<double>& box, const Cylinder<double>& cyl, const QueryOptions& opt) {
+    return boxcyl::detail::dispatch(box, cyl, opt);
+}
+bool within_distance_unchecked(const AlignedBox<double>& box, const Cylinder<double>& cyl, double margin) {
+    return boxcyl::within_distance_unchecked<AlignedBox<double>, double>(box, cyl, margin);
+}
+bool within_distance_unchecked(const OrientedBox<double>& box, const Cylinder<double>& cyl, double margin) {
+    return boxcyl::within_distance_unchecked<OrientedBox<double>, double>(box, cyl, margin);
+}
+bool within_distance_unchecked(const Parallelepiped<double>& box, const Cylinder<double>& cyl, double margin) {
+    return boxcyl::within_distance_unchecked<Parallelepiped<double>, double>(box, cyl, margin);
+}
+bool within_distance(const AlignedBox<double>& box, const Cylinder<double>& cyl, double margin) {
+    return boxcyl::within_distance<AlignedBox<double>, double>(box, cyl, margin);
+}
+bool within_distance(const OrientedBox<double>& box, const Cylinder<double>& cyl, double margin) {
+    return boxcyl::within_distance<OrientedBox<double>, double>(box, cyl, margin);
+}
+bool within_distance(const Parallelepiped<double>& box, const Cylinder<double>& cyl, double margin) {
+    return boxcyl::within_distance<Parallelepiped<double>, double>(box, cyl, margin);
 }
 
 void for_each_cell_erased(const Grid& g, const Cylinder<double>& c, CellCallback f, void* context, GridStats* stats) {

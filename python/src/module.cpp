@@ -32,10 +32,18 @@ bool query(const Box& box, const Cylinder& cyl, boxcyl::Algorithm algorithm, box
 }
 
 template <class Box>
+bool clearance(const Box& box, const Cylinder& cyl, double margin) {
+    require_fp_environment();
+    return boxcyl::within_distance(box, cyl, margin);
+}
+
+template <class Box>
 void def_intersects(py::module_& m) {
     m.def("intersects", &query<Box>, "box"_a, "cylinder"_a, "algorithm"_a = boxcyl::Algorithm::inequalities,
           "arithmetic"_a = boxcyl::Arithmetic::filtered, py::call_guard<py::gil_scoped_release>(),
           "intersects(box, cylinder, algorithm, arithmetic) -> bool, with the GIL released.");
+    m.def("within_distance", &clearance<Box>, "box"_a, "cylinder"_a, "margin"_a, py::call_guard<py::gil_scoped_release>(),
+          "within_distance(box, cylinder, margin) -> bool (exact), with the GIL released.");
 }
 
 // ---- The batch forms' arrays: float64, shape (M, *tail), M = N or 1; the package shapes them. ----

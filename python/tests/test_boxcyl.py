@@ -36,6 +36,25 @@ def test_touching_counts_and_one_ulp_away_does_not():
     assert boxcyl.intersects(unit_box(), side_cylinder(math.nextafter(3.0, 2.0))) is True
 
 
+def test_margin_is_the_exact_clearance_query():
+    # The box's corner (6, 0, 5) is exactly 5 from the rim point (3, 0, 1) of this cylinder.
+    box = boxcyl.AlignedBox(min=(6, 0, 5), max=(7, 1, 6))
+    cyl = boxcyl.Cylinder(center=(0, 0, 0), axis=(0, 0, 1), radius=3, height=2)
+    assert boxcyl.intersects(box, cyl, margin=5)
+    assert not boxcyl.intersects(box, cyl, margin=math.nextafter(5.0, 0.0))
+    assert not boxcyl.intersects(box, cyl, margin=0)
+    assert boxcyl.intersects(box, cyl, margin=np.float32(5))
+    assert boxcyl.intersects(box, cyl, margin=5, arithmetic="float64")  # always exact
+    oriented = boxcyl.OrientedBox(center=(6.5, 0.5, 5.5), axes=np.eye(3), extents=(0.5, 0.5, 0.5))
+    assert boxcyl.intersects(oriented, cyl, margin=5)
+    with pytest.raises(ValueError, match="margin: is negative"):
+        boxcyl.intersects(box, cyl, margin=-1)
+    with pytest.raises(ValueError, match="margin"):
+        boxcyl.intersects(box, cyl, margin=float("nan"))
+    with pytest.raises(ValueError, match="margin"):
+        boxcyl.intersects(box, cyl, margin="5")
+
+
 def test_touching_the_end_disk():
     # Axis along x, end disk at x = 1 + 0 exactly: center 1 + h/2 with h = 2.
     cyl = boxcyl.Cylinder(center=(2, 0.5, -0.25), axis=(7, 0, 0), radius=0.5, height=2)
