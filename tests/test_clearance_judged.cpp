@@ -72,7 +72,7 @@ TEST(ClearanceJudged, RandomPairsAtRandomMarginsEveryProfile) {
         CaseGenerator gen(seed, p);
         std::mt19937_64 rng(seed);
         std::uniform_real_distribution<double> unit(0.0, 1.0);
-        const int count = std::getenv("BOXCYL_JUDGED_COUNT") ? std::atoi(std::getenv("BOXCYL_JUDGED_COUNT")) : 120;
+        const int count = std::getenv("BOXCYL_JUDGED_COUNT") ? std::atoi(std::getenv("BOXCYL_JUDGED_COUNT")) : 60;
         for (int i = 0; i < count; ++i) {
             const Case c = gen.next();
             const auto t0 = std::chrono::steady_clock::now();

@@ -15,6 +15,7 @@
 #include <limits>
 #include <random>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -362,6 +363,31 @@ TEST_P(GridSnapped, MatchesBruteForce) {
     }
     // The generator is meant to produce mostly hits, including partial ones.
     EXPECT_GE(hits, kCases / 2u) << "seed " << seed;
+}
+
+// cells_within against every cell asked within_distance, on snapped grids (where many cells lie at an
+// exact distance from the cylinder) at margins of a fraction to a few cells, and a bad margin refused.
+TEST(GridWithin, MatchesEveryCellAsked) {
+    SnappedGenerator gen(0x6d1d0100);
+    std::mt19937_64 rng(0x6d1d0100);
+    std::size_t grown = 0;
+    for (int n = 0; n < 60; ++n) {
+        const Grid g = gen.grid(8);
+        const Cylinder<double> c = gen.cylinder(g);
+        const double margin = g.cell_size[0] * std::array<double, 4>{0.5, 1, 2.5, 0x1p-30}[rng() % 4];
+        SCOPED_TRACE("case " + std::to_string(n) + " margin " + std::to_string(margin) + "\n  " + describe(g, c));
+        std::vector<CellIndex> want;
+        for (std::int64_t i = 0; i < g.counts[0]; ++i)
+            for (std::int64_t j = 0; j < g.counts[1]; ++j)
+                for (std::int64_t k = 0; k < g.counts[2]; ++k)
+                    if (within_distance(cell_box(g, {i, j, k}), c, margin)) want.push_back({i, j, k});
+        EXPECT_EQ(cells_within(g, c, margin), want);
+        EXPECT_EQ(cells_within(g, c, 0.0), cells(g, c));
+        grown += want.size() > cells(g, c).size();
+    }
+    EXPECT_GT(grown, 30u);
+    const Grid g{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}};
+    EXPECT_THROW(cells_within(g, Cylinder<double>{{0, 0, 0}, {0, 0, 1}, 1, 1}, -1.0), std::invalid_argument);
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, GridSnapped, ::testing::Values(0x6d1d0001u, 0x6d1d0002u, 0x6d1d0003u, 0x6d1d0004u));

@@ -92,6 +92,20 @@ void for_each_cell(const Grid& g, const Cylinder<double>& c, F&& f, GridStats* s
 // The cells of for_each_cell, in lexicographic order of (i, j, k).
 std::vector<CellIndex> cells(const Grid& g, const Cylinder<double>& c, GridStats* stats = nullptr);
 
+// The cells within distance `margin` of the cylinder (boxcyl/grid.hpp's for_each_cell_within; a bad
+// margin throws std::invalid_argument).
+void for_each_cell_within_erased(const Grid& g, const Cylinder<double>& c, double margin, CellCallback f,
+                                 void* context, GridStats* stats);
+template <class F>
+void for_each_cell_within(const Grid& g, const Cylinder<double>& c, double margin, F&& f, GridStats* stats = nullptr) {
+    using Fn = std::remove_reference_t<F>;
+    for_each_cell_within_erased(
+        g, c, margin,
+        [](void* context, std::int64_t i, std::int64_t j, std::int64_t k) { (*static_cast<Fn*>(context))(i, j, k); },
+        const_cast<void*>(static_cast<const void*>(&f)), stats);
+}
+std::vector<CellIndex> cells_within(const Grid& g, const Cylinder<double>& c, double margin, GridStats* stats = nullptr);
+
 }  // namespace compiled
 
 // ---- One cylinder, many boxes (boxcyl/batch.hpp). ----

@@ -48,6 +48,7 @@
 #include <cstdint>    // std::int64_t
 #include <limits>     // infinities, denorm_min
 #include <span>       // the batch API's columns
+#include <stdexcept>  // a bad margin
 #include <string>     // validation messages
 #include <type_traits>  // std::remove_reference_t
 #include <utility>    // std::forward
@@ -59,6 +60,7 @@
 #include "boxcyl/grid_types.hpp"
 #include "boxcyl/batch.hpp"
 #include "boxcyl/query.hpp"
+#include "boxcyl/clearance.hpp"  // for_each_cell_within
 #include "boxcyl/number/interval.hpp"
 #if defined(BOXCYL_HAS_EXACT)
 #include "boxcyl/number/rational.hpp"
@@ -357,6 +359,52 @@ void for_each_cell(const Grid& g, const Cylinder<double>& c, F&& f, GridStats* s
 inline std::vector<CellIndex> cells(const Grid& g, const Cylinder<double>& c, GridStats* stats = nullptr) {
     std::vector<CellIndex> out;
     for_each_cell(g, c, [&](std::int64_t i, std::int64_t j, std::int64_t k) { out.push_back({i, j, k}); }, stats);
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+namespace detail {
+// for_each_cell_within itself; named apart because the compiled library's sources see both forms of
+// the public calls.
+template <class F>
+void cells_within_walk(const Grid& g, const Cylinder<double>& c, double margin, F& f, GridStats* stats) {
+    if (!is_valid_margin(margin)) throw std::invalid_argument(validate_margin(margin).message());
+    GridStats local;
+    auto walk = [&](const Cylinder<double>& cylinder, auto& visit) {
+        detail::GridWalk<std::remove_reference_t<decltype(visit)>> w(g, cylinder, visit, stats ? *stats : local);
+        w.run();
+    };
+    if (margin == 0) return walk(c, f);
+    auto ask = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+        if (within_distance_unchecked(cell_box(g, {i, j, k}), c, margin)) f(i, j, k);
+    };
+    const detail::clearance::Probes p = detail::clearance::probes(c, margin);
+    if (p.valid[0]) return walk(p.probe[0].cylinder, ask);
+    // Sizes beyond the double range: every cell is a candidate.
+    for (std::int64_t i = 0; i < g.counts[0]; ++i)
+        for (std::int64_t j = 0; j < g.counts[1]; ++j)
+            for (std::int64_t k = 0; k < g.counts[2]; ++k) ask(i, j, k);
+}
+}  // namespace detail
+
+// Calls f(i, j, k) once for every cell of `g` within distance `margin` of the closed cylinder `c`:
+// exactly the cells for which within_distance(cell_box(g, cell), c, margin) holds (clearance.hpp).
+// The candidates are the cells of a cylinder that holds the rounded one (the grid query above, as
+// output-sensitive), each then asked; margin 0 is for_each_cell. Order as for_each_cell's; `stats`
+// counts the walk over those candidates (GridStats::cells: the candidates).
+// Preconditions: validate(g).ok() and validate(c).ok(); a margin that is negative, NaN or infinite
+// throws std::invalid_argument.
+template <class F>
+void for_each_cell_within(const Grid& g, const Cylinder<double>& c, double margin, F&& f, GridStats* stats = nullptr) {
+    detail::cells_within_walk(g, c, margin, f, stats);
+}
+
+// The cells of for_each_cell_within, in lexicographic order of (i, j, k).
+inline std::vector<CellIndex> cells_within(const Grid& g, const Cylinder<double>& c, double margin,
+                                           GridStats* stats = nullptr) {
+    std::vector<CellIndex> out;
+    auto keep = [&](std::int64_t i, std::int64_t j, std::int64_t k) { out.push_back({i, j, k}); };
+    detail::cells_within_walk(g, c, margin, keep, stats);
     std::sort(out.begin(), out.end());
     return out;
 }

@@ -692,8 +692,9 @@ def _counts(value):
     return tuple(int(x) for x in items)
 
 
-def grid_cells(origin, cell_size, counts, cylinder, *, max_cells=None):
-    """The cells of a regular axis-aligned grid that the cylinder intersects, exactly.
+def grid_cells(origin, cell_size, counts, cylinder, *, max_cells=None, margin=None):
+    """The cells of a regular axis-aligned grid that the cylinder intersects, exactly (or, with
+    ``margin``, the cells within that distance of it).
 
     Cell ``(i, j, k)``, ``0 <= i < counts[0]`` etc., is the closed box whose bounds along each axis
     are ``fma(n, cell_size, origin)`` — ``origin + n*cell_size`` rounded once to the nearest float64
@@ -712,6 +713,9 @@ def grid_cells(origin, cell_size, counts, cylinder, *, max_cells=None):
     cylinder : Cylinder
     max_cells : int or None, optional
         Refuse (``ValueError``) an answer of more cells than this, found without listing them all.
+    margin : float, optional
+        A distance >= 0: list the cells for which ``intersects(cell, cylinder, margin=margin)`` is
+        true (C++'s ``boxcyl::cells_within``), exactly.
 
     Returns
     -------
@@ -730,5 +734,6 @@ def grid_cells(origin, cell_size, counts, cylinder, *, max_cells=None):
         raise ValueError(f"max_cells: expected a non-negative integer or None; got {max_cells!r}")
     else:
         limit = min(int(max_cells), (1 << 63) - 1)
+    m = 0.0 if margin is None else _scalar("margin", margin)
     return _core._grid_cells(_vector("grid.origin", origin), _vector("grid.cell_size", cell_size), _counts(counts),
-                             cylinder, limit)
+                             cylinder, m, limit)

@@ -150,7 +150,7 @@ std::string intersects(const FrameFields<Parallelepiped>& boxes, const CylinderF
 
 // The cells (i, j, k) of `grid` that `cylinder` meets, sorted; at most max_cells of them (< 0: no
 // limit), or std::invalid_argument. Throws boxcyl::batch::Stopped once `stop` is requested.
-std::vector<boxcyl::CellIndex> grid_cells(const boxcyl::Grid& grid, const Cylinder& cylinder, std::int64_t max_cells,
+std::vector<boxcyl::CellIndex> grid_cells(const boxcyl::Grid& grid, const Cylinder& cylinder, double margin, std::int64_t max_cells,
                                           const std::stop_token& stop);
 
 }  // namespace boxcyl_python

@@ -36,6 +36,13 @@ void header_for_each_cell(const boxcyl::Grid& g, const Cylinder<double>& c,
     boxcyl::for_each_cell(g, c, [&](std::int64_t i, std::int64_t j, std::int64_t k) { f(context, i, j, k); }, stats);
 }
 
+void header_for_each_cell_within(const boxcyl::Grid& g, const Cylinder<double>& c, double margin,
+                                 void (*f)(void*, std::int64_t, std::int64_t, std::int64_t), void* context,
+                                 boxcyl::GridStats* stats) {
+    boxcyl::for_each_cell_within(g, c, margin, [&](std::int64_t i, std::int64_t j, std::int64_t k) { f(context, i, j, k); },
+                                 stats);
+}
+
 }  // namespace
 
 #include "boxcyl/compiled.hpp"
@@ -87,6 +94,10 @@ bool within_distance(const Parallelepiped<double>& box, const Cylinder<double>& 
 
 void for_each_cell_erased(const Grid& g, const Cylinder<double>& c, CellCallback f, void* context, GridStats* stats) {
     header_for_each_cell(g, c, f, context, stats);
+}
+void for_each_cell_within_erased(const Grid& g, const Cylinder<double>& c, double margin, CellCallback f, void* context,
+                                 GridStats* stats) {
+    header_for_each_cell_within(g, c, margin, f, context, stats);
 }
 
 }  // namespace boxcyl::compiled

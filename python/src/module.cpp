@@ -125,12 +125,12 @@ py::array_t<bool> intersects_frames(const py::array& box_center, const py::array
 // ---- The grid query: an (M, 3) int64 array of cell indices. ----
 
 py::array_t<std::int64_t> cells_of(const Array3& origin, const Array3& cell_size, const std::array<std::int64_t, 3>& counts,
-                                   const Cylinder& cylinder, std::int64_t max_cells) {
+                                   const Cylinder& cylinder, double margin, std::int64_t max_cells) {
     const boxcyl::Grid grid{vec(origin), vec(cell_size), counts};
     std::vector<boxcyl::CellIndex> cells;
     // A walk is short when the grid has few cells (a few exact queries each at most).
     const double total = static_cast<double>(counts[0]) * static_cast<double>(counts[1]) * static_cast<double>(counts[2]);
-    run_interruptibly(total <= 4096, [&](const std::stop_token& stop) { cells = grid_cells(grid, cylinder, max_cells, stop); });
+    run_interruptibly(total <= 4096, [&](const std::stop_token& stop) { cells = grid_cells(grid, cylinder, margin, max_cells, stop); });
     py::array_t<std::int64_t> out({static_cast<py::ssize_t>(cells.size()), py::ssize_t{3}});
     auto o = out.mutable_unchecked<2>();
     for (std::size_t n = 0; n < cells.size(); ++n)
@@ -172,8 +172,9 @@ PYBIND11_MODULE(_core, m) {
           "box_single"_a, "center"_a, "axis"_a, "radius"_a, "height"_a, "cylinder_single"_a, "algorithm"_a,
           "arithmetic"_a, "threads"_a);
 
-    m.def("_grid_cells", &cells_of, "origin"_a, "cell_size"_a, "counts"_a, "cylinder"_a, "max_cells"_a,
-          "The cells (i, j, k) of the grid that the cylinder meets, sorted; max_cells < 0: no limit.");
+    m.def("_grid_cells", &cells_of, "origin"_a, "cell_size"_a, "counts"_a, "cylinder"_a, "margin"_a, "max_cells"_a,
+          "The cells (i, j, k) of the grid within `margin` of the cylinder (0: that it meets), sorted; "
+          "max_cells < 0: no limit.");
 
     m.def("_hardware_threads", [] { return std::max(1u, std::thread::hardware_concurrency()); },
           "The number of threads `threads=None` (or 0) uses at most.");

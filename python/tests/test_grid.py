@@ -68,6 +68,23 @@ def test_touching_cells_count_and_the_order_is_lexicographic():
     assert [0, 1, 0] in cells and [3, 2, 0] in cells and [0, 0, 0] not in cells and len(cells) == 12
 
 
+def test_margin_lists_the_cells_within_it():
+    seg = boxcyl.Cylinder(center=(1, 2, 2), axis=(1, 0, 0), radius=0, height=1)
+    got = boxcyl.grid_cells((0, 0, 0), (1, 1, 1), (4, 4, 4), seg, margin=0.5)
+    assert got.tolist() == [[i, j, k] for i in range(3) for j in (1, 2) for k in (1, 2)]
+    # Every cell asked with intersects(margin=...) agrees, at a margin that reaches (1, 1, 1)'s corner
+    # region exactly: the cell [0, 1]³'s nearest point (1, 1, 1) is √2 from the segment's line y = z = 2.
+    for margin in (0.25, math.sqrt(2), math.nextafter(math.sqrt(2), 0), 1.5):
+        got = boxcyl.grid_cells((0, 0, 0), (1, 1, 1), (3, 4, 4), seg, margin=margin)
+        want = [[i, j, k] for i in range(3) for j in range(4) for k in range(4)
+                if boxcyl.intersects(boxcyl.AlignedBox(min=(i, j, k), max=(i + 1, j + 1, k + 1)), seg, margin=margin)]
+        assert got.tolist() == want, margin
+    assert np.array_equal(boxcyl.grid_cells((0, 0, 0), (1, 1, 1), (4, 4, 4), seg, margin=0),
+                          boxcyl.grid_cells((0, 0, 0), (1, 1, 1), (4, 4, 4), seg))
+    with raises("margin: is negative"):
+        boxcyl.grid_cells((0, 0, 0), (1, 1, 1), (4, 4, 4), seg, margin=-1)
+
+
 def test_empty_grids_and_limits():
     cyl = boxcyl.Cylinder(center=(0, 0, 0), axis=(0, 0, 1), radius=1, height=1)
     assert boxcyl.grid_cells((0, 0, 0), (1, 1, 1), (0, 5, 5), cyl).shape == (0, 3)

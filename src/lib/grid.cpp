@@ -18,6 +18,17 @@ std::vector<boxcyl::CellIndex> header_cells(const boxcyl::Grid& g, const boxcyl:
     return boxcyl::cells(g, c, stats);
 }
 
+void header_for_each_cell_within(const boxcyl::Grid& g, const boxcyl::Cylinder<double>& c, double margin, Callback f,
+                                 void* context, boxcyl::GridStats* stats) {
+    boxcyl::for_each_cell_within(
+        g, c, margin, [&](std::int64_t i, std::int64_t j, std::int64_t k) { f(context, i, j, k); }, stats);
+}
+
+std::vector<boxcyl::CellIndex> header_cells_within(const boxcyl::Grid& g, const boxcyl::Cylinder<double>& c,
+                                                   double margin, boxcyl::GridStats* stats) {
+    return boxcyl::cells_within(g, c, margin, stats);
+}
+
 }  // namespace
 
 #include "boxcyl/compiled.hpp"
@@ -31,6 +42,15 @@ void for_each_cell_erased(const Grid& g, const Cylinder<double>& c, CellCallback
 
 std::vector<CellIndex> cells(const Grid& g, const Cylinder<double>& c, GridStats* stats) {
     return header_cells(g, c, stats);
+}
+
+void for_each_cell_within_erased(const Grid& g, const Cylinder<double>& c, double margin, CellCallback f,
+                                 void* context, GridStats* stats) {
+    header_for_each_cell_within(g, c, margin, f, context, stats);
+}
+
+std::vector<CellIndex> cells_within(const Grid& g, const Cylinder<double>& c, double margin, GridStats* stats) {
+    return header_cells_within(g, c, margin, stats);
 }
 
 }  // namespace boxcyl::compiled

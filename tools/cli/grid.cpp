@@ -31,8 +31,10 @@ namespace {
 
 constexpr const char* grid_help = R"(INPUT
   JSON Lines (UTF-8): one query per line, a JSON object
-    {"id": ID, "grid": GRID, "cylinder": CYLINDER}
+    {"id": ID, "grid": GRID, "cylinder": CYLINDER, "margin": M}
   ID        optional; a string or a number, echoed back unchanged as the first key
+  M         optional; a number >= 0: list the cells within distance M of the cylinder instead
+            (as `boxcyl intersect` answers a line with that margin), exactly
   GRID      {"origin": [x,y,z], "cell_size": [x,y,z], "counts": [nx,ny,nz]}
             cell_size > 0 per axis; counts: integers, 0 <= counts <= 2^53 (0: no cells)
   CYLINDER  {"center": [x,y,z], "axis": [x,y,z], "radius": r, "height": h}  (r, h >= 0),
@@ -119,13 +121,19 @@ struct TooManyCells {};
 
 // for_each_cell's cells, at most max_cells of them, in lexicographic order; throws TooManyCells
 // as soon as there are more, without finishing the walk.
-std::vector<CellIndex> bounded_cells(const Grid& grid, const Cylinder<double>& cylinder, std::int64_t max_cells) {
+// With a margin, the cells within that distance (for_each_cell_within).
+std::vector<CellIndex> bounded_cells(const Grid& grid, const Cylinder<double>& cylinder, double margin,
+                                     std::int64_t max_cells) {
     std::vector<CellIndex> out;
     const auto max = static_cast<std::size_t>(max_cells);
-    for_each_cell(grid, cylinder, [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+    auto keep = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
         if (out.size() == max) throw TooManyCells{};
         out.push_back({i, j, k});
-    });
+    };
+    if (margin == 0)
+        for_each_cell(grid, cylinder, keep);
+    else
+        for_each_cell_within(grid, cylinder, margin, keep);
     std::sort(out.begin(), out.end());
     return out;
 }
@@ -135,18 +143,24 @@ LineAnswer answer_grid_line_unguarded(std::string_view text, std::size_t line_nu
 #if defined(BOXCYL_CLI_EXACT)
     Grid grid;
     Cylinder<double> cylinder;
+    double margin = 0;
     const ObjectLine o = parse_object_line(text, line_number, [&](const json& root) -> std::string {
-        if (auto e = check_keys_field(root, "", {"id", "grid", "cylinder"}); !e.empty()) return e;
+        if (auto e = check_keys_field(root, "", {"id", "grid", "cylinder", "margin"}); !e.empty()) return e;
         if (auto e = read_grid(root, grid); !e.empty()) return e;
         if (auto e = read_cylinder_field(root, cylinder); !e.empty()) return e;
+        if (const auto m = root.find("margin"); m != root.end()) {
+            if (!m->is_number()) return "margin: expected a number";
+            margin = m->get<double>();
+        }
         if (const Validity v = validate(grid); !v.ok()) return v.message();
         if (const Validity v = validate(cylinder); !v.ok()) return v.message();
+        if (const Validity v = validate_margin(margin); !v.ok()) return v.message();
         return {};
     });
     if (!o.error.empty()) return {format_error(o.id, o.error), false};
     const std::string where = "line " + std::to_string(line_number) + ": ";
     try {
-        return {format_cells(o.id, bounded_cells(grid, cylinder, opt.max_cells)), true};
+        return {format_cells(o.id, bounded_cells(grid, cylinder, margin, opt.max_cells)), true};
     } catch (const TooManyCells&) {
         return {format_error(o.id, where + "the answer has more than " + std::to_string(opt.max_cells) +
                                        " cells (--max-cells)"),

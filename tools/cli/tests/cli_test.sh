@@ -420,10 +420,18 @@ grid_basic)
         echo "{\"id\": 2, \"grid\": {\"origin\": [0, 0, 0], \"cell_size\": [1, 1, 1], \"counts\": [3, 0, 3]}, \"cylinder\": {\"center\": [1, 1, 1], \"axis\": [0, 0, 1], \"radius\": 1, \"height\": 1}}"
         echo "{$g3, \"cylinder\": {\"center\": [4, 1.5, 1.5], \"axis\": [0, 0, 1], \"radius\": 1, \"height\": 1}}"
         echo "{$g3, \"cylinder\": {\"center\": [4, 1.5, 1.5], \"axis\": [0, 0, 1], \"radius\": 0.99999999999999989, \"height\": 1}}"
+        # With a margin: the cells within it. The segment's cells grow by half a cell; the cylinder one
+        # ulp short of x = 3 reaches the face at a margin of exactly that gap, 2^-53.
+        echo "{$g4, \"cylinder\": {\"center\": [1, 2, 2], \"axis\": [1, 0, 0], \"radius\": 0, \"height\": 1}, \"margin\": 0.5}"
+        echo "{$g3, \"cylinder\": {\"center\": [4, 1.5, 1.5], \"axis\": [0, 0, 1], \"radius\": 0.99999999999999989, \"height\": 1}, \"margin\": 1.1102230246251565e-16}"
+        echo "{$g3, \"cylinder\": {\"center\": [4, 1.5, 1.5], \"axis\": [0, 0, 1], \"radius\": 0.99999999999999989, \"height\": 1}, \"margin\": 1.1102230246251564e-16}"
     } >"$work/in"
     {
         echo '{"id": "segment on a grid line", "cells": [[0, 1, 1], [0, 1, 2], [0, 2, 1], [0, 2, 2], [1, 1, 1], [1, 1, 2], [1, 2, 1], [1, 2, 2]], "count": 8}'
         echo '{"id": 2, "cells": [], "count": 0}'
+        echo '{"cells": [[2, 1, 0], [2, 1, 1], [2, 1, 2]], "count": 3}'
+        echo '{"cells": [], "count": 0}'
+        echo '{"cells": [[0, 1, 1], [0, 1, 2], [0, 2, 1], [0, 2, 2], [1, 1, 1], [1, 1, 2], [1, 2, 1], [1, 2, 2], [2, 1, 1], [2, 1, 2], [2, 2, 1], [2, 2, 2]], "count": 12}'
         echo '{"cells": [[2, 1, 0], [2, 1, 1], [2, 1, 2]], "count": 3}'
         echo '{"cells": [], "count": 0}'
     } >"$work/want"
