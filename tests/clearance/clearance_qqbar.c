@@ -125,34 +125,54 @@ static slong width_bits(const arf_interval_t iv) {
    and each run of adjacent blocks that arb_calc could neither exclude nor isolate becomes one group (a cluster
    of roots, or a region where the precision did not suffice). The first group replaces group `slot` when
    slot >= 0 (emptied if there is none). */
-static void isolate(boxcyl_real_roots* r, slong k, const arf_interval_t iv, slong depth, slong prec, slong slot) {
-    arf_interval_ptr blocks;
-    int* flags;
-    slong nb, j, first = 1;
-    const slong deg = fmpz_poly_degree(r->f + k);
-    arf_interval_t cur;
-    arf_interval_init(cur);
-    nb = arb_calc_isolate_roots(&blocks, &flags, factor_func, r->f + k, iv, depth, 64 * depth + 256, deg, prec);
+/* The groups arb_calc's blocks form (isolated blocks alone, runs of adjacent undecided blocks merged). */
+static slong form_groups(arf_interval_ptr out, int* iso, const arf_interval_struct* blocks, const int* flags, slong nb) {
+    slong j, n = 0;
     for (j = 0; j < nb; ++j) {
-        const int isolated = flags[j] == 1;
-        arf_interval_set(cur, blocks + j);
-        if (!isolated)
-            while (j + 1 < nb && flags[j + 1] != 1 && arf_equal(&blocks[j + 1].a, &cur->b)) arf_set(&cur->b, &blocks[++j].b);
-        if (first && slot >= 0) {
+        iso[n] = flags[j] == 1;
+        arf_interval_set(out + n, blocks + j);
+        if (!iso[n])
+            while (j + 1 < nb && flags[j + 1] != 1 && arf_equal(&blocks[j + 1].a, &out[n].b)) arf_set(&out[n].b, &blocks[++j].b);
+        ++n;
+    }
+    return n;
+}
+
+static void isolate(boxcyl_real_roots* r, slong k, const arf_interval_t iv, slong depth, slong prec, slong slot) {
+    arf_interval_ptr blocks, grp;
+    int *flags, *iso;
+    slong nb, ng, j;
+    const slong deg = fmpz_poly_degree(r->f + k);
+    const slong top = 4 * (fmpz_poly_max_bits(r->f + k) < 0 ? -fmpz_poly_max_bits(r->f + k) : fmpz_poly_max_bits(r->f + k)) +
+                      8 * depth + 256;
+    for (;;) {
+        nb = arb_calc_isolate_roots(&blocks, &flags, factor_func, r->f + k, iv, depth, 64 * depth + 256, deg, prec);
+        grp = _arf_interval_vec_init(nb > 0 ? nb : 1);
+        iso = (int*)flint_malloc((size_t)(nb > 0 ? nb : 1) * sizeof(int));
+        ng = form_groups(grp, iso, blocks, flags, nb);
+        _arf_interval_vec_clear(blocks, nb);
+        flint_free(flags);
+        /* more groups than roots can exist: some are mere imprecision; retry at twice the precision (a bound
+           keeps this finite; the groups are valid whatever the precision) */
+        if (ng <= deg || prec >= top) break;
+        _arf_interval_vec_clear(grp, nb > 0 ? nb : 1);
+        flint_free(iso);
+        prec *= 2;
+    }
+    for (j = 0; j < ng; ++j) {
+        if (j == 0 && slot >= 0) {
             group* q = r->g + slot;
-            arf_interval_set(&q->iv, cur);
-            q->isolated = isolated;
+            arf_interval_set(&q->iv, grp + j);
+            q->isolated = iso[j];
             q->prec = prec;
             q->depth = 2 * depth;
         } else {
-            push_group(r, k, cur, isolated, prec, 2 * depth);
+            push_group(r, k, grp + j, iso[j], prec, 2 * depth);
         }
-        first = 0;
     }
-    if (nb == 0 && slot >= 0) r->g[slot].empty = 1;
-    arf_interval_clear(cur);
-    _arf_interval_vec_clear(blocks, nb);
-    flint_free(flags);
+    if (ng == 0 && slot >= 0) r->g[slot].empty = 1;
+    _arf_interval_vec_clear(grp, nb > 0 ? nb : 1);
+    flint_free(iso);
 }
 
 boxcyl_real_roots* boxcyl_real_roots_new(const mpq_srcptr* c, long len) {
