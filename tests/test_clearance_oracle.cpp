@@ -334,6 +334,25 @@ TEST(ClearanceMixedMagnitudes, FlipMarginOfATinyCylinder) {
     }
 }
 
+// A cylinder of subnormal radius and height 2^-997 against a box 2^20 long, 2^-997 thin, at its flip margin:
+// an edge equation whose values are far below its coefficients over all of [-1, 1] (the isolation must
+// raise its precision rather than return thousands of undecided blocks).
+TEST(ClearanceMixedMagnitudes, FlipMarginOfASubnormalCylinder) {
+    const Parallelepiped<double> box{{-0x1.a9ce7126e978dp+17, -0x1.01f6e9072b021p+23, 0x1.2e531a9fbe76dp+12},
+                                     {Vec3<double>{-0x1.dfb2359301ba8p-2, 0x1.7c139ef8ffd67p-2, 0x1.9a7d88b947df2p-1},
+                                      Vec3<double>{0x1.c2c757ccc5ed6p-1, 0x1.161e5f605e86cp-2, 0x1.8e0540d27ef0ep-2},
+                                      Vec3<double>{-0x1.2cfbbe76075f4p-4, 0x1.c6a24441901e3p-1, -0x1.d0ea557863214p-2}},
+                                     {0x1.b3c489354a8a4p+19, 0x1.56e1fc2f8f359p-997, 0x1.82e92d64d72b6p-4}};
+    const Cylinder<double> cyl{{-0x1.d39f47e05b2eap+18, -0x1.05f8ab9551548p+23, -0x1.4358c109816b4p+18},
+                               {0x1.24eaba8157d64p-1, -0x1.fcfef8ddb70fcp-2, 0x1.6854e42db597cp-2},
+                               0x0.000000004619dp-1022,
+                               0x1.56e1fc2f8f359p-997};
+    const auto t0 = std::chrono::steady_clock::now();
+    EXPECT_TRUE(co::within(exact(box), exact(cyl), boxcyl::to_rational(0x1.8654efbd795cbp+18)));
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_LT(ms, 5000);
+}
+
 TEST(ClearanceRandom, TimePerQuery) {
     std::mt19937_64 rng(12345);
     std::uniform_real_distribution<double> margin(0, 2);
