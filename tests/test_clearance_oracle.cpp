@@ -11,6 +11,7 @@
 #include <cstdio>     // std::printf
 #include <random>     // std::mt19937_64
 #include <string>     // describe()
+#include <utility>    // std::pair
 #include <vector>     // timings
 
 #include "boxcyl/oracle/oracle.hpp"
@@ -282,6 +283,74 @@ TEST(ClearanceRandom, AgreesWithSampledPoints) {
             ASSERT_FALSE(co::within(b, cy, boxcyl::to_rational(lower * (1 - 1e-9)))) << describe(c, lower);
         }
     }
+}
+
+// Mixed magnitudes (a box 2^17 long but 2^-6 thin, 2^22 from the origin; a cylinder of subnormal height):
+// the edge equations have huge integer coefficients. Each query must be answered quickly (it once took
+// minutes isolating every complex root), and the answers must be monotone in the margin.
+TEST(ClearanceMixedMagnitudes, SubnormalHeightAnswersQuickly) {
+    const Parallelepiped<double> box{{-0x1.1285cb0589344p+17, -0x1.09f522bd70a3dp+22, 0x1.491be76c8b439p+8},
+                                     {Vec3<double>{-0x1.e828428e96088p-1, -0x1.246ab6749b882p-2, -0x1.8d8f1cdd51d23p-4},
+                                      Vec3<double>{-0x1.05708e2c5916p-8, 0x1.55bb2162dceb8p-2, -0x1.e2a4c0cfe1358p-1},
+                                      Vec3<double>{0x1.34d1b1de53d8cp-2, -0x1.cbf83b2c5e4e4p-1, -0x1.46fbdc3a3b304p-2}},
+                                     {0x1.6092f8e75df81p-6, 0x1.30061b6000a83p+17, 0x1.75ccb44a87ac7p-7}};
+    const Cylinder<double> cyl{{-0x1.29019b6bc43b2p+18, -0x1.0d2ff1abb3db5p+22, 0x1.008cc979023acp+17},
+                               {0x1.209f1d41de0c2p-1, 0x1.b3ed3f9551aa2p-1, 0x1.7367c11d55164p-1},
+                               0x1.addeb2d2e2298p+17,
+                               0x0.00000000631a9p-1022};
+    const P b = exact(box);
+    const Cyl cy = exact(cyl);
+    const double size = cyl.radius + cyl.height;
+    bool prev = false;
+    for (double f : {0.0, 0x1p-20, 0.5, 1.0, 1.5, 2.0, 4.0, 0x1p10, 0x1p20}) {
+        const Rational m = boxcyl::to_rational(f * size);
+        const auto t0 = std::chrono::steady_clock::now();
+        const bool now = co::within(b, cy, m);
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        EXPECT_LT(ms, 5000) << "margin " << f << " × (r + h)";
+        EXPECT_TRUE(!prev || now) << "margin " << f << " × (r + h)";
+        EXPECT_EQ(co::compare_squared_distance(b, cy, m * m) <= 0, now) << "margin " << f << " × (r + h)";
+        prev = now;
+    }
+    EXPECT_TRUE(prev);  // 2^20 (r + h) is far more than the distance
+}
+
+// A thin aligned box 2^23 long against a cylinder of radius 2^-30 and height 2^-997, at its flip margin (the
+// least double the production query accepts) and the double below: the distance lies between them, so the
+// rim-stationary roots must be told apart from their neighbours 2^-997 away.
+TEST(ClearanceMixedMagnitudes, FlipMarginOfATinyCylinder) {
+    const Vec3<double> lo{0x1.38f70ab960486p+18, -0x1.18262250e5604p+23, 0x1.d73aef7b27ec2p+10};
+    const Vec3<double> hi{0x1.38f74f9db22d1p+18, 0x1.8d55422d0e56p+19, 0x1.d7b2613a4034ap+10};
+    const P b = aligned(boxcyl::to_exact(lo), boxcyl::to_exact(hi));
+    const Cyl cy = exact(Cylinder<double>{{-0x1.99e88fbd4966p+15, -0x1.8040db4082fc7p+21, 0x1.0c58baa126b0fp+20},
+                                          {0x1.b7d4d3c0320bap-1, 0x1.51032b50eafep-2, 0x1.a8fd5bac0ca48p-1},
+                                          0x1.77d4a1574ff7ep-30,
+                                          0x1.56e1fc2f8f359p-997});
+    for (const auto& [m, expect] : {std::pair{0x1.1aefc892228fp+20, true}, std::pair{0x1.1aefc892228efp+20, false}}) {
+        const auto t0 = std::chrono::steady_clock::now();
+        EXPECT_EQ(co::within(b, cy, boxcyl::to_rational(m)), expect) << hex(m);
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        EXPECT_LT(ms, 5000) << hex(m);
+    }
+}
+
+// A cylinder of subnormal radius and height 2^-997 against a box 2^20 long, 2^-997 thin, at its flip margin:
+// an edge equation whose values are far below its coefficients over all of [-1, 1] (the isolation must
+// raise its precision rather than return thousands of undecided blocks).
+TEST(ClearanceMixedMagnitudes, FlipMarginOfASubnormalCylinder) {
+    const Parallelepiped<double> box{{-0x1.a9ce7126e978dp+17, -0x1.01f6e9072b021p+23, 0x1.2e531a9fbe76dp+12},
+                                     {Vec3<double>{-0x1.dfb2359301ba8p-2, 0x1.7c139ef8ffd67p-2, 0x1.9a7d88b947df2p-1},
+                                      Vec3<double>{0x1.c2c757ccc5ed6p-1, 0x1.161e5f605e86cp-2, 0x1.8e0540d27ef0ep-2},
+                                      Vec3<double>{-0x1.2cfbbe76075f4p-4, 0x1.c6a24441901e3p-1, -0x1.d0ea557863214p-2}},
+                                     {0x1.b3c489354a8a4p+19, 0x1.56e1fc2f8f359p-997, 0x1.82e92d64d72b6p-4}};
+    const Cylinder<double> cyl{{-0x1.d39f47e05b2eap+18, -0x1.05f8ab9551548p+23, -0x1.4358c109816b4p+18},
+                               {0x1.24eaba8157d64p-1, -0x1.fcfef8ddb70fcp-2, 0x1.6854e42db597cp-2},
+                               0x0.000000004619dp-1022,
+                               0x1.56e1fc2f8f359p-997};
+    const auto t0 = std::chrono::steady_clock::now();
+    EXPECT_TRUE(co::within(exact(box), exact(cyl), boxcyl::to_rational(0x1.8654efbd795cbp+18)));
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_LT(ms, 5000);
 }
 
 TEST(ClearanceRandom, TimePerQuery) {

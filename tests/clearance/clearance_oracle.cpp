@@ -51,7 +51,10 @@ std::vector<mpq_srcptr> coeff_ptrs(const Poly& p) {
     return c;
 }
 
-// The distinct real roots of a rational polynomial (Calcium qqbar, exact).
+// The real roots in [−1, 1] of a rational polynomial, in groups (see clearance_qqbar.h): a sign asked of a group
+// holds for every root in it, or the group is too coarse yet (Undecided: refine it and ask again).
+struct Undecided {};
+
 class RealRoots {
 public:
     explicit RealRoots(const Poly& p) {
@@ -64,8 +67,13 @@ public:
     long size() const { return boxcyl_real_roots_count(roots_); }
     int sign_at(long i, const Poly& g) const {
         const std::vector<mpq_srcptr> c = coeff_ptrs(g);
-        return boxcyl_real_roots_sign_at(roots_, i, c.data(), static_cast<long>(c.size()));
+        const int s = boxcyl_real_roots_sign_at(roots_, i, c.data(), static_cast<long>(c.size()));
+        if (s == BOXCYL_UNDECIDED) throw Undecided{};
+        return s;
     }
+    int nonempty(long i) const { return boxcyl_real_roots_nonempty(roots_, i); }
+    bool empty(long i) const { return boxcyl_real_roots_empty(roots_, i) != 0; }
+    void refine(long i) { boxcyl_real_roots_refine(roots_, i); }
 
 private:
     boxcyl_real_roots* roots_;
@@ -232,12 +240,31 @@ void edge_candidates(const V& y0, const V& a, const V& D, const Consts& k, Verdi
     bool nonconstant = false;  // P ≡ 0 only on the axis line itself (min F = 0 there); a constant has no roots
     for (std::size_t i = 1; i < P.size(); ++i) nonconstant = nonconstant || sgn(P[i]) != 0;
     if (!nonconstant) return;
-    const RealRoots roots(P);
+    // Every real root in [−1, 1], group by group. A group's sign chain holds for all its roots; a chain that a
+    // group cannot decide yet refines it (narrower, split, or found empty) and runs again. A candidate sign
+    // ≤ 0 counts only once the group is known to hold a root; a sign > 0 changes nothing.
+    RealRoots roots(P);
     for (long i = 0; i < roots.size() && !out.done(); ++i) {
         const Root root{&roots, i};
         const AtRoot lam{Poly{0, 1}, &root};
-        if (!in_unit(lam)) continue;
-        out.add(sign_at_point<AtRoot>(y0, av, {lam}, AtRoot{Poly{1}, &root}, D, k));
+        while (!roots.empty(i)) {
+            int s;
+            try {
+                s = sign_at_point<AtRoot>(y0, av, {lam}, AtRoot{Poly{1}, &root}, D, k);
+            } catch (const Undecided&) {
+                roots.refine(i);
+                continue;
+            }
+            if (s <= 0) {
+                const int n = roots.nonempty(i);
+                if (n < 0) {  // not known yet: refine and decide again
+                    roots.refine(i);
+                    continue;
+                }
+                if (n > 0) out.add(s);
+            }
+            break;
+        }
     }
 }
 
@@ -288,6 +315,7 @@ int compare_squared_distance(const Parallelepiped<Rational>& box, const Cylinder
     if (sgn(v) < 0) throw std::invalid_argument("clearance_oracle: negative squared margin");
     // Checks D ≠ 0 and r, h, extents ≥ 0; B ∩ cylinder ≠ ∅ ⇔ dist = 0.
     if (oracle::intersects(box, cyl)) return sgn(v) > 0 ? -1 : 0;
+    if (sgn(v) == 0) return 1;  // disjoint compact sets: dist > 0
 
     const V& D = cyl.axis;
     const Consts k{dot(D, D), cyl.radius, cyl.height / 2, v};

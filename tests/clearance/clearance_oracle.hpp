@@ -22,8 +22,8 @@
 //        the rim circle on L. On a line X(λ), with q(λ) = ρ², T(λ) = D·(X − C), d = D·D,
 //        W± = (X − C)·a ∓ H·T′/√d, stationarity gives ρ·W± = r·q′/2, squared q·W±² − r²(q′/2)² = 0: a
 //        quartic over Q(√d); the product of both signs (both rims) is a degree-8 rational polynomial,
-//        identically zero only when L is the axis line (then min_L F = 0). Its real roots are found
-//        exactly (Calcium qqbar). On a plane with normal n (n⊥ = n − (n·D/d)D ≠ 0) the nearest circle
+//        identically zero only when L is the axis line (then min_L F = 0). Only its real roots in
+//        [−1, 1] matter (see "Roots" below). On a plane with normal n (n⊥ = n − (n·D/d)D ≠ 0) the nearest circle
 //        point is centre ± r·n⊥/|n⊥| and X* is its orthogonal projection onto L (coordinates in
 //        Q(√d, √|n⊥|²), handled as a biquadratic field); n⊥ = 0 (L ⊥ u) makes ρ > r stationary points
 //        impossible. r = 0 is the same with the circle a point.
@@ -33,22 +33,40 @@
 //  (d) At each kept candidate, sign(F − m²) is decided exactly from T² and q alone: which region (two
 //      rational-coefficient sign tests), then a chain of "a − √b" sign tests by squaring with the signs
 //      checked first. Candidates are rational, biquadratic (a + b√d + c√N + e√(dN), signs by nested
-//      squaring), or polynomials in an algebraic root λ (sign: exactly 0 iff the minimal polynomial of λ
-//      divides it; otherwise Arb interval evaluation at rising precision, which must terminate).
-//  (e) Shortcut: an edge whose points all have F > m² (exact rational bounds on min ρ and min |t| over
-//      it) skips its root finding; it could not change the answer.
+//      squaring), or polynomials in a real algebraic root λ of the edge equation (see "Roots").
+//  (e) Shortcuts: an edge whose points all have F > m² (exact rational bounds on min ρ and min |t| over
+//      it) skips its root finding; it could not change the answer. For m = 0 a disjoint pair is answered
+//      at once (dist > 0).
+// Roots. The edge equation P is split by FLINT (fmpz_poly_factor) into distinct irreducible factors f; a
+// linear one gives a rational root, kept if in [−1, 1], whose signs are exact. For deg f ≥ 2 (no rational
+// root, so none at ±1), Arb's certified bisection (arb_calc_isolate_roots on [−1, 1], f enclosed on a ball
+// by its Taylor form at the midpoint) returns blocks that it could not exclude: each either certified to
+// hold exactly one root (sign change at the ends, f′ ≠ 0 on it) or a run of undecided blocks (a cluster,
+// or too little precision), kept as one "group". A candidate's sign chain (d) is then run once per group:
+// each sign of a polynomial g at λ is 0 iff f divides g (then g = 0 at every root of f, f being
+// irreducible); otherwise g ≠ 0 at every root of f, and g mod f evaluated on the group's interval in ball
+// arithmetic (Taylor form) either has a certain sign — the same for every root in the group — or the
+// group is refined (an isolated root narrowed by arb_calc_refine_root_bisect, anything else re-isolated
+// deeper) with more precision, and the chain runs again; this ends, since the signs asked are non-zero
+// at the roots and the enclosures shrink to them. A group whose sign is > 0 is dropped whether or not it
+// holds a root (it could not lower the verdict); a sign ≤ 0 counts only once the group is shown to hold
+// a root: isolated, a sign change of f at its ends, or (after a few refinements) a FLINT Sturm count
+// (_fmpz_poly_num_real_roots_sturm after the Möbius map of its interval onto (0, ∞)); a group shown
+// empty is dropped. Why not all complex roots: the edge equations of inputs of mixed magnitudes have
+// integer coefficients of thousands of bits and pairs of real roots as close as the cylinder's height
+// (2^−1000 for a subnormal one); isolating every complex root (qqbar_roots_fmpz_poly, Durand–Kerner)
+// took minutes there, while a group usually decides its signs long before such a pair is split.
 // Nothing is rounded: the only floating point is Arb's rigorous ball arithmetic, used only to read the
 // sign of a quantity already proven non-zero. It shares no code with the production query and is
 // different in kind from its decomposition (fat cylinder, tall cylinder, rim tori).
 //
-// Library choice: Calcium's qqbar (Debian libcalcium-dev, with libflint-dev and libflint-arb-dev for
-// the FLINT and Arb headers qqbar.h includes) gives the real roots of an integer polynomial as exact
-// algebraic numbers with their minimal polynomials and certified enclosures — exactly what the
-// degree-8 edge equation needs — and nothing hand-rolled finds roots. CGAL's CORE::Expr (the brief's
-// fallback) was not needed. Antic (libantic-dev) is needed only by Calcium's ca.h, not used here.
-// Calcium 0.4.1's headers are valid C but not C++ (implicit void* conversions in inline functions), so
-// the calls live in a small C file, clearance_qqbar.c. These files sit in tests/clearance/, not
-// tests/support/, so that they are not among the sources the recorded long runs depend on.
+// Library choice: FLINT 2.9 (factoring, Sturm counts) and Arb 2.23 (arb_calc's certified isolation and
+// bisection, ball arithmetic), Debian's libflint-dev and libflint-arb-dev; the build still finds them
+// through Calcium's package (libcalcium-dev), whose qqbar the oracle used before (exact, but slow on the
+// inputs above). Nothing hand-rolled isolates roots: the shim only encloses f on a ball (Taylor form) and
+// chooses depths and precisions. The calls live in a small C file, clearance_qqbar.c (C headers that are
+// not all valid C++). These files sit in tests/clearance/, not tests/support/, so that they are not among
+// the sources the recorded long runs depend on.
 #pragma once
 
 #include "boxcyl/geometry/cylinder.hpp"
