@@ -6,15 +6,15 @@
 #   python  the Python module's build (pip install ./python): Python headers, pybind11, numpy,
 #           setuptools, pip, venv (with GMP and the compiler)
 #   test    everything scripts/test.sh needs: build + python + GoogleTest, Google Benchmark,
-#           pkg-config, pytest, Eigen (the Eigen adapter's test), and Calcium's exact algebraic numbers
-#           with the FLINT and Arb headers qqbar.h includes (the clearance oracle's algebra)
+#           pkg-config, pytest, Eigen (the Eigen adapter's test), and FLINT's Arb (the clearance
+#           oracle's certified root isolation)
 # With no group named, `test` (so `bash scripts/deps.sh` alone installs what the test command needs).
 set -euo pipefail
 build=(cmake g++ make libgmp-dev libflint-dev nlohmann-json3-dev libcli11-dev)
 python=(g++ libgmp-dev libflint-dev python3-dev python3-pybind11 python3-numpy python3-setuptools python3-pip python3-venv)
 test=("${build[@]}" "${python[@]}" libgtest-dev libgmock-dev libbenchmark-dev pkg-config python3-pytest
       python3-mypy python3-dask python3-distributed libeigen3-dev
-      libcalcium-dev libflint-dev libflint-arb-dev)
+      libflint-dev libflint-arb-dev)
 packages=()
 group=0
 for a in "$@"; do

@@ -1,7 +1,7 @@
 // The clearance oracle (see clearance_oracle.hpp for the method and why it is exact).
 #include "clearance/clearance_oracle.hpp"
 
-#include "clearance/clearance_qqbar.h"  // real roots and signs at them (Calcium qqbar, behind a C shim)
+#include "clearance/clearance_roots.h"  // real roots and signs at them (FLINT and Arb, behind a C shim)
 
 #include <array>      // face vectors
 #include <stdexcept>  // std::invalid_argument
@@ -51,7 +51,7 @@ std::vector<mpq_srcptr> coeff_ptrs(const Poly& p) {
     return c;
 }
 
-// The real roots in [−1, 1] of a rational polynomial, in groups (see clearance_qqbar.h): a sign asked of a group
+// The real roots in [−1, 1] of a rational polynomial, in groups (see clearance_roots.h): a sign asked of a group
 // holds for every root in it, or the group is too coarse yet (Undecided: refine it and ask again).
 struct Undecided {};
 

@@ -61,11 +61,11 @@
 // different in kind from its decomposition (fat cylinder, tall cylinder, rim tori).
 //
 // Library choice: FLINT 2.9 (factoring, Sturm counts) and Arb 2.23 (arb_calc's certified isolation and
-// bisection, ball arithmetic), Debian's libflint-dev and libflint-arb-dev; the build still finds them
-// through Calcium's package (libcalcium-dev), whose qqbar the oracle used before (exact, but slow on the
-// inputs above). Nothing hand-rolled isolates roots: the shim only encloses f on a ball (Taylor form) and
-// chooses depths and precisions. The calls live in a small C file, clearance_qqbar.c (C headers that are
-// not all valid C++). These files sit in tests/clearance/, not tests/support/, so that they are not among
+// bisection, ball arithmetic), Debian's libflint-dev and libflint-arb-dev, rather than Calcium's exact
+// algebraic numbers (qqbar: exact too, but isolating every complex root was slow on the inputs above).
+// Nothing hand-rolled isolates roots: the shim only encloses f on a ball (Taylor form) and chooses
+// depths and precisions. The calls live in a small C file, clearance_roots.c (C headers that are not
+// all valid C++). These files sit in tests/clearance/, not tests/support/, so that they are not among
 // the sources the recorded long runs depend on.
 #pragma once
 

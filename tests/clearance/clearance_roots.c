@@ -1,5 +1,5 @@
-/* See clearance_qqbar.h. */
-#include "clearance_qqbar.h"
+/* See clearance_roots.h. */
+#include "clearance_roots.h"
 
 #include <stdlib.h>
 

@@ -1,8 +1,8 @@
 /* The clearance oracle's only contact with FLINT and Arb: the real roots in [-1, 1] of a rational polynomial,
    isolated (or grouped) in intervals, and the exact sign of another rational polynomial at them. A C shim
-   because these C headers are not all valid C++ (Calcium 0.4.1's were not; Arb's are kept out of C++ too). */
-#ifndef BOXCYL_TESTS_CLEARANCE_QQBAR_H
-#define BOXCYL_TESTS_CLEARANCE_QQBAR_H
+   because these C headers are not all valid C++ (Arb's are kept out of C++). */
+#ifndef BOXCYL_TESTS_CLEARANCE_ROOTS_H
+#define BOXCYL_TESTS_CLEARANCE_ROOTS_H
 
 #include <gmp.h>
 
