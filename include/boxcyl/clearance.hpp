@@ -22,6 +22,7 @@
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
 #include "boxcyl/geometry/validate.hpp"
+#include "boxcyl/margin.hpp"
 #include "boxcyl/query.hpp"
 #if defined(BOXCYL_HAS_EXACT)
 #include "boxcyl/exact/clearance.hpp"

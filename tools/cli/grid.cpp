@@ -21,6 +21,7 @@
 
 #include "app.hpp"  // exit codes
 #include "boxcyl/geometry/validate.hpp"
+#include "boxcyl/margin.hpp"
 #if defined(BOXCYL_CLI_EXACT)
 #include "boxcyl/compiled.hpp"  // for_each_cell, from libboxcyl
 #endif

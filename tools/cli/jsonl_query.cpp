@@ -9,6 +9,8 @@
 // 64 bits are converted with a (correctly rounded) cast, larger ones go through strtod.
 #include "jsonl_query.hpp"
 
+#include "boxcyl/margin.hpp"  // a line's "margin"
+
 #include <algorithm>           // std::max, std::min
 #include <array>               // read_line's chunk
 #include <condition_variable>  // process_stream's hand-offs between threads

@@ -351,16 +351,4 @@ Validity validate(const Parallelepiped<T>& b, std::string_view prefix = "box") {
     return detail::describe(b, std::string(prefix));
 }
 
-// A clearance margin (within_distance): a finite number ≥ 0 (−0 is 0).
-template <class T>
-bool is_valid_margin(T m) noexcept {
-    return std::isfinite(m) && m >= T(0);
-}
-template <class T>
-Validity validate_margin(T m, std::string_view name = "margin") {
-    Validity v;
-    if (!is_valid_margin(m)) detail::check_nonnegative(v, std::string(name), m);
-    return v;
-}
-
 }  // namespace boxcyl
