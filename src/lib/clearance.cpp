@@ -6,12 +6,24 @@
 
 namespace boxcyl::compiled {
 
+namespace {
+// The templates by name (a plain call here would find the compiled functions themselves).
+template <class B, class T>
+bool checked(const B& box, const Cylinder<T>& cyl, T margin) {
+    return boxcyl::within_distance<B, T>(box, cyl, margin);
+}
+template <class B, class T>
+bool unchecked(const B& box, const Cylinder<T>& cyl, T margin) {
+    return boxcyl::within_distance_unchecked<B, T>(box, cyl, margin);
+}
+}  // namespace
+
 #define BOXCYL_COMPILED_CLEARANCE(Box, T)                                                          \
     bool within_distance(const Box<T>& box, const Cylinder<T>& cyl, T margin) {                    \
-        return boxcyl::within_distance<Box<T>, T>(box, cyl, margin);                               \
+        return checked(box, cyl, margin);                                                          \
     }                                                                                              \
     bool within_distance_unchecked(const Box<T>& box, const Cylinder<T>& cyl, T margin) {          \
-        return boxcyl::within_distance_unchecked<Box<T>, T>(box, cyl, margin);                     \
+        return unchecked(box, cyl, margin);                                                        \
     }
 BOXCYL_COMPILED_CLEARANCE(AlignedBox, double)
 BOXCYL_COMPILED_CLEARANCE(OrientedBox, double)
