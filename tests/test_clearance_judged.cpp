@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>   // slow cases reported
+#include <cfenv>    // rounding modes
 #include <cmath>    // std::nextafter, std::ldexp
 #include <cstdlib>  // std::getenv
 #include <cstdint>  // seeds, bit patterns
@@ -18,10 +19,12 @@
 #include <cstring>  // std::memcpy
 #include <random>   // fixed-seed generators
 #include <string>   // describe()
+#include <vector>   // margins
 
 #include "boxcyl/clearance.hpp"
 #include "clearance/clearance_oracle.hpp"
 #include "support/cases.hpp"
+#include "support/fp.hpp"  // RoundingMode
 
 namespace boxcyl {
 namespace {
@@ -166,6 +169,40 @@ TEST(ClearanceJudged, IntegerLatticeAtHalfIntegerMarginsAndNeighbours) {
     std::printf("lattice: %ld queries judged, %ld exactly at a half-integer margin, %d disagreements\n", checked,
                 exactly_at_margin, disagreements);
     EXPECT_GT(exactly_at_margin, 50);
+    EXPECT_EQ(disagreements, 0);
+}
+
+// Every IEEE rounding mode: the probes' sum bounds and the interval stage hold in each (the oracle's
+// verdict is taken in round to nearest). Pairs near their flip margin (one ulp either side, where the
+// interval stage and the exact decision answer) and random margins, every profile but magnitudes.
+TEST(ClearanceJudged, EveryRoundingMode) {
+    int disagreements = 0;
+    long checked = 0;
+    std::mt19937_64 rng(0xc1ea0400);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (Profile p : {Profile::mixed, Profile::uniform, Profile::georeferenced, Profile::degenerate}) {
+        CaseGenerator gen(0xc1ea0400 + static_cast<std::uint64_t>(p), p);
+        for (int i = 0; i < 12; ++i) {
+            const Case c = gen.next();
+            std::vector<double> margins{unit(rng) * size_of(c), 4 * unit(rng) * size_of(c)};
+            if (p != Profile::degenerate) {
+                const double m = flip_margin(c);
+                if (m > 0) margins.insert(margins.end(), {m, std::nextafter(m, 0.0)});
+            }
+            for (const double m : margins) {
+                const bool j = judged(c, m);
+                for (const int mode : {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+                    const RoundingMode scope(mode);
+                    const bool a = answered(c, m);
+                    ++checked;
+                    if (a != j && ++disagreements <= 5)
+                        ADD_FAILURE() << "rounding mode " << mode_name(mode) << ": within_distance " << a << ", oracle " << j
+                                      << " at margin " << hex(m) << " for\n" << describe(c);
+                }
+            }
+        }
+    }
+    std::printf("rounding modes: %ld queries judged, %d disagreements\n", checked, disagreements);
     EXPECT_EQ(disagreements, 0);
 }
 

@@ -7,14 +7,16 @@
 // and ≥ 0); within_distance_unchecked() skips that check. Needs the exact backend (boxcyl::exact).
 //
 // How: three probes with the exact intersection query decide most pairs (a cylinder that holds the
-// rounded one — a miss answers no; two that it holds — a hit answers yes); the exact clearance
-// decision (exact/clearance.hpp) answers the rest. docs/clearance.md has the method and its figures.
+// rounded one — a miss answers no; two that it holds — a hit answers yes); the rim tori's tests in
+// interval arithmetic (filtered/rim.hpp) most of the rest; the exact clearance decision
+// (exact/clearance.hpp) what remains. docs/clearance.md has the method and its figures.
 #pragma once
 
 #include <algorithm>    // std::max
 #include <array>        // the probe table
 #include <cmath>        // std::nextafter, std::isfinite
 #include <limits>       // infinity
+#include <optional>     // the interval stage's "undecided"
 #include <stdexcept>    // std::invalid_argument
 #include <type_traits>  // std::type_identity_t
 
@@ -27,6 +29,7 @@
 #if defined(BOXCYL_HAS_EXACT)
 #include "boxcyl/exact/clearance.hpp"
 #include "boxcyl/exact/convert.hpp"
+#include "boxcyl/filtered/rim.hpp"
 #endif
 
 namespace boxcyl {
@@ -76,8 +79,22 @@ bool within(const Box& box, const Cylinder<double>& cyl, double m) {
     for (std::size_t i = 0; i < p.probe.size(); ++i)
         if (p.valid[i] && intersects_unchecked(box, p.probe[i].cylinder) == p.probe[i].decides_when)
             return p.probe[i].decides_when;
+    // The rim tori in intervals. A "no" needs the box to miss the exact fat and tall cylinders: proved
+    // by missing the fat and tall cylinders with their sizes rounded up.
+    filtered::rim::Proved proved;
+    const std::optional<bool> rim = filtered::rim::decide(box, cyl, m, &proved);
+    if (rim == true) return true;
+    const Bounds r = sum_bounds(cyl.radius, m);
+    const Bounds h = sum_bounds(cyl.height, 2 * m);
+    const exact::clearance::Known known{std::isfinite(r.hi) && std::isfinite(h.hi) &&
+                                      !intersects_unchecked(box, Cylinder<double>{cyl.center, cyl.axis, r.hi, cyl.height}) &&
+                                      !intersects_unchecked(box, Cylinder<double>{cyl.center, cyl.axis, cyl.radius, h.hi}),
+                                  proved.edge_far, proved.facet_far};
+    // "No" needs the box to miss fat and tall (the rim tests' completeness); without that proof the
+    // exact decision asks them itself, and skips only the edges and facets proved far (facts alone).
+    if (rim == false && known.misses_fat_and_tall) return false;
     return exact::clearance::within(exact::clearance::as_parallelepiped(to_exact(box)), to_exact(cyl),
-                                    to_rational(m));
+                                    to_rational(m), known);
 }
 #endif
 

@@ -127,15 +127,28 @@ inline bool facet_near_rim(const Rim& f, const Vec3<Rational>& XF, const Vec3<Ra
 
 }  // namespace detail
 
+// What a caller has already proved (filtered/rim.hpp), so that the decision skips those tests: the box
+// misses the fat and tall cylinders; edge (axis i, start vertex bits) is farther than m from both rim
+// circles (index 8i + bits); facet (axis i, side σ) has no contact within m (index 2i + (σ > 0)).
+struct Known {
+    bool misses_fat_and_tall = false;
+    std::array<bool, 24> edge_far{};
+    std::array<bool, 6> facet_far{};
+};
+
 // Preconditions: a valid cylinder (D ≠ 0, r, h ≥ 0), extents ≥ 0, m ≥ 0.
-inline bool within(const Parallelepiped<Rational>& box, const Cylinder<Rational>& cyl, const Rational& m) {
-    Cylinder<Rational> fat = cyl;
-    fat.radius += m;
-    if (intersects(Method::hull, box, fat)) return true;
+inline bool within(const Parallelepiped<Rational>& box, const Cylinder<Rational>& cyl, const Rational& m,
+                   const Known& known = {}) {
+    if (!known.misses_fat_and_tall) {
+        Cylinder<Rational> fat = cyl;
+        fat.radius += m;
+        if (intersects(Method::hull, box, fat)) return true;
+        if (sgn(m) == 0) return false;
+        Cylinder<Rational> tall = cyl;
+        tall.height += 2 * m;
+        if (intersects(Method::hull, box, tall)) return true;
+    }
     if (sgn(m) == 0) return false;
-    Cylinder<Rational> tall = cyl;
-    tall.height += 2 * m;
-    if (intersects(Method::hull, box, tall)) return true;
 
     const detail::Rim rim(cyl, m);
     std::array<Vec3<Rational>, 3> half;  // eᵢ·Aᵢ
@@ -153,12 +166,15 @@ inline bool within(const Parallelepiped<Rational>& box, const Cylinder<Rational>
         if (sgn(box.extents[i]) == 0 || box.axes[i] == Vec3<Rational>{0, 0, 0}) continue;  // no edge interior
         const Vec3<Rational> E = Rational(2) * half[i];
         for (int bits = 0; bits < 8; ++bits)
-            if (!(bits >> i & 1) && detail::edge_meets_rim_tori(rim, vertex(bits), E)) return true;
+            if (!(bits >> i & 1) && !known.edge_far[static_cast<std::size_t>(8 * i + bits)] &&
+                detail::edge_meets_rim_tori(rim, vertex(bits), E))
+                return true;
     }
     for (int i = 0; i < 3; ++i) {
         const int j = (i + 1) % 3;
         const int k = (i + 2) % 3;
         for (int sigma : {1, -1}) {
+            if (known.facet_far[static_cast<std::size_t>(2 * i + (sigma > 0))]) continue;
             const Vec3<Rational> XF = sigma > 0 ? Vec3<Rational>(box.center + half[i]) : Vec3<Rational>(box.center - half[i]);
             if (detail::facet_near_rim(rim, XF, box.axes[j], box.extents[j], box.axes[k], box.extents[k])) return true;
         }
