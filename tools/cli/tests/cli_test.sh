@@ -570,7 +570,7 @@ memory_limit)
     for t in 1 2; do
         run_limited 1 intersect --threads "$t" --max-line-bytes 2000000000
         check_lines "256 MiB line allowed, --threads $t" \
-            '{\("id": 2, \)\?"error": "line 2: \(out of memory \(reading\|answering\) the line\|pad: unknown key (accepted: id, box, cylinder)\)"}'
+            '{\("id": 2, \)\?"error": "line 2: \(out of memory \(reading\|answering\) the line\|pad: unknown key (accepted: id, box, cylinder, margin)\)"}'
     done
     # 96 MiB of small values ("[],"): the parse would need ~1 GiB; refused by the parse budget
     # (4 bytes per byte of the line) or by memory running out, the other lines answered either way.
@@ -822,8 +822,8 @@ unknown_keys)
         echo '{"id": 1, "error": "line 1: cylinder.heigth: unknown key; did you mean \"height\"? (accepted: center, axis, radius, height)"}'
         echo '{"id": 2, "error": "line 2: cylinder.half_height: unknown key; did you mean \"height\" (the full height, end to end, not half of it)? (accepted: center, axis, radius, height)"}'
         echo '{"id": 3, "error": "line 3: box.colour: unknown key (accepted: kind, min, max, center, axes, extents)"}'
-        echo '{"id": 4, "error": "line 4: comment: unknown key (accepted: id, box, cylinder)"}'
-        echo '{"id": 5, "error": "line 5: boxx: unknown key; did you mean \"box\"? (accepted: id, box, cylinder)"}'
+        echo '{"id": 4, "error": "line 4: comment: unknown key (accepted: id, box, cylinder, margin)"}'
+        echo '{"id": 5, "error": "line 5: boxx: unknown key; did you mean \"box\"? (accepted: id, box, cylinder, margin)"}'
         echo '{"id": 6, "error": "line 6: box.axis: unknown key; did you mean \"axes\"? (accepted: kind, min, max, center, axes, extents)"}'
         echo '{"id": 7, "intersect": true}'
     } >"$work/want"
@@ -838,7 +838,7 @@ unknown_keys)
     {
         echo '{"error": "line 1: grid.cellsize: unknown key; did you mean \"cell_size\"? (accepted: origin, cell_size, counts)"}'
         echo '{"error": "line 2: cylinder.heigth: unknown key; did you mean \"height\"? (accepted: center, axis, radius, height)"}'
-        echo '{"error": "line 3: box: unknown key (accepted: id, grid, cylinder)"}'
+        echo '{"error": "line 3: box: unknown key (accepted: id, grid, cylinder, margin)"}'
     } >"$work/want"
     run 1 grid "$work/in"
     same_bytes "$work/out" "$work/want"

@@ -225,10 +225,10 @@ TEST(JsonlStructure, MessagesNameTheField) {
          R"(line 7: box.half_extents: unknown key; did you mean "extents" (half the edge lengths, as you wrote)? (accepted: kind, min, max, center, axes, extents))"},
         {R"({"box": {"min": [0, 0, 0], "max": [1, 1, 1], "size": [1, 1, 1]}, )" + c + "}",
          "line 7: box.size: unknown key (accepted: kind, min, max, center, axes, extents)"},
-        {"{" + kBox + ", " + c + R"(, "extra": {"deep": [1e300, "x"]}})", "line 7: extra: unknown key (accepted: id, box, cylinder)"},
-        {"{" + kBox + ", " + c + R"(, "ID": 3})", R"(line 7: ID: unknown key; did you mean "id"? (accepted: id, box, cylinder))"},
+        {"{" + kBox + ", " + c + R"(, "extra": {"deep": [1e300, "x"]}})", "line 7: extra: unknown key (accepted: id, box, cylinder, margin)"},
+        {"{" + kBox + ", " + c + R"(, "ID": 3})", R"(line 7: ID: unknown key; did you mean "id"? (accepted: id, box, cylinder, margin))"},
         {"{" + kBox + ", " + c + ", \"" + std::string(100, 'k') + "\": 3}",
-         "line 7: " + std::string(64, 'k') + "...: unknown key (accepted: id, box, cylinder)"},
+         "line 7: " + std::string(64, 'k') + "...: unknown key (accepted: id, box, cylinder, margin)"},
         {R"({"box": 1, "box": 2})", "line 7: box: duplicate key"},
         {"{" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "center": [0, 0, 0]}})", "line 7: cylinder.center: duplicate key"},
         {R"({"id": null})", "line 7: id: expected a string or a number"},
@@ -561,7 +561,7 @@ TEST(JsonlHostile, InvalidUtf8IsABadLineAndTheOutputStaysValidUtf8) {
     // that the format does not have is named as written.
     EXPECT_EQ(answer_line(R"({"id": "Zürich ✓ 𝄞")" + tail, 5, opt).text, R"({"id": "Zürich ✓ 𝄞", "intersect": true})");
     EXPECT_EQ(answer_line(R"({"id": 5, "日本": 1)" + tail, 5, opt).text,
-              R"x({"id": 5, "error": "line 5: 日本: unknown key (accepted: id, box, cylinder)"})x");
+              R"x({"id": 5, "error": "line 5: 日本: unknown key (accepted: id, box, cylinder, margin)"})x");
     // A stream with invalid UTF-8 lines keeps its line count and order.
     const StreamResult r = run_stream(kGood + "\n" + cases[0] + "\n" + "\xc3\x28\n" + kGood + "\n");
     ASSERT_EQ(r.lines.size(), 4u);
@@ -609,7 +609,7 @@ TEST(JsonlHostile, HugeLinesOf10MB) {
     EXPECT_EQ(answer_line(std::string(mb10, '['), 5, opt).text,
               R"({"error": "line 5: invalid JSON: nested deeper than 256 levels"})");
     EXPECT_EQ(answer_line(R"({"id": 6, "deep": )" + std::string(255, '[') + std::string(255, ']') + ", " + kBox + ", " + kCyl + "}", 6, opt).text,
-              R"x({"id": 6, "error": "line 6: deep: unknown key (accepted: id, box, cylinder)"})x");  // parsed: only the key is wrong
+              R"x({"id": 6, "error": "line 6: deep: unknown key (accepted: id, box, cylinder, margin)"})x");  // parsed: only the key is wrong
     EXPECT_EQ(answer_line(R"({"id": 7, "deep": )" + std::string(256, '[') + std::string(256, ']') + ", " + kBox + ", " + kCyl + "}", 7, opt).text,
               R"({"id": 7, "error": "line 7: invalid JSON: nested deeper than 256 levels"})");
     // 10 MB of garbage between good lines changes nothing around it.
@@ -685,7 +685,7 @@ TEST(JsonlLines, ManySmallValuesAreRefusedBeforeTheyExhaustMemory) {
     std::string some = R"({"id": 6, "pad": [)";
     for (int i = 0; i < 1000; ++i) some += "[],";
     some += "[]], " + kBox + ", " + kCyl + "}";
-    EXPECT_EQ(answer_line(some, 6, opt).text, R"x({"id": 6, "error": "line 6: pad: unknown key (accepted: id, box, cylinder)"})x");
+    EXPECT_EQ(answer_line(some, 6, opt).text, R"x({"id": 6, "error": "line 6: pad: unknown key (accepted: id, box, cylinder, margin)"})x");
 }
 
 TEST(JsonlHostile, DuplicateKeysAnywhereMakeTheLineBad) {
