@@ -6,10 +6,11 @@
 // Invalid input throws std::invalid_argument naming the field (validate(); the margin must be finite
 // and ≥ 0); within_distance_unchecked() skips that check. Needs the exact backend (boxcyl::exact).
 //
-// How: three probes with the exact intersection query decide most pairs (a cylinder that holds the
-// rounded one — a miss answers no; two that it holds — a hit answers yes); the rim tori's tests in
-// interval arithmetic (filtered/rim.hpp) most of the rest; the exact clearance decision
-// (exact/clearance.hpp) what remains. docs/clearance.md has the method and its figures.
+// How: a table of stages, each answering only what it proves: three probes with the exact intersection
+// query (a cylinder inside the rounded one — a hit answers yes; one that holds it — a miss answers
+// no), certified distance bounds from an approximate closest pair (filtered/separation.hpp), the rim
+// tori's tests in interval arithmetic (filtered/rim.hpp), and the exact clearance decision
+// (exact/clearance.hpp) for what remains. docs/clearance.md has the method and its figures.
 #pragma once
 
 #include <algorithm>    // std::max
@@ -30,6 +31,7 @@
 #include "boxcyl/exact/clearance.hpp"
 #include "boxcyl/exact/convert.hpp"
 #include "boxcyl/filtered/rim.hpp"
+#include "boxcyl/filtered/separation.hpp"
 #endif
 
 namespace boxcyl {
@@ -50,51 +52,103 @@ inline Bounds sum_bounds(double a, double b) {
     return {std::nextafter(s, -inf), std::nextafter(s, inf)};
 }
 
-// One probe: the exact query on a cylinder; when its answer is `decides_when`, it is the answer.
-struct Probe {
-    Cylinder<double> cylinder;
-    bool decides_when;
+// The cylinders the probes ask, sharing the cylinder's centre and axis: `outer` holds the rounded
+// cylinder (radius ≥ r + m, height ≥ h + 2m: a miss is a miss; left out, `outer_valid` false, when
+// those sizes overflow), `fat` and `tall` lie inside it (radius ≤ r + m; height ≤ h + 2m: a hit is a
+// hit).
+struct Grown {
+    Cylinder<double> outer, fat, tall;
+    bool outer_valid;
 };
-
-// The probes, in order: the cylinder holding the rounded one (radius ≥ r + m, height ≥ h + 2m: a miss
-// is a miss), then the fat and tall cylinders it holds (radius ≤ r + m; height ≤ h + 2m: a hit is a
-// hit). A probe whose sizes overflow is left out (`valid` false).
-struct Probes {
-    std::array<Probe, 3> probe;
-    std::array<bool, 3> valid;
-};
-inline Probes probes(const Cylinder<double>& c, double m) {
+inline Grown grown(const Cylinder<double>& c, double m) {
     const Bounds r = sum_bounds(c.radius, m);
     const Bounds h = sum_bounds(c.height, 2 * m);  // 2m is exact, or +∞ (then h.hi = ∞)
-    return {{Probe{{c.center, c.axis, r.hi, h.hi}, false}, Probe{{c.center, c.axis, r.lo, c.height}, true},
-             Probe{{c.center, c.axis, c.radius, h.lo}, true}},
-            {std::isfinite(r.hi) && std::isfinite(h.hi), true, true}};
+    return {{c.center, c.axis, r.hi, h.hi}, {c.center, c.axis, r.lo, c.height}, {c.center, c.axis, c.radius, h.lo},
+            std::isfinite(r.hi) && std::isfinite(h.hi)};
 }
 
 #if defined(BOXCYL_HAS_EXACT)
+// One query on its way through the stages, with what earlier stages proved for later ones.
+template <class Box>
+struct Pair {
+    const Box& box;
+    const Cylinder<double>& cyl;
+    double m;
+    Grown g;
+    filtered::rim::Proved proved{};
+};
+
+// A stage answers (true: within, false: not) or passes (nullopt) to the next.
+template <class Box>
+using Stage = std::optional<bool> (*)(Pair<Box>&);
+
+template <class Box>
+std::optional<bool> fat_probe(Pair<Box>& q) {
+    if (intersects_unchecked(q.box, q.g.fat)) return true;
+    return std::nullopt;
+}
+template <class Box>
+std::optional<bool> outer_probe(Pair<Box>& q) {
+    if (q.g.outer_valid && !intersects_unchecked(q.box, q.g.outer)) return false;
+    return std::nullopt;
+}
+template <class Box>
+std::optional<bool> tall_probe(Pair<Box>& q) {
+    if (intersects_unchecked(q.box, q.g.tall)) return true;
+    return std::nullopt;
+}
+// Certified distance bounds from an approximate closest pair (filtered/separation.hpp).
+template <class Box>
+std::optional<bool> separation(Pair<Box>& q) {
+    const filtered::separation::Bounds b = filtered::separation::bounds(q.box, q.cyl, q.m);
+    if (b.upper <= q.m) return true;
+    if (b.lower > q.m) return false;
+    return std::nullopt;
+}
+// Whether the box misses the exact fat and tall cylinders, proved by missing them with their sizes
+// rounded up.
+template <class Box>
+bool misses_fat_and_tall(const Pair<Box>& q) {
+    const Bounds r = sum_bounds(q.cyl.radius, q.m);
+    const Bounds h = sum_bounds(q.cyl.height, 2 * q.m);
+    return std::isfinite(r.hi) && std::isfinite(h.hi) &&
+           !intersects_unchecked(q.box, Cylinder<double>{q.cyl.center, q.cyl.axis, r.hi, q.cyl.height}) &&
+           !intersects_unchecked(q.box, Cylinder<double>{q.cyl.center, q.cyl.axis, q.cyl.radius, h.hi});
+}
+// The rim tori in intervals (filtered/rim.hpp). Its "no" needs the box to miss the exact fat and tall
+// cylinders: proved by missing them with their sizes rounded up. What it proves far, the exact stage
+// skips.
+template <class Box>
+std::optional<bool> rim(Pair<Box>& q) {
+    const std::optional<bool> r = filtered::rim::decide(q.box, q.cyl, q.m, &q.proved);
+    if (r == true) return true;
+    if (r == false && misses_fat_and_tall(q)) return false;
+    return std::nullopt;
+}
+// The exact decision (exact/clearance.hpp): always answers. Without a proof that the box misses fat
+// and tall it asks them itself, and skips only the edges and facets proved far.
+template <class Box>
+std::optional<bool> exact_stage(Pair<Box>& q) {
+    const exact::clearance::Known known{misses_fat_and_tall(q), q.proved.edge_far, q.proved.facet_far};
+    return exact::clearance::within(exact::clearance::as_parallelepiped(to_exact(q.box)), to_exact(q.cyl),
+                                    to_rational(q.m), known);
+}
+
+// The order is policy: on random pairs most are decided by one probe (the fat cylinder's hit or the
+// outer one's miss, one exact intersection query each); the separation bounds, dearer, decide nearly
+// all of the rest; the rim tests and the exact decision are for pairs within rounding of the margin
+// (docs/clearance.md gives the measured shares).
+template <class Box>
+inline constexpr std::array<Stage<Box>, 6> stages{&fat_probe<Box>, &outer_probe<Box>, &tall_probe<Box>,
+                                                  &separation<Box>, &rim<Box>, &exact_stage<Box>};
+
 template <class Box>
 bool within(const Box& box, const Cylinder<double>& cyl, double m) {
     if (m == 0) return intersects_unchecked(box, cyl);
-    const Probes p = probes(cyl, m);
-    for (std::size_t i = 0; i < p.probe.size(); ++i)
-        if (p.valid[i] && intersects_unchecked(box, p.probe[i].cylinder) == p.probe[i].decides_when)
-            return p.probe[i].decides_when;
-    // The rim tori in intervals. A "no" needs the box to miss the exact fat and tall cylinders: proved
-    // by missing the fat and tall cylinders with their sizes rounded up.
-    filtered::rim::Proved proved;
-    const std::optional<bool> rim = filtered::rim::decide(box, cyl, m, &proved);
-    if (rim == true) return true;
-    const Bounds r = sum_bounds(cyl.radius, m);
-    const Bounds h = sum_bounds(cyl.height, 2 * m);
-    const exact::clearance::Known known{std::isfinite(r.hi) && std::isfinite(h.hi) &&
-                                      !intersects_unchecked(box, Cylinder<double>{cyl.center, cyl.axis, r.hi, cyl.height}) &&
-                                      !intersects_unchecked(box, Cylinder<double>{cyl.center, cyl.axis, cyl.radius, h.hi}),
-                                  proved.edge_far, proved.facet_far};
-    // "No" needs the box to miss fat and tall (the rim tests' completeness); without that proof the
-    // exact decision asks them itself, and skips only the edges and facets proved far (facts alone).
-    if (rim == false && known.misses_fat_and_tall) return false;
-    return exact::clearance::within(exact::clearance::as_parallelepiped(to_exact(box)), to_exact(cyl),
-                                    to_rational(m), known);
+    Pair<Box> q{box, cyl, m, grown(cyl, m)};
+    for (const Stage<Box> stage : stages<Box>)
+        if (const std::optional<bool> answer = stage(q)) return *answer;
+    return false;  // not reached: the exact stage always answers
 }
 #endif
 

@@ -378,8 +378,8 @@ void cells_within_walk(const Grid& g, const Cylinder<double>& c, double margin, 
     auto ask = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
         if (within_distance_unchecked(cell_box(g, {i, j, k}), c, margin)) f(i, j, k);
     };
-    const detail::clearance::Probes p = detail::clearance::probes(c, margin);
-    if (p.valid[0]) return walk(p.probe[0].cylinder, ask);
+    const detail::clearance::Grown grown = detail::clearance::grown(c, margin);
+    if (grown.outer_valid) return walk(grown.outer, ask);
     // Sizes beyond the double range: every cell is a candidate.
     for (std::int64_t i = 0; i < g.counts[0]; ++i)
         for (std::int64_t j = 0; j < g.counts[1]; ++j)

@@ -18,6 +18,7 @@
 
 #include <algorithm>  // std::min, std::max
 #include <array>      // vertices, edges
+#include <cmath>      // std::ldexp, std::ilogb, std::isfinite
 #include <optional>   // undecided
 
 #include "boxcyl/geometry/box.hpp"
@@ -33,21 +34,42 @@ using V = Vec3<Interval>;
 
 inline V lift(const Vec3<double>& v) { return {I(v[0]), I(v[1]), I(v[2])}; }
 
+// A NaN bound (after an overflow) proves nothing; the clamps below (std::max) would hide it.
+inline bool is_nan(const I& x) { return x.lo() != x.lo() || x.hi() != x.hi(); }
+
 // The box as intervals: centre and half axes eᵢ·Aᵢ.
 struct Box {
     V center;
     std::array<V, 3> half;
 };
 
-// The cylinder and margin in intervals: u = D/|D| enclosed.
+// D scaled by a power of two, exactly, to a largest component in [1, 2) where that is exact (always
+// for short axes: scaling up is exact short of overflow), so that |D|² neither underflows nor
+// overflows; otherwise D itself. The direction, all that counts, is unchanged.
+inline Vec3<double> scaled_axis(const Vec3<double>& D) {
+    const double big = std::max({std::abs(D[0]), std::abs(D[1]), std::abs(D[2])});
+    if (!(big > 0) || !std::isfinite(big)) return D;
+    const int k = -std::ilogb(big);
+    Vec3<double> s;
+    for (int i = 0; i < 3; ++i) {
+        s[i] = std::ldexp(D[i], k);
+        if (std::ldexp(s[i], -k) != D[i]) return D;  // a component would lose bits
+    }
+    return s;
+}
+
+// The cylinder and margin in intervals: u = D/|D| enclosed. `valid` is false when the enclosure is not
+// finite (then nothing is proved with it).
 struct Rims {
     Rims(const Cylinder<double>& c, double m) : C(lift(c.center)), r(c.radius), half_h(I(c.height) * I(0.5)), m2(I(m) * I(m)) {
-        const V D = lift(c.axis);
+        const V D = lift(scaled_axis(c.axis));
         const I len = sqrt(dot(D, D));
         u = {D[0] / len, D[1] / len, D[2] / len};
+        for (int i = 0; i < 3; ++i) valid = valid && std::isfinite(u[i].lo()) && std::isfinite(u[i].hi());
     }
     V C, u;
     I r, half_h, m2;
+    bool valid = true;
 };
 
 // Lower bound of x² over x in [lo(x0, x1) .. ] for x linear between x0 and x1 (its extremes at the ends).
@@ -68,6 +90,7 @@ inline I vertex_excess(const Rims& f, const V& X, int eps) {
     const V Z = X - f.C;
     const I t = dot(Z, f.u);
     const I rho2 = dot(Z, Z) - t * t;
+    if (is_nan(rho2)) return rho2;
     const I rho = sqrt(I(std::max(0.0, rho2.lo()), std::max(0.0, rho2.hi())));
     const I a = t - I(eps) * f.half_h;
     const I d = rho - f.r;
@@ -86,10 +109,15 @@ inline double edge_lower_bound(const Rims& f, const V& X0, const V& E, int eps) 
     const I B = I(2) * (dot(Z0, E) - t0 * tE);
     const I C0 = dot(Z0, Z0) - t0 * t0;
     const I q1 = A + B + C0;
+    if (is_nan(t0) || is_nan(t1) || is_nan(A) || is_nan(B) || is_nan(C0) || is_nan(q1)) return 0;  // nothing proved
     double min_q = std::min(C0.lo(), q1.lo());
     if (A.lo() > 0) {
         const I s = -B / (I(2) * A);
-        if (!(s.hi() < 0 || s.lo() > 1)) min_q = std::min(min_q, (C0 - B * B / (I(4) * A)).lo());
+        if (!(s.hi() < 0 || s.lo() > 1)) {
+            const double vertex = (C0 - B * B / (I(4) * A)).lo();
+            if (vertex != vertex) return 0;  // NaN: nothing proved
+            min_q = std::min(min_q, vertex);
+        }
     } else {
         min_q = std::min(min_q, 0.0);  // A may vanish: no vertex bound; ρ ≥ 0 still
     }
@@ -128,7 +156,7 @@ inline bool facet_far(const Rims& f, const V& XF, const V& Aj, const V& Ak, int 
     const I nu = dot(n, f.u);
     const V nperp = n - V{nu * f.u[0], nu * f.u[1], nu * f.u[2]};
     const I np2 = dot(nperp, nperp);
-    if (!(nn.lo() > 0)) return false;  // nothing proved (a degenerate facet)
+    if (!(nn.lo() > 0) || is_nan(np2)) return false;  // nothing proved (a degenerate facet, or NaN)
     const V c = f.C + V{I(eps) * f.half_h * f.u[0], I(eps) * f.half_h * f.u[1], I(eps) * f.half_h * f.u[2]};
     // The whole plane far from Γ: |n·(P − X_F)| ≥ |n·(c − X_F)| − r·|n⊥| for every P on Γ.
     const double gap = enclosure_abs(dot(n, c - XF)).lo() - (f.r * sqrt(I(0.0, std::max(0.0, np2.hi())))).hi();
@@ -189,9 +217,10 @@ struct Proved {
 template <class AnyBox>
 std::optional<bool> decide(const AnyBox& b, const Cylinder<double>& c, double m, Proved* proved = nullptr) {
     const Rims f(c, m);
-    const Box box = enclose(b);
     Proved local;
     Proved& p = proved ? *proved : local;
+    if (!f.valid) return std::nullopt;  // nothing proved
+    const Box box = enclose(b);
     std::array<V, 8> vertex;
     for (int bits = 0; bits < 8; ++bits) {
         V v = box.center;

@@ -1,0 +1,156 @@
+// The certified distance bounds of filtered/separation.hpp (lower ≤ dist(box, cylinder) ≤ upper),
+// judged by the independent clearance oracle (tests/clearance/): the box comes within `upper` of the
+// cylinder, and not within the double below `lower`. On random pairs of every generator profile, on a
+// lattice of small integer shapes (distances often exactly rational), with and without a margin to
+// decide at, and in every rounding mode. A violation prints the case as C++ to paste into a test.
+#include <gtest/gtest.h>
+
+#include <cfenv>    // rounding modes
+#include <cmath>    // std::nextafter, std::isfinite
+#include <cstdint>  // seeds
+#include <cstdio>   // std::printf
+#include <random>   // fixed-seed generators
+
+#include "boxcyl/filtered/separation.hpp"
+#include "clearance/clearance_oracle.hpp"
+#include "support/cases.hpp"
+#include "support/fp.hpp"  // RoundingMode
+
+namespace boxcyl {
+namespace {
+
+using namespace boxcyl::testing;
+
+Parallelepiped<Rational> exact_box(const Case& c) {
+    const OrientedBox<Rational> o = c.kind == BoxKind::aligned    ? as_oriented_box(to_exact(c.aligned))
+                                    : c.kind == BoxKind::oriented ? to_exact(c.oriented)
+                                                                  : as_oriented_box(to_exact(c.canonical));
+    return {o.center, o.axes, o.extents};
+}
+
+filtered::separation::Bounds bounds_of(const Case& c, double decide_at) {
+    return with_box(c, [&](const auto& box, const Cylinder<double>& cyl) { return filtered::separation::bounds(box, cyl, decide_at); });
+}
+
+struct Tally {
+    long checked = 0, converged = 0, tight = 0;
+    int violations = 0;
+};
+
+// Both bounds judged; of the separated pairs (lower > 0) searched to convergence (no margin to decide
+// at), "tight" counts those whose bounds are within 2^-20 of each other, relatively.
+void judge(const Case& c, double decide_at, Tally& t) {
+    const filtered::separation::Bounds b = bounds_of(c, decide_at);
+    const Parallelepiped<Rational> box = exact_box(c);
+    const Cylinder<Rational> cyl = to_exact(c.cylinder);
+    ++t.checked;
+    bool ok = true;
+    if (std::isfinite(b.upper) && !clearance_oracle::within(box, cyl, to_rational(b.upper))) ok = false;
+    if (b.lower > 0 && clearance_oracle::within(box, cyl, to_rational(std::nextafter(b.lower, 0.0)))) ok = false;
+    if (!(b.lower >= 0) || !(b.lower <= b.upper || b.upper != b.upper)) ok = false;
+    if (!ok && ++t.violations <= 5)
+        ADD_FAILURE() << "bounds [" << hex(b.lower) << ", " << hex(b.upper) << "] (decide_at " << hex(decide_at)
+                      << ") do not hold for\n" << describe(c);
+    if (decide_at < 0 && b.lower > 0) {
+        ++t.converged;
+        if (b.upper - b.lower <= 0x1p-20 * b.upper) ++t.tight;
+    }
+}
+
+TEST(SeparationJudged, RandomPairsEveryProfile) {
+    Tally t;
+    for (Profile p : {Profile::mixed, Profile::degenerate, Profile::uniform, Profile::georeferenced, Profile::magnitudes}) {
+        const std::uint64_t seed = 0x5e9a0100 + static_cast<std::uint64_t>(p);
+        CaseGenerator gen(seed, p);
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        for (int i = 0; i < (p == Profile::magnitudes ? 20 : 150); ++i) {
+            const Case c = gen.next();
+            judge(c, -1, t);
+            judge(c, unit(rng) * (c.cylinder.radius + c.cylinder.height), t);
+        }
+    }
+    std::printf("random pairs: %ld bounds judged, %ld of %ld separated ones tight, %d violations\n", t.checked, t.tight,
+                t.converged, t.violations);
+    EXPECT_EQ(t.violations, 0);
+    EXPECT_GT(t.tight, t.converged * 9 / 10);
+}
+
+TEST(SeparationJudged, IntegerLattice) {
+    std::mt19937_64 rng(0x5e9a0300);
+    auto integer = [&](int lo, int hi) { return static_cast<double>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
+    Tally t;
+    for (int i = 0; i < 400; ++i) {
+        Case c;
+        c.cylinder = {{integer(-3, 3), integer(-3, 3), integer(-3, 3)},
+                      {integer(-2, 2), integer(-2, 2), integer(-2, 2)}, integer(0, 3), 2 * integer(0, 3)};
+        if (c.cylinder.axis == Vec3<double>{0, 0, 0}) c.cylinder.axis = {0, 0, 1};
+        if (i % 2 == 0) {
+            c.kind = BoxKind::aligned;
+            for (int k = 0; k < 3; ++k) {
+                const double a = integer(-7, 7), b = integer(-7, 7);
+                c.aligned.min[k] = std::min(a, b);
+                c.aligned.max[k] = std::max(a, b);
+            }
+        } else {
+            c.kind = BoxKind::oriented;  // integer axes of any length: judged as the parallelepiped they span
+            c.oriented.center = {integer(-6, 6), integer(-6, 6), integer(-6, 6)};
+            for (auto& axis : c.oriented.axes) axis = {integer(-2, 2), integer(-2, 2), integer(-2, 2)};
+            c.oriented.extents = {integer(0, 2) / 2, integer(0, 2) / 2, integer(0, 2) / 2};
+        }
+        judge(c, -1, t);
+        judge(c, integer(0, 12) / 2, t);
+    }
+    std::printf("lattice: %ld bounds judged, %ld of %ld separated ones tight, %d violations\n", t.checked, t.tight,
+                t.converged, t.violations);
+    EXPECT_EQ(t.violations, 0);
+}
+
+TEST(SeparationJudged, EveryRoundingMode) {
+    Tally t;
+    for (Profile p : {Profile::mixed, Profile::uniform, Profile::georeferenced, Profile::degenerate}) {
+        CaseGenerator gen(0x5e9a0400 + static_cast<std::uint64_t>(p), p);
+        for (int i = 0; i < 25; ++i) {
+            const Case c = gen.next();
+            for (const int mode : {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+                const RoundingMode scope(mode);
+                const filtered::separation::Bounds b = bounds_of(c, -1);
+                const RoundingMode nearest(FE_TONEAREST);  // the judge in round to nearest
+                const Parallelepiped<Rational> box = exact_box(c);
+                const Cylinder<Rational> cyl = to_exact(c.cylinder);
+                ++t.checked;
+                const bool ok = (!std::isfinite(b.upper) || clearance_oracle::within(box, cyl, to_rational(b.upper))) &&
+                                !(b.lower > 0 && clearance_oracle::within(box, cyl, to_rational(std::nextafter(b.lower, 0.0))));
+                if (!ok && ++t.violations <= 5)
+                    ADD_FAILURE() << "rounding mode " << mode_name(mode) << ": bounds [" << hex(b.lower) << ", "
+                                  << hex(b.upper) << "] do not hold for\n" << describe(c);
+            }
+        }
+    }
+    std::printf("rounding modes: %ld bounds judged, %d violations\n", t.checked, t.violations);
+    EXPECT_EQ(t.violations, 0);
+}
+
+// Hand constructions with a known distance: the bounds hold and are tight.
+TEST(SeparationJudged, KnownDistances) {
+    struct Known {
+        AlignedBox<double> box;
+        Cylinder<double> cyl;
+        double distance;
+    };
+    const Known known[] = {
+        {{{0, 0, 0}, {1, 1, 1}}, {{3, 0.5, 0.5}, {0, 0, 1}, 1, 1}, 1},     // face to side
+        {{{0, 0, 0}, {1, 1, 1}}, {{0.5, 0.5, 4}, {0, 0, 2}, 5, 2}, 2},     // face to cap
+        {{{0, 0, 0}, {1, 1, 1}}, {{4, 5, 0.5}, {0, 0, 1}, 0, 1}, 5},       // edge to segment: (3, 4)
+        {{{0, 0, 0}, {1, 1, 1}}, {{0.5, 0.5, 0.5}, {1, 2, 3}, 0.25, 0.5}, 0},  // inside
+    };
+    for (const Known& k : known) {
+        const filtered::separation::Bounds b = filtered::separation::bounds(k.box, k.cyl);
+        EXPECT_LE(b.lower, k.distance);
+        EXPECT_GE(b.upper, k.distance);
+        EXPECT_LE(b.upper - b.lower, 0x1p-40 * (1 + k.distance)) << "[" << hex(b.lower) << ", " << hex(b.upper) << "]";
+    }
+}
+
+}  // namespace
+}  // namespace boxcyl
