@@ -131,6 +131,28 @@ TEST(SeparationJudged, EveryRoundingMode) {
     EXPECT_EQ(t.violations, 0);
 }
 
+// Cases that once failed: axes whose |D|² underflows (the enclosure of u was NaN, and a clamp turned
+// NaN bounds into a "proved" zero distance).
+TEST(SeparationJudged, Regressions) {
+    Tally t;
+    Case a;
+    a.kind = BoxKind::aligned;
+    a.aligned = {{0x1.1e4cea68ce309p-19, 0x1.22a5147a07a7cp-18, -0x1.ac9c9c74b5dd2p-19},
+                 {0x1.8b39734232a27p-19, 0x1.371a807e2a844p-18, 0x1.5f7383d26023ap-19}};
+    a.cylinder = {{0x1.5ea7ce3998c8cp-19, 0x1.1a9d41628c39p-20, -0x1.e1b7c560777fap-20},
+                  {0x0p+0, 0x0p+0, -0x0.0000000000006p-1022}, 0x1.6b8592bba4ea6p-22, 0x1.7d5b2e9bfa81fp-17};
+    Case b;
+    b.kind = BoxKind::canonical;
+    b.canonical = {{0x1.d711a85a819c6p-363, 0x1.109ced2aa36fp-366, 0x1.c1f5a69ce9492p-404}};
+    b.cylinder = {{0x1.664f96a8bf3d8p-327, -0x1.b2cfb36de023cp-329, 0x1.264aa14f2d2b7p-327},
+                  {0x0p+0, 0x0.0000000000018p-1022, 0x0p+0}, 0x1.1b1d609480bb1p-325, 0x1.7e429d39211bbp-404};
+    for (const Case& c : {a, b}) {
+        judge(c, -1, t);
+        judge(c, c.cylinder.radius, t);
+    }
+    EXPECT_EQ(t.violations, 0);
+}
+
 // Hand constructions with a known distance: the bounds hold and are tight.
 TEST(SeparationJudged, KnownDistances) {
     struct Known {
