@@ -7,18 +7,30 @@
 // Benchmarks: within_distance on each set; the exact default intersects() on the random pairs (the
 // margin's cost over the plain question); plain double §4 ({inequalities, float64}) intersects() on
 // the at-margin pairs (a rounded query's cost on the same shapes).
+// Built with -DBOXCYL_BENCH_PEERS=ON, also the peer libraries' answers to the same question on both
+// sets (peers.hpp: FCL's and Bullet's distance ≤ m), checked against within_distance once before any
+// timing (counter wrong: the answers that differ) and timed in the same run.
 // Counter ns_per_query: time per query in nanoseconds (Google Benchmark prints it with a unit
-// suffix read as a plain number: "1.5k" is 1,500 ns).
+// suffix read as a plain number: "1.5k" is 1,500 ns). A table from the same run follows the output:
+// time per query, its ratio to within_distance's on the same set, and the wrong answers (also among the
+// small queries, every length below 0.01, where the peers' absolute tolerances of about 1e-6 are not small).
 // Run: bench_clearance --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
-#include <cmath>    // std::nextafter
-#include <cstdint>  // seeds, bit patterns
-#include <random>   // margins
-#include <vector>   // the sets
+#include <algorithm>  // std::sort
+#include <cmath>      // std::nextafter
+#include <cstdint>    // seeds, bit patterns
+#include <cstdio>     // the summary: std::printf, std::snprintf
+#include <memory>     // the peers' queries
+#include <random>     // margins
+#include <string>     // names
+#include <vector>     // the sets
 
 #include "boxcyl/clearance.hpp"
 #include "support/cases.hpp"
+#ifdef BOXCYL_BENCH_PEERS
+#include "peers.hpp"
+#endif
 
 namespace {
 
@@ -80,14 +92,18 @@ const std::vector<Query>& at_margin_set() {
     return s;
 }
 
+void set_ns_per_query(benchmark::State& state, std::size_t queries) {
+    state.counters["ns_per_query"] = benchmark::Counter(
+        static_cast<double>(queries) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 template <class F>
 void run(benchmark::State& state, const std::vector<Query>& set, F&& f) {
     std::size_t hits = 0;
     for (auto _ : state)
         for (const Query& q : set) hits += f(q);
     benchmark::DoNotOptimize(hits);
-    state.counters["ns_per_query"] = benchmark::Counter(
-        static_cast<double>(set.size()) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    set_ns_per_query(state, set.size());
 }
 
 void BM_within_random(benchmark::State& state) { run(state, random_set(), within); }
@@ -105,11 +121,142 @@ void BM_float64_at_margin(benchmark::State& state) {
     });
 }
 
-BENCHMARK(BM_within_random);
-BENCHMARK(BM_intersects_random);
-BENCHMARK(BM_within_at_margin);
-BENCHMARK(BM_float64_at_margin);
+// ---- the summary: per set, each benchmark's time per query beside within_distance's ----
+
+struct Row {
+    std::string set, name, label;
+    long wrong = -1, false_pos = 0, false_neg = 0;  // against within_distance; -1: not the same question
+    long small = 0, small_wrong = 0;  // queries below bench::kSmallSize, and the wrong answers among them
+    std::size_t queries = 0;
+    std::vector<double> ns;  // ns_per_query of each repetition, or the median aggregate alone
+    bool median_aggregate = false;
+};
+std::vector<Row> g_rows;
+
+Row& add_row(std::string set, std::string name, std::string label, std::size_t queries) {
+    g_rows.push_back(Row{std::move(set), std::move(name), std::move(label), -1, 0, 0, 0, 0, queries, {}, false});
+    return g_rows.back();
+}
+
+#ifdef BOXCYL_BENCH_PEERS
+std::vector<std::unique_ptr<boxcyl::bench::PeerQueries>> g_peer_queries;
+
+// Each peer on `set`: converted and compared with within_distance once, untimed, then registered to be
+// timed as within_distance is (one pass answers every query in order).
+void add_peers(const std::string& set_name, const std::vector<Query>& set) {
+    std::vector<Case> cases;
+    std::vector<double> margins;
+    std::vector<char> want;
+    for (const Query& q : set) {
+        cases.push_back(q.c);
+        margins.push_back(q.margin);
+        want.push_back(within(q));
+    }
+    for (const boxcyl::bench::ClearancePeerInfo& info : boxcyl::bench::kClearancePeers) {
+        g_peer_queries.push_back(std::make_unique<boxcyl::bench::PeerQueries>(info.peer, cases, margins));
+        const boxcyl::bench::PeerQueries* q = g_peer_queries.back().get();
+        const std::string name = std::string("BM_") + info.key + "_" + set_name;
+        Row& r = add_row(set_name, name, info.label, set.size());
+        r.wrong = 0;
+        for (std::size_t i = 0; i < set.size(); ++i) {
+            const bool got = q->answer(i), small = boxcyl::bench::query_size(cases[i]) < boxcyl::bench::kSmallSize;
+            r.small += small;
+            if (got == bool(want[i])) continue;
+            ++r.wrong;
+            ++(got ? r.false_pos : r.false_neg);
+            r.small_wrong += small;
+        }
+        const std::size_t n = set.size();
+        const double wrong = static_cast<double>(r.wrong);
+        benchmark::RegisterBenchmark(name.c_str(), [q, n, wrong](benchmark::State& state) {
+            long hits = 0;
+            for (auto _ : state) hits += q->pass(n);
+            benchmark::DoNotOptimize(hits);
+            set_ns_per_query(state, n);
+            state.counters["wrong"] = wrong;
+        });
+    }
+}
+#endif
+
+class SummaryReporter : public benchmark::ConsoleReporter {
+public:
+    void ReportRuns(const std::vector<Run>& runs) override {
+        ConsoleReporter::ReportRuns(runs);
+        for (const Run& run : runs) {
+            const auto c = run.counters.find("ns_per_query");
+            if (run.error_occurred || c == run.counters.end()) continue;
+            for (Row& r : g_rows) {
+                if (r.name != run.run_name.str() || r.median_aggregate) continue;
+                if (run.run_type == Run::RT_Aggregate && run.aggregate_name == "median") {
+                    r.ns = {c->second.value};
+                    r.median_aggregate = true;
+                } else if (run.run_type == Run::RT_Iteration) {
+                    r.ns.push_back(c->second.value);
+                }
+            }
+        }
+    }
+};
+
+double median(std::vector<double> v) {
+    if (v.empty()) return -1;
+    std::sort(v.begin(), v.end());
+    const std::size_t k = v.size() / 2;
+    return v.size() % 2 ? v[k] : (v[k - 1] + v[k]) / 2;
+}
+
+std::string ns_text(double ns) {
+    char b[32];
+    if (ns >= 1e6) std::snprintf(b, sizeof b, "%.2f ms", ns / 1e6);
+    else if (ns >= 1e4) std::snprintf(b, sizeof b, "%.1f µs", ns / 1e3);
+    else std::snprintf(b, sizeof b, "%.0f ns", ns);
+    return b;
+}
+
+void print_summary() {
+    std::printf("\n| set | query | time per query | ratio to within_distance | wrong vs within_distance "
+                "(false yes, false no) | wrong among the small queries |\n| --- | --- | ---: | ---: | ---: | ---: |\n");
+    for (const Row& r : g_rows) {
+        const double ns = median(r.ns);
+        if (ns < 0) continue;
+        double base = -1;
+        for (const Row& b : g_rows)
+            if (b.set == r.set && b.name.rfind("BM_within_", 0) == 0) base = median(b.ns);
+        std::printf("| %s (%zu) | %s | %s | ", r.set.c_str(), r.queries, r.label.c_str(), ns_text(ns).c_str());
+        if (base > 0) std::printf("%.3g× | ", ns / base);
+        else std::printf("— | ");
+        if (r.wrong < 0) std::printf("— | — |\n");
+        else
+            std::printf("%ld (%.2f%%; %ld, %ld) | %ld / %ld |\n", r.wrong,
+                        100.0 * static_cast<double>(r.wrong) / static_cast<double>(r.queries), r.false_pos, r.false_neg,
+                        r.small_wrong, r.small);
+    }
+}
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    // Both sets before any timing (the at-margin set's bisections take a while).
+    const std::vector<Query>& rs = random_set();
+    const std::vector<Query>& as = at_margin_set();
+    benchmark::RegisterBenchmark("BM_within_random", BM_within_random);
+    add_row("random", "BM_within_random", "boxcyl within_distance (exact)", rs.size());
+    benchmark::RegisterBenchmark("BM_intersects_random", BM_intersects_random);
+    add_row("random", "BM_intersects_random", "boxcyl intersects(), exact default (margin ignored)", rs.size());
+    benchmark::RegisterBenchmark("BM_within_at_margin", BM_within_at_margin);
+    add_row("at_margin", "BM_within_at_margin", "boxcyl within_distance (exact)", as.size());
+    benchmark::RegisterBenchmark("BM_float64_at_margin", BM_float64_at_margin);
+    add_row("at_margin", "BM_float64_at_margin", "boxcyl intersects(), plain double §4 (margin ignored)", as.size());
+#ifdef BOXCYL_BENCH_PEERS
+    add_peers("random", rs);
+    add_peers("at_margin", as);
+#endif
+    SummaryReporter reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    benchmark::Shutdown();
+    print_summary();
+    return 0;
+}

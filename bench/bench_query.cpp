@@ -231,7 +231,7 @@ Check check(const DataSet& s, std::size_t n, const char* key) {
 struct PeerDetail {
     bool present = false;
     long false_pos = 0, false_neg = 0;
-    long small = 0, small_wrong = 0;  // queries below kSmallSize, and the wrong answers among them
+    long small = 0, small_wrong = 0;  // queries below bench::kSmallSize, and the wrong answers among them
 };
 
 struct Entry {
@@ -285,23 +285,9 @@ void add_method(const DataSet& s, Method m) {
     }
 }
 
-// "Small" queries, where the peers' absolute tolerances (FCL's default gjk_tolerance 1e-6, …) are
-// no longer small: every length of the query (box sides, cylinder diameter and height) is below this.
-constexpr double kSmallSize = 0.01;
-
 #ifdef BOXCYL_BENCH_PEERS
-
-double query_size(const Case& c) {
-    double m = std::max(2 * c.cylinder.radius, c.cylinder.height);
-    for (int i = 0; i < 3; ++i) {
-        switch (c.kind) {
-            case BoxKind::aligned: m = std::max(m, c.aligned.max[i] - c.aligned.min[i]); break;
-            case BoxKind::oriented: m = std::max(m, 2 * c.oriented.extents[i]); break;
-            case BoxKind::canonical: m = std::max(m, 2 * c.canonical.extents[i]); break;
-        }
-    }
-    return m;
-}
+using bench::kSmallSize;
+using bench::query_size;
 
 // The peers' queries, converted once per data set; the registered benchmarks point into them.
 std::vector<std::unique_ptr<bench::PeerQueries>> g_peer_queries;
@@ -436,6 +422,7 @@ void print_summary(std::FILE* out, const std::vector<DataSet>& sets, long sample
                          fraction_text(e.exact_fraction).c_str(), wrong.c_str());
         }
     }
+#ifdef BOXCYL_BENCH_PEERS
     bool peers = false;
     for (const Entry& e : g_entries) peers |= e.peer.present && e.check.wrong >= 0;
     if (peers) {
@@ -451,6 +438,7 @@ void print_summary(std::FILE* out, const std::vector<DataSet>& sets, long sample
                          e.peer.small_wrong, e.peer.small);
         }
     }
+#endif
     if (!parts.empty()) {
         std::fprintf(out, "\n**Where the default query's time goes** (random queries; each row's ratio is to double §4 on the same queries)\n\n");
         std::fprintf(out, "| queries | default query | double §4 | ratio | exact fallbacks |\n");

@@ -16,14 +16,17 @@
 #include <cmath>      // std::sqrt, std::copysign, std::ilogb, std::scalbn, std::fabs
 #include <cstdarg>    // va_list (ODE's message handlers)
 #include <mutex>      // std::call_once
+#include <optional>   // Bullet's distance, when it has one
 #include <stdexcept>  // std::logic_error, std::runtime_error
 #include <utility>    // std::pair
 
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/cylinder.h>
 #include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
 
 #include <btBulletCollisionCommon.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
 #include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
@@ -129,7 +132,21 @@ struct PeerQueries::Impl {
 
 namespace {
 
-// ---- FCL 0.7: fcl::collide on two shapes, GJK solver libccd (the default) or FCL's own ----
+// answer() and the timed pass of a library whose query(i) never fails.
+template <class Library>
+struct Answering : PeerQueries::Impl {
+    bool answer(std::size_t i) const override { return self().query(i); }
+    long pass(std::size_t n) const override {
+        long hits = 0;
+        for (std::size_t i = 0; i < n; ++i) hits += self().query(i);
+        return hits;
+    }
+
+private:
+    const Library& self() const { return static_cast<const Library&>(*this); }
+};
+
+// ---- FCL 0.7: fcl::collide and fcl::distance on two shapes, GJK solver libccd (the default) or FCL's own ----
 
 fcl::Transform3d fcl_transform(const Placed& p) {
     fcl::Transform3d t = fcl::Transform3d::Identity();
@@ -139,44 +156,65 @@ fcl::Transform3d fcl_transform(const Placed& p) {
     return t;
 }
 
-class Fcl final : public PeerQueries::Impl {
-public:
-    Fcl(const std::vector<Case>& cases, fcl::GJKSolverType solver) {
-        request_.num_max_contacts = 1;
-        request_.enable_contact = false;  // a yes/no query
-        request_.gjk_solver_type = solver;
-        boxes_.reserve(cases.size());
-        cylinders_.reserve(cases.size());
+// Each query's shapes and placements in FCL's form, shared by the intersection and distance queries.
+struct FclShapes {
+    explicit FclShapes(const std::vector<Case>& cases) {
+        boxes.reserve(cases.size());
+        cylinders.reserve(cases.size());
         for (const Case& c : cases) {
             const BoxPose b = box_pose(c);
             const CylinderPose y = cylinder_pose(c);
-            boxes_.emplace_back(2 * b.half[0], 2 * b.half[1], 2 * b.half[2]);  // side lengths
-            cylinders_.emplace_back(y.radius, y.height);
-            box_tf_.push_back(fcl_transform(b));
-            cylinder_tf_.push_back(fcl_transform(y));
+            boxes.emplace_back(2 * b.half[0], 2 * b.half[1], 2 * b.half[2]);  // side lengths
+            cylinders.emplace_back(y.radius, y.height);
+            box_tf.push_back(fcl_transform(b));
+            cylinder_tf.push_back(fcl_transform(y));
         }
     }
-    bool answer(std::size_t i) const override { return query(i); }
-    long pass(std::size_t n) const override {
-        long hits = 0;
-        for (std::size_t i = 0; i < n; ++i) hits += query(i);
-        return hits;
-    }
+    std::vector<fcl::Boxd> boxes;
+    std::vector<fcl::Cylinderd> cylinders;
+    std::vector<fcl::Transform3d> box_tf, cylinder_tf;
+};
 
-private:
+class Fcl final : public Answering<Fcl> {
+public:
+    Fcl(const std::vector<Case>& cases, fcl::GJKSolverType solver) : s_(cases) {
+        request_.num_max_contacts = 1;
+        request_.enable_contact = false;  // a yes/no query
+        request_.gjk_solver_type = solver;
+    }
+    // Called by Answering, not virtually: the timed pass is the library's call alone.
     bool query(std::size_t i) const {
         fcl::CollisionResultd result;
-        fcl::collide(&boxes_[i], box_tf_[i], &cylinders_[i], cylinder_tf_[i], request_, result);
+        fcl::collide(&s_.boxes[i], s_.box_tf[i], &s_.cylinders[i], s_.cylinder_tf[i], request_, result);
         return result.isCollision();
     }
 
+private:
+    FclShapes s_;
     fcl::CollisionRequestd request_;
-    std::vector<fcl::Boxd> boxes_;
-    std::vector<fcl::Cylinderd> cylinders_;
-    std::vector<fcl::Transform3d> box_tf_, cylinder_tf_;
 };
 
-// ---- Bullet 3.24 (double): btGjkPairDetector, Voronoi simplex solver, GJK–EPA penetration depth ----
+// The clearance question: fcl::distance ≤ m. For shapes in contact FCL returns an unspecified
+// distance ≤ 0 (mostly −1) unless asked for the signed one, which a yes/no question needs not.
+class FclDistance final : public Answering<FclDistance> {
+public:
+    FclDistance(const std::vector<Case>& cases, const std::vector<double>& margins, fcl::GJKSolverType solver)
+        : s_(cases), margins_(margins) {
+        request_.gjk_solver_type = solver;  // defaults otherwise: no nearest points, distance_tolerance 1e-6
+    }
+    // Called by Answering, not virtually: the timed pass is the library's call alone.
+    bool query(std::size_t i) const {
+        fcl::DistanceResultd result;
+        return fcl::distance(&s_.boxes[i], s_.box_tf[i], &s_.cylinders[i], s_.cylinder_tf[i], request_, result) <= margins_[i];
+    }
+
+private:
+    FclShapes s_;
+    std::vector<double> margins_;
+    fcl::DistanceRequestd request_;
+};
+
+// ---- Bullet 3.24 (double): btGjkPairDetector, Voronoi simplex solver, GJK–EPA penetration depth; btGjkEpaSolver2 ----
 
 btTransform bullet_transform(const Placed& p) {
     const Mat3& r = p.rotation;
@@ -194,42 +232,72 @@ std::unique_ptr<Shape> bullet_shape(const btVector3& half) {
     return s;
 }
 
-class Bullet final : public PeerQueries::Impl {
-public:
-    explicit Bullet(const std::vector<Case>& cases) {
+// Each query's shapes and placements in Bullet's form, shared by the intersection and distance queries.
+struct BulletShapes {
+    explicit BulletShapes(const std::vector<Case>& cases) {
         for (const Case& c : cases) {
             const BoxPose b = box_pose(c);
             const CylinderPose y = cylinder_pose(c);
-            boxes_.push_back(bullet_shape<btBoxShape>(btVector3(b.half[0], b.half[1], b.half[2])));
-            cylinders_.push_back(bullet_shape<btCylinderShapeZ>(btVector3(y.radius, y.radius, 0.5 * y.height)));
+            boxes.push_back(bullet_shape<btBoxShape>(btVector3(b.half[0], b.half[1], b.half[2])));
+            cylinders.push_back(bullet_shape<btCylinderShapeZ>(btVector3(y.radius, y.radius, 0.5 * y.height)));
             btGjkPairDetector::ClosestPointInput in;  // maximum distance: unlimited (the default)
             in.m_transformA = bullet_transform(b);
             in.m_transformB = bullet_transform(y);
-            inputs_.push_back(in);
+            inputs.push_back(in);
         }
     }
-    bool answer(std::size_t i) const override { return query(i); }
-    long pass(std::size_t n) const override {
-        long hits = 0;
-        for (std::size_t i = 0; i < n; ++i) hits += query(i);
-        return hits;
+    // btGjkPairDetector's reported distance (negative: penetration depth from EPA), or no result at
+    // all (GJK or EPA gave up).
+    std::optional<double> gjk_distance(std::size_t i) const {
+        btVoronoiSimplexSolver simplex;
+        btGjkEpaPenetrationDepthSolver depth;
+        btGjkPairDetector gjk(boxes[i].get(), cylinders[i].get(), &simplex, &depth);
+        btPointCollector out;
+        gjk.getClosestPoints(inputs[i], out, nullptr);
+        if (!out.m_hasResult) return std::nullopt;
+        return out.m_distance;
+    }
+    std::vector<std::unique_ptr<btBoxShape>> boxes;
+    std::vector<std::unique_ptr<btCylinderShapeZ>> cylinders;
+    std::vector<btGjkPairDetector::ClosestPointInput> inputs;
+};
+
+// btGjkPairDetector: intersecting (clearance: within m) when the reported distance is ≤ 0 (≤ m). No
+// result counts as no contact, as Bullet's own convex–convex algorithm treats it.
+class Bullet final : public Answering<Bullet> {
+public:
+    explicit Bullet(const std::vector<Case>& cases) : s_(cases), margins_(cases.size(), 0.0) {}
+    Bullet(const std::vector<Case>& cases, const std::vector<double>& margins) : s_(cases), margins_(margins) {}
+    // Called by Answering, not virtually: the timed pass is the library's call alone.
+    bool query(std::size_t i) const {
+        const std::optional<double> d = s_.gjk_distance(i);
+        return d && *d <= margins_[i];
     }
 
 private:
-    // Intersecting: a reported distance ≤ 0 (negative: penetration depth from EPA). No result at all
-    // (GJK or EPA gave up) counts as no contact, as Bullet's own convex–convex algorithm treats it.
+    BulletShapes s_;
+    std::vector<double> margins_;
+};
+
+// btGjkEpaSolver2::Distance, the GJK that Bullet's soft bodies and btGjkEpaPenetrationDepthSolver use:
+// it returns false for shapes that are not separated, status Penetrating or GJK_Failed (which Bullet
+// reads as "probably just touching"), and both count as within m.
+class BulletGjkEpa2 final : public Answering<BulletGjkEpa2> {
+public:
+    BulletGjkEpa2(const std::vector<Case>& cases, const std::vector<double>& margins) : s_(cases), margins_(margins) {}
+    // Called by Answering, not virtually: the timed pass is the library's call alone.
     bool query(std::size_t i) const {
-        btVoronoiSimplexSolver simplex;
-        btGjkEpaPenetrationDepthSolver depth;
-        btGjkPairDetector gjk(boxes_[i].get(), cylinders_[i].get(), &simplex, &depth);
-        btPointCollector out;
-        gjk.getClosestPoints(inputs_[i], out, nullptr);
-        return out.m_hasResult && out.m_distance <= 0;
+        btGjkEpaSolver2::sResults r;
+        const btTransform& a = s_.inputs[i].m_transformA;
+        const btTransform& b = s_.inputs[i].m_transformB;
+        if (!btGjkEpaSolver2::Distance(s_.boxes[i].get(), a, s_.cylinders[i].get(), b, b.getOrigin() - a.getOrigin(), r))
+            return true;
+        return r.distance <= margins_[i];
     }
 
-    std::vector<std::unique_ptr<btBoxShape>> boxes_;
-    std::vector<std::unique_ptr<btCylinderShapeZ>> cylinders_;
-    std::vector<btGjkPairDetector::ClosestPointInput> inputs_;
+private:
+    BulletShapes s_;
+    std::vector<double> margins_;
 };
 
 // ---- ODE 0.16 (double): dCollide on a box geom and a cylinder geom, in no space ----
@@ -315,6 +383,17 @@ PeerQueries::PeerQueries(Peer peer, const std::vector<Case>& cases) {
         case Peer::fcl_indep: impl_ = std::make_unique<Fcl>(cases, fcl::GST_INDEP); break;
         case Peer::bullet: impl_ = std::make_unique<Bullet>(cases); break;
         case Peer::ode: impl_ = std::make_unique<Ode>(cases); break;
+    }
+    if (!impl_) throw std::logic_error("unknown peer library");
+}
+
+PeerQueries::PeerQueries(ClearancePeer peer, const std::vector<Case>& cases, const std::vector<double>& margins) {
+    if (margins.size() != cases.size()) throw std::logic_error("one margin per query");
+    switch (peer) {
+        case ClearancePeer::fcl_libccd: impl_ = std::make_unique<FclDistance>(cases, margins, fcl::GST_LIBCCD); break;
+        case ClearancePeer::fcl_indep: impl_ = std::make_unique<FclDistance>(cases, margins, fcl::GST_INDEP); break;
+        case ClearancePeer::bullet_gjk: impl_ = std::make_unique<Bullet>(cases, margins); break;
+        case ClearancePeer::bullet_gjkepa2: impl_ = std::make_unique<BulletGjkEpa2>(cases, margins); break;
     }
     if (!impl_) throw std::logic_error("unknown peer library");
 }

@@ -1,19 +1,38 @@
 // The same box–cylinder queries through peer collision libraries: FCL's GJK, Bullet's GJK
 // pair detector and ODE's dCollide, from Debian's packages. Built only with -DBOXCYL_BENCH_PEERS=ON
-// (bench/CMakeLists.txt); bench_query.cpp times them beside boxcyl's queries in the same run.
+// (bench/CMakeLists.txt); bench_query.cpp times them beside boxcyl's queries in the same run, and
+// bench_clearance.cpp the clearance question (within a distance m?) beside within_distance.
 //
 // Each library gets the queries converted once, untimed, into its own shapes and transforms (so the
 // timed loop is the library's narrow-phase call alone, which favours the peers: boxcyl's times
 // include its own reduction to the canonical frame). See peers.cpp for the mapping of each query.
 #pragma once
 
-#include <cstddef>  // std::size_t
-#include <memory>   // std::unique_ptr
-#include <vector>   // the queries
+#include <algorithm>  // std::max
+#include <cstddef>    // std::size_t
+#include <memory>     // std::unique_ptr
+#include <vector>     // the queries
 
 #include "support/cases.hpp"
 
 namespace boxcyl::bench {
+
+// "Small" queries, where the peers' absolute tolerances (FCL's default gjk_tolerance 1e-6, …) are
+// no longer small: every length of the query (box sides, cylinder diameter and height) is below this.
+inline constexpr double kSmallSize = 0.01;
+
+inline double query_size(const boxcyl::testing::Case& c) {
+    using boxcyl::testing::BoxKind;
+    double m = std::max(2 * c.cylinder.radius, c.cylinder.height);
+    for (int i = 0; i < 3; ++i) {
+        switch (c.kind) {
+            case BoxKind::aligned: m = std::max(m, c.aligned.max[i] - c.aligned.min[i]); break;
+            case BoxKind::oriented: m = std::max(m, 2 * c.oriented.extents[i]); break;
+            case BoxKind::canonical: m = std::max(m, 2 * c.canonical.extents[i]); break;
+        }
+    }
+    return m;
+}
 
 enum class Peer { fcl_libccd, fcl_indep, bullet, ode };
 
@@ -30,17 +49,37 @@ inline constexpr PeerInfo kPeers[] = {
     {Peer::ode, "ode", "ODE dCollide (box–cylinder)"},
 };
 
+// The clearance question (is the box within distance m of the cylinder?) as each library can ask it.
+// FCL 0.7's CollisionRequest has no security margin (Coal's has), and ODE has neither a margin nor a
+// box–cylinder distance, so these are distance queries compared with m.
+enum class ClearancePeer { fcl_libccd, fcl_indep, bullet_gjk, bullet_gjkepa2 };
+
+struct ClearancePeerInfo {
+    ClearancePeer peer;
+    const char* key;
+    const char* label;
+};
+
+inline constexpr ClearancePeerInfo kClearancePeers[] = {
+    {ClearancePeer::fcl_libccd, "fcl_distance_libccd", "FCL distance() ≤ m, solver GST_LIBCCD (FCL's default)"},
+    {ClearancePeer::fcl_indep, "fcl_distance_indep", "FCL distance() ≤ m, solver GST_INDEP"},
+    {ClearancePeer::bullet_gjk, "bullet_gjk_distance", "Bullet btGjkPairDetector distance ≤ m (margins 0)"},
+    {ClearancePeer::bullet_gjkepa2, "bullet_gjkepa2_distance", "Bullet btGjkEpaSolver2::Distance ≤ m (margins 0)"},
+};
+
 // One data set's queries in one peer library's representation.
 class PeerQueries {
 public:
     PeerQueries(Peer peer, const std::vector<boxcyl::testing::Case>& cases);
+    // The clearance question: query i asks whether its box is within margins[i] of its cylinder.
+    PeerQueries(ClearancePeer peer, const std::vector<boxcyl::testing::Case>& cases, const std::vector<double>& margins);
     ~PeerQueries();
     PeerQueries(const PeerQueries&) = delete;
     PeerQueries& operator=(const PeerQueries&) = delete;
 
-    // Whether the library reports that query i's box and cylinder intersect.
+    // Whether the library reports that query i's box and cylinder intersect (clearance: are within its margin).
     bool answer(std::size_t i) const;
-    // Answers queries 0 … n−1 in order (the timed pass), except failed ones; returns how many intersect.
+    // Answers queries 0 … n−1 in order (the timed pass), except failed ones; returns how many say yes.
     long pass(std::size_t n) const;
     // Whether the library failed on query i when it was first tried (ODE's internal assertions): its
     // answer counts as false, and the timed passes leave it out.

@@ -8,6 +8,7 @@
 #include <cerrno>     // errno after a failed open
 #include <cmath>      // std::isfinite, std::cos, std::sin
 #include <cstdio>     // std::snprintf
+#include <cstdlib>    // std::strtod
 #include <cstring>    // std::strerror
 #include <istream>    // the input
 #include <limits>     // the double range (amount), skipping whole lines
@@ -62,6 +63,17 @@ std::string num(double x, int digits = 6) {
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.*g", digits, std::fabs(x));
     return (x < 0 ? "−" : "") + std::string(buf);
+}
+
+// As num(), with the digits reading it back needs (6 to 17): a margin decides at one ulp, so the
+// double below 0.0625 must not read "0.0625".
+std::string num_exact(double x) {
+    for (int d = 6; d < 17; ++d) {
+        char buf[40];
+        std::snprintf(buf, sizeof buf, "%.*g", d, x);
+        if (std::strtod(buf, nullptr) == x) return num(x, d);
+    }
+    return num(x, 17);
 }
 
 // A distance, gap or overlap for the sentences: as num(), but one beyond the double range (computed as
@@ -186,13 +198,20 @@ constexpr const char* orange_line = "#c77800";
 constexpr const char* red = "#d0021b";
 constexpr const char* grey = "#8a8a8a";
 constexpr const char* text_dark = "#222";
+// The cylinder grown by the margin: its outline, dashed (a boundary, not a solid of the query).
+std::string margin_line() {
+    return "fill=\"none\" stroke=\"" + std::string(orange_line) + "\" stroke-width=\"1.6\" stroke-dasharray=\"7,4\"";
+}
 
 const char* verdict_colour(const Explanation& e) {
-    if (e.what == Case::touching_within_rounding) return "#9a5b00";
-    return e.exact_intersects ? "#1a7f37" : "#c62828";
+    if (e.what == Case::touching_within_rounding && !e.margin) return "#9a5b00";
+    return e.verdict() ? "#1a7f37" : "#c62828";
 }
 
 std::string verdict_title(const Explanation& e) {
+    if (e.margin)
+        return std::string(e.exact_within ? "Within" : "Not within") + " distance " + num_exact(*e.margin) +
+               (e.exact_intersects ? " (intersects)" : "");
     std::string t = e.exact_intersects ? "Intersects" : "Does not intersect";
     if (e.what == Case::touching) t += " (touching)";
     if (e.what == Case::touching_end_plane) t += " (touching an end)";
@@ -201,7 +220,7 @@ std::string verdict_title(const Explanation& e) {
 }
 
 // The sentences under the title: what the picture shows, in the picture's words.
-std::vector<std::string> verdict_lines(const Explanation& e) {
+std::vector<std::string> plane_lines(const Explanation& e) {
     const std::string d = amount(e.distance), r = num(e.radius);
     switch (e.what) {
         case Case::axis_through:
@@ -249,6 +268,24 @@ std::vector<std::string> verdict_lines(const Explanation& e) {
     return {};
 }
 
+// With a margin, a first sentence for the verdict (the rest explains the cylinder itself).
+std::vector<std::string> verdict_lines(const Explanation& e) {
+    std::vector<std::string> lines = plane_lines(e);
+    if (!e.margin) return lines;
+    const std::string m = num_exact(*e.margin);
+    std::string first;
+    if (!e.exact_within)
+        first = "Exact answer: the box is farther than " + m + " from the cylinder; it misses the cylinder grown by " + m +
+                " (dashed).";
+    else if (e.exact_intersects)
+        first = "Exact answer: within " + m + ", since the box meets the cylinder itself (distance 0).";
+    else
+        first = "Exact answer: the box misses the cylinder but comes within " + m + " of it: it meets the cylinder grown by " +
+                m + " (dashed).";
+    lines.insert(lines.begin(), first);
+    return lines;
+}
+
 // Frame and caption of a panel.
 void panel(Svg& svg, const Rect& r, const std::string& caption) {
     svg.rect(r, "fill=\"#fbfbfd\" stroke=\"#c8c8d0\"");
@@ -290,7 +327,8 @@ void main_panel(Svg& svg, const Explanation& e, const Rect& r) {
 
     // Fit what matters: the polygon, the disk, the axis point (the whole box may be far larger).
     Extent ext;
-    ext.add(-e.radius, -e.radius), ext.add(e.radius, e.radius), ext.add(0, 0);
+    const double reach = e.margin ? e.radius + *e.margin : e.radius;  // the grown cylinder's disk, if any
+    ext.add(-reach, -reach), ext.add(reach, reach), ext.add(0, 0);
     for (const Point2& p : e.polygon) ext.add(p.x, p.y);
     if (ext.width() == 0 && ext.height() == 0)
         for (const Point2& p : e.box_shadow) ext.add(p.x, p.y);
@@ -331,6 +369,12 @@ void main_panel(Svg& svg, const Explanation& e, const Rect& r) {
     svg.raw("</g>\n");
     if (!e.polygon.empty()) svg.shape(pts(e.polygon), poly_line);
     svg.shape(pts(e.box_shadow), "fill=\"none\" " + dashed);
+    if (e.margin) {
+        // Seen along the axis, the cylinder grown by m is the disk of radius r + m.
+        svg.raw("<g id=\"margin\">\n");
+        svg.circle(m.x(0), m.y(0), reach * m.scale, margin_line());
+        svg.raw("</g>\n");
+    }
 
     // Screen direction from the axis towards the closest point (to the right when there is none),
     // and its perpendicular; labels go beside lines, never on them.
@@ -350,6 +394,12 @@ void main_panel(Svg& svg, const Explanation& e, const Rect& r) {
         const double ex = m.x(0) - sx * rpx, ey = m.y(0) - sy * rpx;
         svg.line(m.x(0), m.y(0), ex, ey, "stroke=\"" + std::string(orange_line) + "\" stroke-width=\"1.5\"");
         label(svg, ex - sx * 8, ey - sy * 8 + 5, "radius " + num(e.radius), anchor(-sx), 13, true, orange_line, lo, hi);
+    }
+    // The grown disk's label beside its rim, across from the gap and the radius.
+    if (e.margin) {
+        const double gx = m.x(0) + nx * reach * m.scale, gy = m.y(0) + ny * reach * m.scale;
+        label(svg, gx + nx * 10, gy + ny * 10 + 5, "radius + margin " + num(reach), anchor(nx), 13, false, orange_line,
+              lo, hi);
     }
 
     svg.raw("<g id=\"axis-point\">\n");
@@ -415,21 +465,29 @@ void axial_strip(Svg& svg, const Explanation& e, const Rect& r) {
         svg.raw("</g>\n");
         return;
     }
-    const double lo = std::min(-e.half_height, e.box_axial_min), hi = std::max(e.half_height, e.box_axial_max);
+    const double grown = e.half_height + (e.margin ? *e.margin : 0);  // the grown cylinder's reach along the axis
+    const double lo = std::min(-grown, e.box_axial_min), hi = std::max(grown, e.box_axial_max);
     const double span = hi > lo ? hi - lo : 1;
     const double x0 = r.x + 170, x1 = r.x + r.w - 120;
     auto X = [&](double t) { return x0 + (x1 - x0) * (t - lo) / span - (hi > lo ? 0 : (x1 - x0) / 2); };
     const double y1 = r.y + 36, y2 = r.y + 62;
     const int digits = distinguishing_digits({-e.half_height, e.half_height, e.box_axial_min, e.box_axial_max});
-    auto band = [&](double a, double b, double y, const char* fill, const char* stroke, const std::string& name) {
+    // A band from a to b, its end values outside [a − reach, b + reach] (clear of the grown cylinder's outline).
+    auto band = [&](double a, double b, double y, const char* fill, const char* stroke, const std::string& name,
+                    double reach = 0) {
         double xa = X(a), xb = X(b);
         if (xb - xa < 3) xa -= 1.5, xb += 1.5;  // a point stays visible
         svg.rect({xa, y - 8, xb - xa, 16}, "fill=\"" + std::string(fill) + "\" stroke=\"" + stroke + "\"");
         svg.text(r.x + 10, y + 5, name, "font-size=\"12\" fill=\"" + std::string(text_dark) + "\"");
-        if (a != b) svg.text(xa - 4, y + 5, num(a, digits), "font-size=\"11\" fill=\"#555\" text-anchor=\"end\"");
-        svg.text(xb + 4, y + 5, num(b, digits), "font-size=\"11\" fill=\"#555\"");
+        const double la = std::min(xa, X(a - reach)), lb = std::max(xb, X(b + reach));
+        if (a != b) svg.text(la - 4, y + 5, num(a, digits), "font-size=\"11\" fill=\"#555\" text-anchor=\"end\"");
+        svg.text(lb + 4, y + 5, num(b, digits), "font-size=\"11\" fill=\"#555\"");
     };
-    band(-e.half_height, e.half_height, y1, orange_fill, orange_line, "cylinder (slab)");
+    band(-e.half_height, e.half_height, y1, orange_fill, orange_line, "cylinder (slab)", grown - e.half_height);
+    if (e.margin) {  // the grown cylinder reaches m beyond each end plane
+        const double xa = X(-grown), xb = X(grown);
+        svg.rect({xa, y1 - 11, xb - xa, 22}, margin_line());
+    }
     band(e.box_axial_min, e.box_axial_max, y2, blue_fill, blue_line, "box");
     svg.raw("</g>\n");
 }
@@ -479,6 +537,7 @@ void ortho_views(Svg& svg, const Explanation& e, const std::array<Rect, 3>& rect
         else ta = -hh, tb = -hh + reach;
     }
     const std::vector<Vec3<double>> near_a = rim_points(e, ta, n), near_b = rim_points(e, tb, n);
+    const double margin = e.margin ? *e.margin : 0;
 
     // One scale for the three views, so sizes compare across them.
     double scale = 0;
@@ -487,7 +546,10 @@ void ortho_views(Svg& svg, const Explanation& e, const std::array<Rect, 3>& rect
         const View& v = views[k];
         for (const auto& p : e.box_vertices) ext[k].add(p[v.a], p[v.b]);
         for (const auto* rim : {&near_a, &near_b})
-            for (const auto& p : *rim) ext[k].add(p[v.a], p[v.b]);
+            for (const auto& p : *rim) {
+                ext[k].add(p[v.a] - margin, p[v.b] - margin);
+                ext[k].add(p[v.a] + margin, p[v.b] + margin);
+            }
         const Rect inner{rects[k].x, rects[k].y + 22, rects[k].w, rects[k].h - 22};
         const double s = fit_scale(ext[k], inner, 14);
         scale = k == 0 ? s : std::min(scale, s);
@@ -521,6 +583,22 @@ void ortho_views(Svg& svg, const Explanation& e, const std::array<Rect, 3>& rect
         both.insert(both.end(), bottom.begin(), bottom.end());
         svg.shape(hull_of(both), "fill=\"" + std::string(orange_fill) + "\" fill-opacity=\"0.85\" stroke=\"" +
                                      orange_line + "\" stroke-width=\"1.2\"");
+        if (margin > 0) {
+            // The grown cylinder projects to the cylinder's outline grown by a disk of radius m: around
+            // each outline vertex a circle of radius m, and their hull (straight sides at r + m and
+            // h/2 + m, corners rounded by m).
+            std::vector<Point2> outline;
+            for (const auto& p : both) outline.push_back({p[v.a], p[v.b]});
+            std::vector<Point2> grown;
+            for (const Point2& q : algo::hull2d::monotone_chain(std::move(outline)))
+                for (int i = 0; i < 24; ++i) {
+                    const double a = 2 * std::numbers::pi * i / 24;
+                    grown.push_back({q.x + margin * std::cos(a), q.y + margin * std::sin(a)});
+                }
+            std::vector<std::pair<double, double>> out;
+            for (const Point2& h : algo::hull2d::monotone_chain(std::move(grown))) out.emplace_back(m.x(h.x), m.y(h.y));
+            svg.shape(out, margin_line());
+        }
         for (const auto* rim : {&top, &bottom}) {
             std::string p;
             for (const auto& q : *rim) p += px(to2(q).first) + "," + px(to2(q).second) + " ";
@@ -547,7 +625,7 @@ void ortho_views(Svg& svg, const Explanation& e, const std::array<Rect, 3>& rect
 
 // --- legend -------------------------------------------------------------------------------------
 
-void legend(Svg& svg, const Rect& r) {
+void legend(Svg& svg, const Rect& r, const Explanation& e) {
     svg.raw("<g id=\"legend\">\n");
     panel(svg, r, "Legend");
     double y = r.y + 40;
@@ -573,6 +651,10 @@ void legend(Svg& svg, const Rect& r) {
     entry("<line x1=\"" + px(x) + "\" y1=\"" + px(y - 4) + "\" x2=\"" + px(x + 24) + "\" y2=\"" + px(y - 4) +
               "\" stroke=\"" + red + "\" stroke-width=\"3\"/>\n",
           {"gap = distance − radius (overlap when < 0)"});
+    if (e.margin)
+        entry("<rect x=\"" + px(x) + "\" y=\"" + px(y - 11) + "\" width=\"24\" height=\"14\" rx=\"5\" " +
+                  margin_line() + "/>\n",
+              {"the cylinder grown by the margin: every point", "within it of the cylinder (the verdict's solid)"});
     svg.raw("</g>\n");
 }
 
@@ -595,12 +677,14 @@ std::vector<std::string> input_lines(const Query& q) {
     }
     const Cylinder<double>& c = q.cylinder;
     lines.push_back("cylinder: centre " + vec(c.center) + ", axis " + vec(c.axis) + ", radius " + num(c.radius) +
-                    ", height " + num(c.height));
+                    ", height " + num(c.height) + (q.margin ? "; margin " + num_exact(*q.margin) : ""));
     return lines;
 }
 
 std::string render(const Explanation& e, const std::string& label, const std::vector<std::string>& inputs) {
-    const double W = 1040, H = 950;
+    // A margin adds a legend entry (and a verdict line): the page grows by its height.
+    const double grow = e.margin ? 37 : 0;
+    const double W = 1040, H = 950 + grow;
     Svg svg;
     svg.raw("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     svg.raw("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + px(W) + "\" height=\"" + px(H) + "\" viewBox=\"0 0 " +
@@ -608,7 +692,7 @@ std::string render(const Explanation& e, const std::string& label, const std::ve
     const std::string title = "boxcyl explain" + (label.empty() ? "" : ": query " + label) + ": " + verdict_title(e);
     svg.raw("<title>" + xml_escape(title) + "</title>\n");
 
-    const Rect main_r{24, 146, 600, 600}, axial_r{24, 756, 600, 80}, legend_r{650, 756, 366, 180};
+    const Rect main_r{24, 146, 600, 600}, axial_r{24, 756, 600, 80}, legend_r{650, 756, 366, 180 + grow};
     const std::array<Rect, 3> view_r{{{650, 146, 366, 192}, {650, 350, 366, 192}, {650, 554, 366, 192}}};
     svg.raw("<defs>\n<marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" "
             "markerHeight=\"7\" orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#555\"/></marker>\n" +
@@ -619,12 +703,15 @@ std::string render(const Explanation& e, const std::string& label, const std::ve
     svg.raw("<g id=\"verdict\">\n");
     svg.text(24, 44, verdict_title(e), "font-size=\"30\" font-weight=\"bold\" fill=\"" + std::string(verdict_colour(e)) + "\"");
     svg.text(W - 24, 44, label.empty() ? "" : "query " + label, "font-size=\"15\" fill=\"#555\" text-anchor=\"end\"");
-    double y = 70;
-    for (const std::string& l : verdict_lines(e)) {
+    // Two sentences (three with a margin, closer together) above the inputs.
+    const std::vector<std::string> sentences = verdict_lines(e);
+    const double step = sentences.size() > 2 ? 16 : 18;
+    double y = sentences.size() > 2 ? 66 : 70;
+    for (const std::string& l : sentences) {
         svg.text(24, y, l, "font-size=\"14\" fill=\"" + std::string(text_dark) + "\"");
-        y += 18;
+        y += step;
     }
-    y = 106;
+    y = sentences.size() > 2 ? 112 : 106;
     for (const std::string& l : inputs) {
         svg.text(24, y, l, "font-size=\"11\" fill=\"#666\"");
         y += 13;
@@ -634,7 +721,7 @@ std::string render(const Explanation& e, const std::string& label, const std::ve
     main_panel(svg, e, main_r);
     axial_strip(svg, e, axial_r);
     ortho_views(svg, e, view_r);
-    legend(svg, legend_r);
+    legend(svg, legend_r, e);
 
     // For a newcomer: how to read the main panel, and where the verdict comes from.
     double ty = 858;
@@ -642,7 +729,8 @@ std::string render(const Explanation& e, const std::string& label, const std::ve
              "How to read this: seen along its axis, the cylinder is a disk. Only the part of the",
              "box between the cylinder's two end planes (the slab) can touch it; seen the same way,",
              "that part is the blue polygon. They intersect exactly when the polygon reaches the disk.",
-             "The verdict is the exact answer of boxcyl::intersects; the drawing is in double precision.",
+             e.margin ? "The verdict is the exact answer of boxcyl::within_distance; the drawing is in double precision."
+                      : "The verdict is the exact answer of boxcyl::intersects; the drawing is in double precision.",
          }) {
         svg.text(24, ty, l, "font-size=\"12\" fill=\"#444\"");
         ty += 16;
@@ -710,6 +798,8 @@ void add_explain_command(CLI::App& app, ExplainCommand& cmd) {
         "\"radius\":1,\"height\":1}}' | boxcyl explain > picture.svg\n\n"
         "The verdict is the exact answer (as `boxcyl intersect` gives by default); the drawing is in double\n"
         "precision and says so when the two differ (inputs within rounding of touching).\n\n"
+        "With a \"margin\": M key the verdict is whether the box is within distance M of the cylinder\n"
+        "(exact, as `intersect` answers it), and the cylinder grown by M is drawn dashed.\n\n"
         "With --line N only the first N lines of the input are read.\n\n"
         "EXIT STATUS\n"
         "  0  the picture was written\n"
@@ -812,9 +902,13 @@ int run_explain(const ExplainCommand& cmd, std::istream& in, std::ostream& out, 
         return exit_bad_lines;
     }
     const Query& q = *p.query;
-    // The verdict is the default query's (exact), as `intersect` gives it.
-    const bool verdict = run_query(q, QueryOptions{});
-    const Explanation e = std::visit([&](const auto& box) { return explain::compute(box, q.cylinder, verdict); }, q.box);
+    // The verdicts are the default query's (exact), as `intersect` gives them: intersects for the
+    // picture of the cylinder itself, and with a margin (validated by parse_line) within_distance.
+    Query plain = q;
+    plain.margin.reset();
+    const bool intersects = run_query(plain, QueryOptions{});
+    Explanation e = std::visit([&](const auto& box) { return explain::compute(box, q.cylinder, intersects); }, q.box);
+    if (q.margin) e = explain::with_margin(e, *q.margin, run_query(q, QueryOptions{}));
     const std::string svg = render(e, p.id, input_lines(q));
 
     if (!cmd.output.empty()) return write_file(cmd.output, svg, err);

@@ -21,10 +21,11 @@ namespace boxcyl::cli {
 // empty) goes into the title, `inputs` (lines describing the query) under it; all text is XML-escaped.
 std::string render_svg(const explain::Explanation& e, const std::string& label, const std::vector<std::string>& inputs = {});
 
-// The SVG element ids a picture carries (the tests look for them), by what they show.
+// The SVG element ids a picture carries (the tests look for them), by what they show; "margin" (the
+// cylinder grown by the margin, seen along the axis) only when the query has a margin.
 inline constexpr const char* svg_ids[] = {
     "verdict", "polygon", "disk", "axis-point", "closest", "gap", "box-shadow", "axial", "legend",
-    "view-top", "view-front", "view-side",
+    "view-top", "view-front", "view-side", "margin",
 };
 
 // The `explain` subcommand's command-line state.

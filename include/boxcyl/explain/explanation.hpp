@@ -10,6 +10,10 @@
 // picture's: it comes from the exact default query boxcyl::intersects (or is handed in), and when the
 // double picture disagrees with it — inputs within rounding of touching — the explanation says so
 // (Case::touching_within_rounding) instead of drawing a wrong answer.
+//
+// With a margin m the question is the clearance one (boxcyl::within_distance: is the box within
+// distance m of the cylinder?), whose exact answer becomes the verdict; the construction above still
+// explains whether the box meets the cylinder itself, and the picture adds the cylinder grown by m.
 #pragma once
 
 #include <algorithm>  // std::min, std::max
@@ -17,6 +21,7 @@
 #include <cmath>    // std::sqrt, std::fabs, std::hypot
 #include <cstddef>  // std::size_t
 #include <initializer_list>  // loops over point sets
+#include <optional>  // the margin
 #include <utility>  // std::pair
 #include <vector>   // point sets
 
@@ -26,7 +31,8 @@
 #include "boxcyl/geometry/reduce.hpp"  // to_unit
 #include "boxcyl/geometry/vec3.hpp"
 #if defined(BOXCYL_HAS_EXACT)
-#include "boxcyl/query.hpp"  // the exact verdict
+#include "boxcyl/clearance.hpp"  // the exact verdict with a margin
+#include "boxcyl/query.hpp"      // the exact verdict
 #endif
 
 namespace boxcyl::explain {
@@ -80,6 +86,13 @@ struct Explanation {
     bool picture_intersects = false;  // what the double picture alone would say: !slab_empty && d ≤ r
     Case what = Case::gap;
 
+    // The clearance question, when asked (with_margin): the margin m and the exact answer of
+    // within_distance. exact_intersects and `what` still describe the cylinder itself.
+    std::optional<double> margin;
+    bool exact_within = false;
+
+    // The picture's verdict: within the margin when one is given, else intersects.
+    bool verdict() const { return margin ? exact_within : exact_intersects; }
     // d − r: > 0 a gap between the disk and the polygon, < 0 an overlap (radial depth).
     double gap() const { return distance - radius; }
     // Along the axis: > 0 how far the box lies beyond the nearer end plane, ≤ 0 it reaches the slab.
@@ -238,11 +251,25 @@ Explanation compute(const Box& box, const Cylinder<double>& cyl, bool exact_inte
     return e;
 }
 
+// The clearance question on top of a picture: `exact_within` must be the exact answer of
+// within_distance(box, cyl, margin) for the picture's inputs, and `margin` valid (validate_margin).
+inline Explanation with_margin(Explanation e, double margin, bool exact_within) {
+    e.margin = margin;
+    e.exact_within = exact_within;
+    return e;
+}
+
 #if defined(BOXCYL_HAS_EXACT)
 // The same with the exact verdict of the default query.
 template <class Box>
 Explanation compute(const Box& box, const Cylinder<double>& cyl) {
     return compute(box, cyl, boxcyl::intersects(box, cyl));
+}
+
+// The picture of the clearance question: both exact answers computed (intersects, within_distance).
+template <class Box>
+Explanation compute_within(const Box& box, const Cylinder<double>& cyl, double margin) {
+    return with_margin(compute(box, cyl), margin, boxcyl::within_distance(box, cyl, margin));
 }
 #endif
 

@@ -213,6 +213,34 @@ errors)
     rc=$?
     [[ $rc == 3 ]] || fail "--line 1 <dir: exited $rc, expected 3"
     ;;
+margin)
+    # "margin": the verdict is within_distance's and the grown cylinder is drawn; the box of $query is
+    # exactly 0.0625 from the cylinder, so that margin turns "does not intersect" into "within".
+    with_margin() { printf '%s\n' "${query%\}}, \"margin\": $1}"; }
+    with_margin 0.0625 >"$work/stdin"
+    run 0 explain -o "$work/at.svg"
+    well_formed "$work/at.svg" || fail "margin 0.0625: not well-formed XML"
+    contains "$work/at.svg" ">Within distance 0.0625<"
+    contains "$work/at.svg" 'id="margin"'
+    contains "$work/at.svg" "height 1; margin 0.0625<"
+    contains "$work/at.svg" "boxcyl::within_distance"
+    with_margin 0.062499999999999993 >"$work/stdin"
+    run 0 explain -o "$work/below.svg"
+    well_formed "$work/below.svg" || fail "margin below: not well-formed XML"
+    contains "$work/below.svg" ">Not within distance 0.06249999999999999<"
+    printf '%s\n' "$query" >"$work/stdin"
+    run 0 explain -o "$work/none.svg"
+    contains "$work/none.svg" ">Does not intersect<"
+    lacks "$work/none.svg" 'id="margin"'
+    # A bad margin is refused as `intersect` refuses it, naming the field.
+    with_margin -1 >"$work/stdin"
+    run 1 explain
+    contains "$work/err" "boxcyl: line 1: margin: is negative"
+    [[ -s $work/out ]] && fail "margin -1: wrote a picture"
+    with_margin '"1"' >"$work/stdin"
+    run 1 explain
+    contains "$work/err" "margin: expected a number"
+    ;;
 extreme)
     # Coordinates near the double range: distances right or "more than" the range, never NaN.
     printf '%s\n' \

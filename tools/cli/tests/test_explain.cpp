@@ -6,7 +6,7 @@
 
 #include <algorithm>  // std::max, std::count
 #include <array>      // frames
-#include <cmath>      // std::fabs, std::ldexp
+#include <cmath>      // std::fabs, std::ldexp, std::nextafter
 #include <string>
 #include <vector>
 
@@ -238,13 +238,64 @@ TEST(ExplainSvg, CarriesEveryElementAndTheVerdict) {
     const std::string svg = cli::render_svg(e, "\"gap-side-face\"");
     EXPECT_EQ(svg.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
     EXPECT_EQ(svg.substr(svg.size() - 7), "</svg>\n");
-    for (const char* id : cli::svg_ids) EXPECT_NE(svg.find("id=\"" + std::string(id) + "\""), std::string::npos) << id;
+    for (const std::string id : cli::svg_ids)
+        EXPECT_EQ(svg.find("id=\"" + id + "\"") != std::string::npos, id != "margin") << id;  // no margin asked
     EXPECT_NE(svg.find(">Does not intersect<"), std::string::npos);
     EXPECT_NE(svg.find(">gap 0.0625<"), std::string::npos);
     EXPECT_NE(svg.find(">radius 0.4375<"), std::string::npos);
     EXPECT_NE(svg.find("closest point, distance 0.5"), std::string::npos);
     EXPECT_EQ(svg.find("nan"), std::string::npos);
     EXPECT_EQ(svg.find("inf"), std::string::npos);
+}
+
+// The clearance question: the verdict is within_distance's, and the margin is drawn. The box lies
+// exactly 0.0625 beside the cylinder (a side face against the side), so a margin of 0.0625 turns "does
+// not intersect" into "within", and the double below it does not.
+TEST(ExplainSvg, MarginIsTheVerdictAndIsDrawn) {
+    const Cylinder<double> c{{1.5, 0.5, 0.5}, {0, 0, 1}, 0.4375, 1};
+    const Explanation at = explain::compute_within(unit_box(), c, 0.0625);
+    EXPECT_FALSE(at.exact_intersects);
+    EXPECT_TRUE(at.exact_within);
+    EXPECT_TRUE(at.verdict());
+    EXPECT_EQ(at.what, Case::gap);  // the picture of the cylinder itself is unchanged
+    const std::string svg = cli::render_svg(at, "\"m\"");
+    for (const char* id : cli::svg_ids) EXPECT_NE(svg.find("id=\"" + std::string(id) + "\""), std::string::npos) << id;
+    EXPECT_NE(svg.find("<title>boxcyl explain: query &quot;m&quot;: Within distance 0.0625</title>"), std::string::npos);
+    EXPECT_NE(svg.find(">Within distance 0.0625<"), std::string::npos);
+    EXPECT_NE(svg.find("it meets the cylinder grown by 0.0625 (dashed)"), std::string::npos);
+    EXPECT_NE(svg.find(">radius + margin 0.5<"), std::string::npos);
+    EXPECT_NE(svg.find(">gap 0.0625<"), std::string::npos);  // to the cylinder itself
+    EXPECT_NE(svg.find("the cylinder grown by the margin"), std::string::npos);  // the legend
+    EXPECT_NE(svg.find("boxcyl::within_distance"), std::string::npos);
+    EXPECT_EQ(svg.find("NaN"), std::string::npos);
+    // The margin's disk in the view along the axis: radius r + m = 0.5 around the axis point.
+    const auto g = svg.find("<g id=\"margin\">");
+    ASSERT_NE(g, std::string::npos);
+    EXPECT_NE(svg.find("stroke-dasharray=\"7,4\"", g), std::string::npos);
+
+    const Explanation below = explain::compute_within(unit_box(), c, std::nextafter(0.0625, 0.0));
+    EXPECT_FALSE(below.verdict());
+    const std::string no = cli::render_svg(below, "");
+    EXPECT_NE(no.find(">Not within distance 0.06249999999999999<"), std::string::npos);  // every digit it needs
+    EXPECT_NE(no.find("the box is farther than 0.06249999999999999 from the cylinder"), std::string::npos);
+
+    // Without a margin the same shapes do not intersect; with one the box meeting the cylinder says so.
+    EXPECT_FALSE(explain::compute(unit_box(), c).verdict());
+    const Cylinder<double> inside{{0.5, 0.5, 0.5}, {0, 0, 1}, 0.25, 0.5};
+    const std::string meets = cli::render_svg(explain::compute_within(unit_box(), inside, 1), "");
+    EXPECT_NE(meets.find(">Within distance 1 (intersects)<"), std::string::npos);
+}
+
+// Beyond an end and past the side, so a rim decides: the box's edge x = y = 1 is 1.375 from the axis
+// (0.375 beyond the side) and its top 0.5 below the bottom end plane z = 1.5, so the box is 0.625
+// (= √(0.375² + 0.5²)) from the bottom rim. The picture's own case stays "beyond the end plane".
+TEST(ExplainSvg, MarginReachesARim) {
+    const Cylinder<double> c{{2.375, 1, 2.5}, {0, 0, 1}, 1, 2};
+    const Explanation at = explain::compute_within(unit_box(), c, 0.625);
+    EXPECT_TRUE(at.verdict());
+    EXPECT_EQ(at.what, Case::outside_slab);
+    EXPECT_NE(cli::render_svg(at, "").find(">Within distance 0.625<"), std::string::npos);
+    EXPECT_FALSE(explain::compute_within(unit_box(), c, std::nextafter(0.625, 0.0)).verdict());
 }
 
 TEST(ExplainSvg, VerdictTitles) {
