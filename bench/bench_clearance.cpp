@@ -13,7 +13,8 @@
 // Counter ns_per_query: time per query in nanoseconds (Google Benchmark prints it with a unit
 // suffix read as a plain number: "1.5k" is 1,500 ns). A table from the same run follows the output:
 // time per query, its ratio to within_distance's on the same set, and the wrong answers (also among the
-// small queries, every length below 0.01, where the peers' absolute tolerances of about 1e-6 are not small).
+// small queries, every length below 0.01, where the peers' absolute tolerances of about 1e-6 are not small),
+// then the share of each set's queries each stage of within_distance's table answers.
 // Run: bench_clearance --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
@@ -236,6 +237,22 @@ void print_summary() {
 
 }  // namespace
 
+// Which stage of the query's table answers, per set: counted once, untimed.
+void print_stage_shares(const char* set_name, const std::vector<Query>& set) {
+    constexpr auto& names = detail::clearance::stage_names;
+    std::vector<long> count(names.size() + 1);
+    for (const Query& q : set) {
+        if (q.margin == 0) continue;  // intersects() itself
+        ++count[with_box(q.c, [&](const auto& box, const Cylinder<double>& cyl) {
+            return detail::clearance::answering_stage(box, cyl, q.margin);
+        })];
+    }
+    std::printf("stages answering the %s set (%zu queries):", set_name, set.size());
+    for (std::size_t i = 0; i < names.size(); ++i)
+        std::printf(" %s %.1f%%%s", names[i], 100.0 * static_cast<double>(count[i]) / static_cast<double>(set.size()),
+                    i + 1 < names.size() ? "," : "\n");
+}
+
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
@@ -258,5 +275,7 @@ int main(int argc, char** argv) {
     benchmark::RunSpecifiedBenchmarks(&reporter);
     benchmark::Shutdown();
     print_summary();
+    print_stage_shares("random", rs);
+    print_stage_shares("at_margin", as);
     return 0;
 }

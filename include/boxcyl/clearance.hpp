@@ -141,6 +141,17 @@ std::optional<bool> exact_stage(Pair<Box>& q) {
 template <class Box>
 inline constexpr std::array<Stage<Box>, 6> stages{&fat_probe<Box>, &outer_probe<Box>, &tall_probe<Box>,
                                                   &separation<Box>, &rim<Box>, &exact_stage<Box>};
+inline constexpr std::array<const char*, 6> stage_names{"fat probe", "outer probe", "tall probe",
+                                                        "distance bounds", "rim intervals", "exact"};
+
+// The index of the stage that answers, for the benchmark's per-stage shares (margin > 0).
+template <class Box>
+std::size_t answering_stage(const Box& box, const Cylinder<double>& cyl, double m) {
+    Pair<Box> q{box, cyl, m, grown(cyl, m)};
+    for (std::size_t i = 0; i < stages<Box>.size(); ++i)
+        if (stages<Box>[i](q)) return i;
+    return stages<Box>.size();
+}
 
 template <class Box>
 bool within(const Box& box, const Cylinder<double>& cyl, double m) {
