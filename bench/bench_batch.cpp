@@ -23,6 +23,10 @@
 // themselves (stream_GB_per_s, the fastest of five passes with the same threads) and report
 // bandwidth_share_pct: the batch's throughput as a share of it, the goal being ≥ 50.
 //
+// margin_3_voxels: the clearance form, batch::within_distance, on the same 10M sets at a margin of three
+// voxel sides (3/64 of the cylinder's reach): beside voxels/threads_1/automatic etc., the cost of the
+// margin is one run's ratio; exact_pct there is the share left to the scalar clearance query.
+//
 // Aligned boxes are timed in both forms of the batch API: `aligned` the six arrays, `aligned_rows` an
 // array of AlignedBox<double> (the [min, max] rows, read in place) holding the same boxes.
 //
@@ -257,7 +261,10 @@ const std::vector<AlignedBox<double>>& large_rows(bool voxels) {
 }
 
 // rows: the batch reads large_rows() instead of the six arrays (the bandwidth is still the arrays').
-void large_batch(benchmark::State& state, bool voxels, unsigned threads, batch::Kernel kernel, bool rows = false) {
+// margin_voxels > 0: the clearance form, batch::within_distance at a margin of that many voxel sides
+// (the cylinder's reach / 64), on either set.
+void large_batch(benchmark::State& state, bool voxels, unsigned threads, batch::Kernel kernel, bool rows = false,
+                 double margin_voxels = 0) {
     if (!batch::available(kernel)) return state.SkipWithError("kernel not available on this machine");
     const Large& l = large(voxels);
     const std::span<const AlignedBox<double>> row_view = rows ? std::span<const AlignedBox<double>>(large_rows(voxels))
@@ -274,10 +281,14 @@ void large_batch(benchmark::State& state, bool voxels, unsigned threads, batch::
     std::size_t exact = 0, hits = 0, second = 0;
     batch::Kernel ran = kernel;
     const auto t0 = std::chrono::steady_clock::now();
+    const double margin = margin_voxels * (l.cylinder.radius + l.cylinder.height * 0.5) / 64;
     for (auto _ : state) {
         const batch::Options opt{threads, kernel};
-        const batch::Stats st = rows ? batch::intersects(l.cylinder, row_view, std::span<std::uint64_t>(mask), opt)
-                                     : batch::intersects(l.cylinder, l.soa.view(), std::span<std::uint64_t>(mask), opt);
+        const std::span<std::uint64_t> out(mask);
+        const batch::Stats st = margin > 0 ? (rows ? batch::within_distance(l.cylinder, row_view, margin, out, opt)
+                                                   : batch::within_distance(l.cylinder, l.soa.view(), margin, out, opt))
+                                : rows     ? batch::intersects(l.cylinder, row_view, out, opt)
+                                           : batch::intersects(l.cylinder, l.soa.view(), out, opt);
         benchmark::DoNotOptimize(mask.data());
         ran = st.kernel;
         exact += st.exact_lanes;
@@ -358,5 +369,15 @@ BENCHMARK_CAPTURE(large_batch, random/threads_all/compiled, false, 0u, kPortable
 BENCHMARK_CAPTURE(large_batch, random_rows/threads_1/automatic, false, 1u, kAuto, true)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(large_batch, random_rows/threads_all/automatic, false, 0u, kAuto, true)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(large_batch, random_rows/threads_1/compiled, false, 1u, kPortable, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The clearance form beside the runs above (same sets, same kernel): a margin of three voxel sides.
+BENCHMARK_CAPTURE(large_batch, voxels/margin_3_voxels/threads_1/automatic, true, 1u, kAuto, false, 3.0)
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, voxels/margin_3_voxels/threads_all/automatic, true, 0u, kAuto, false, 3.0)
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, random/margin_3_voxels/threads_1/automatic, false, 1u, kAuto, false, 3.0)
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(large_batch, random/margin_3_voxels/threads_all/automatic, false, 0u, kAuto, false, 3.0)
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();

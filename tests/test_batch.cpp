@@ -32,6 +32,7 @@
 #include "boxcyl/number/rational.hpp"
 #include "boxcyl/query.hpp"
 #include "support/batch_cases.hpp"
+#include "support/batch_kernels.hpp"
 #include "support/fp.hpp"
 #include "support/runner.hpp"
 
@@ -179,26 +180,6 @@ void print(const char* label, const Count& a, const Count& o) {
 }
 
 TEST(Batch, EnvironmentIsDefault) { EXPECT_TRUE(fp_environment_ok()); }
-
-// Every kernel this machine runs. avx2 and avx512 come from boxcyl::batch_dispatch (linked here),
-// where it was built with them (GCC, x86-64) and the CPU has them; the list is printed.
-std::vector<batch::Kernel> runnable_kernels() {
-    std::vector<batch::Kernel> ks;
-    for (batch::Kernel k : {batch::Kernel::compiled, batch::Kernel::avx2, batch::Kernel::avx512})
-        if (batch::available(k)) ks.push_back(k);
-    return ks;
-}
-
-}  // namespace
-}  // namespace boxcyl
-
-// Kernels print by name in test names and messages (not as "4-byte object <03-00 00-00>").
-namespace boxcyl::batch {
-void PrintTo(Kernel k, std::ostream* os) { *os << name(k); }
-}  // namespace boxcyl::batch
-
-namespace boxcyl {
-namespace {
 
 class BatchKernels : public ::testing::TestWithParam<batch::Kernel> {
 protected:

@@ -1,6 +1,14 @@
 // The batch API: one cylinder against N boxes, exactly, with a SIMD filter and threads.
 //
 //   boxcyl::batch::intersects(cylinder, boxes, out[, Options{threads}]) -> Stats
+//   boxcyl::batch::within_distance(cylinder, boxes, margin, out[, Options]) -> Stats
+//
+// within_distance answers the clearance query dist(box, cylinder) ≤ margin (boxcyl/clearance.hpp) for
+// every box, bit for bit as the scalar within_distance(box, cylinder, margin); the same layouts,
+// outputs and options. A negative, NaN or infinite margin throws std::invalid_argument ("margin: is
+// negative"); margin 0 is intersects(). The filter runs on the scalar query's probe cylinders — one
+// holding the rounded cylinder (a certain miss answers no), then two it holds (a certain hit answers
+// yes) — and Stats::exact_lanes counts the boxes left to the scalar clearance query.
 //
 // Answers are those of the scalar exact default boxcyl::intersects(box, cylinder) for every box, bit for
 // bit: each double is the rational it denotes, u = axis/|axis| exactly, closed solids (touching
@@ -70,8 +78,10 @@
 #include "boxcyl/batch/kernel.hpp"
 #include "boxcyl/batch/parallelepiped.hpp"
 #include "boxcyl/batch/types.hpp"
+#include "boxcyl/clearance.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/margin.hpp"
 
 #if defined(BOXCYL_BATCH_DISPATCH)
 #include "boxcyl/batch/dispatch.hpp"
@@ -138,72 +148,202 @@ inline Cylinder<double> widen(const Cylinder<float>& c) {
 }  // namespace detail
 }  // namespace BOXCYL_BATCH_ISA
 
+inline namespace BOXCYL_BATCH_ISA {
+namespace detail {
+
+// The kernel entry that answers query q (a cylinder: intersects; a Clearance: within_distance) for
+// each box layout and output, on the kernel that opt.kernel names.
+template <class Q, class T>
+Stats answer(const Q& q, const AlignedBoxes<T>& b, std::span<std::uint64_t> out, const Options& opt) {
+    check_lengths(b);
+    const KernelTable& t = select(opt.kernel);
+    return stamped(t.template entries<T>().of(q).aligned_mask(q, b, out, opt), t);
+}
+template <class Q, class T>
+Stats answer(const Q& q, const AlignedBoxes<T>& b, std::span<bool> out, const Options& opt) {
+    check_lengths(b);
+    const KernelTable& t = select(opt.kernel);
+    return stamped(t.template entries<T>().of(q).aligned_bools(q, b, out, opt), t);
+}
+template <class Q, class T>
+Stats answer(const Q& q, std::span<const AlignedBox<T>> b, std::span<std::uint64_t> out, const Options& opt) {
+    const KernelTable& t = select(opt.kernel);
+    return stamped(t.template entries<T>().of(q).rows_mask(q, b, out, opt), t);
+}
+template <class Q, class T>
+Stats answer(const Q& q, std::span<const AlignedBox<T>> b, std::span<bool> out, const Options& opt) {
+    const KernelTable& t = select(opt.kernel);
+    return stamped(t.template entries<T>().of(q).rows_bools(q, b, out, opt), t);
+}
+template <class Q, class T>
+Stats answer(const Q& q, std::span<const OrientedBox<T>> b, std::span<std::uint64_t> out, const Options& opt) {
+    const KernelTable& t = select(opt.kernel);
+    return stamped(t.template entries<T>().of(q).oriented_mask(q, b, out, opt), t);
+}
+template <class Q, class T>
+Stats answer(const Q& q, std::span<const OrientedBox<T>> b, std::span<bool> out, const Options& opt) {
+    const KernelTable& t = select(opt.kernel);
+    return stamped(t.template entries<T>().of(q).oriented_bools(q, b, out, opt), t);
+}
+template <class Q, class T, class Out>
+Stats answer(const Q& q, std::span<const Parallelepiped<T>> b, Out out, const Options& opt) {
+    return parallelepipeds::answer(q, b, out, opt);
+}
+
+// The scalar clearance query for the lanes the filter leaves (types.hpp's Clearance says why through a
+// pointer).
+template <class Box>
+bool scalar_within(const Box& box, const Cylinder<double>& cyl, double m) {
+    return boxcyl::within_distance_unchecked(box, cyl, m);
+}
+
+// The clearance query at margin m > 0: the probes of the scalar query (boxcyl/clearance.hpp), in its
+// order; one whose sizes overflow is left out.
+inline Clearance clearance(const Cylinder<double>& cyl, double m) {
+    const boxcyl::detail::clearance::Probes p = boxcyl::detail::clearance::probes(cyl, m);
+    Clearance q{cyl, m, {}, {}, 0, &scalar_within<AlignedBox<double>>, &scalar_within<OrientedBox<double>>};
+    for (std::size_t k = 0; k < p.probe.size(); ++k)
+        if (p.valid[k]) {
+            q.probe[q.probes] = p.probe[k].cylinder;
+            q.decides_when[q.probes++] = p.probe[k].decides_when;
+        }
+    return q;
+}
+
+// within_distance: the margin checked, then margin 0 (or −0) is intersects, as in the scalar query.
+template <class Boxes, class Out>
+Stats within(const Cylinder<double>& cyl, const Boxes& boxes, double margin, Out out, const Options& opt) {
+    if (!is_valid_margin(margin)) [[unlikely]]
+        throw std::invalid_argument(validate_margin(margin).message());
+    if (margin == 0) return answer(cyl, boxes, out, opt);
+    return answer(clearance(cyl, margin), boxes, out, opt);
+}
+
+}  // namespace detail
+}  // namespace BOXCYL_BATCH_ISA
+
 // ---- Aligned boxes (structure of arrays), T = float or double. ----
 template <class T>
 Stats intersects(const Cylinder<double>& cyl, const AlignedBoxes<T>& boxes, std::span<std::uint64_t> mask,
                  const Options& opt = {}) {
-    detail::check_lengths(boxes);
-    const KernelTable& t = detail::select(opt.kernel);
-    return detail::stamped(t.template entries<T>().aligned_mask(cyl, boxes, mask, opt), t);
+    return detail::answer(cyl, boxes, mask, opt);
 }
 template <class T>
 Stats intersects(const Cylinder<double>& cyl, const AlignedBoxes<T>& boxes, std::span<bool> out,
                  const Options& opt = {}) {
-    detail::check_lengths(boxes);
-    const KernelTable& t = detail::select(opt.kernel);
-    return detail::stamped(t.template entries<T>().aligned_bools(cyl, boxes, out, opt), t);
+    return detail::answer(cyl, boxes, out, opt);
 }
 
 // ---- Aligned boxes (array of AlignedBox<T>), T = float or double. ----
 // (Overloads rather than a template, so that a std::vector of boxes converts to the span.)
 inline Stats intersects(const Cylinder<double>& cyl, std::span<const AlignedBox<double>> boxes,
                         std::span<std::uint64_t> mask, const Options& opt = {}) {
-    const KernelTable& t = detail::select(opt.kernel);
-    return detail::stamped(t.d.rows_mask(cyl, boxes, mask, opt), t);
+    return detail::answer(cyl, boxes, mask, opt);
 }
 inline Stats intersects(const Cylinder<double>& cyl, std::span<const AlignedBox<double>> boxes, std::span<bool> out,
                         const Options& opt = {}) {
-    const KernelTable& t = detail::select(opt.kernel);
-    return detail::stamped(t.d.rows_bools(cyl, boxes, out, opt), t);
+    return detail::answer(cyl, boxes, out, opt);
 }
 inline Stats intersects(const Cylinder<double>& cyl, std::span<const AlignedBox<float>> boxes,
                         std::span<std::uint64_t> mask, const Options& opt = {}) {
-    const KernelTable& t = detail::select(opt.kernel);
-    return detail::stamped(t.f.rows_mask(cyl, boxes, mask, opt), t);
+    return detail::answer(cyl, boxes, mask, opt);
 }
 inline Stats intersects(const Cylinder<double>& cyl, std::span<const AlignedBox<float>> boxes, std::span<bool> out,
                         const Options& opt = {}) {
-    const KernelTable& t = detail::select(opt.kernel);
-    return detail::stamped(t.f.rows_bools(cyl, boxes, out, opt), t);
+    return detail::answer(cyl, boxes, out, opt);
 }
 
 // ---- Oriented boxes (array of OrientedBox<T>), T = float or double. ----
 // (Overloads rather than a template, so that a std::vector of boxes converts to the span.)
 inline Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<double>> boxes,
                         std::span<std::uint64_t> mask, const Options& opt = {}) {
-    const KernelTable& t = detail::select(opt.kernel);
-    return detail::stamped(t.d.oriented_mask(cyl, boxes, mask, opt), t);
+    return detail::answer(cyl, boxes, mask, opt);
 }
 inline Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<double>> boxes, std::span<bool> out,
                         const Options& opt = {}) {
-    const KernelTable& t = detail::select(opt.kernel);
-    return detail::stamped(t.d.oriented_bools(cyl, boxes, out, opt), t);
+    return detail::answer(cyl, boxes, out, opt);
 }
 inline Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<float>> boxes,
                         std::span<std::uint64_t> mask, const Options& opt = {}) {
-    const KernelTable& t = detail::select(opt.kernel);
-    return detail::stamped(t.f.oriented_mask(cyl, boxes, mask, opt), t);
+    return detail::answer(cyl, boxes, mask, opt);
 }
 inline Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<float>> boxes, std::span<bool> out,
                         const Options& opt = {}) {
-    const KernelTable& t = detail::select(opt.kernel);
-    return detail::stamped(t.f.oriented_bools(cyl, boxes, out, opt), t);
+    return detail::answer(cyl, boxes, out, opt);
 }
 
 // A float cylinder is widened to double exactly, like the boxes.
 template <class Boxes, class Out>
 Stats intersects(const Cylinder<float>& cyl, const Boxes& boxes, Out&& out, const Options& opt = {}) {
     return intersects(detail::widen(cyl), boxes, std::forward<Out>(out), opt);
+}
+
+// ---- Clearance: is each box within distance `margin` of the cylinder? ----
+// The same layouts, outputs and options as intersects(); margin finite and ≥ 0 (else
+// std::invalid_argument: "margin: is negative"); margin 0 is intersects().
+template <class T>
+Stats within_distance(const Cylinder<double>& cyl, const AlignedBoxes<T>& boxes, double margin,
+                      std::span<std::uint64_t> mask, const Options& opt = {}) {
+    return detail::within(cyl, boxes, margin, mask, opt);
+}
+template <class T>
+Stats within_distance(const Cylinder<double>& cyl, const AlignedBoxes<T>& boxes, double margin, std::span<bool> out,
+                      const Options& opt = {}) {
+    return detail::within(cyl, boxes, margin, out, opt);
+}
+// (Overloads rather than a template, so that a std::vector of boxes converts to the span.)
+inline Stats within_distance(const Cylinder<double>& cyl, std::span<const AlignedBox<double>> boxes, double margin,
+                             std::span<std::uint64_t> mask, const Options& opt = {}) {
+    return detail::within(cyl, boxes, margin, mask, opt);
+}
+inline Stats within_distance(const Cylinder<double>& cyl, std::span<const AlignedBox<double>> boxes, double margin,
+                             std::span<bool> out, const Options& opt = {}) {
+    return detail::within(cyl, boxes, margin, out, opt);
+}
+inline Stats within_distance(const Cylinder<double>& cyl, std::span<const AlignedBox<float>> boxes, double margin,
+                             std::span<std::uint64_t> mask, const Options& opt = {}) {
+    return detail::within(cyl, boxes, margin, mask, opt);
+}
+inline Stats within_distance(const Cylinder<double>& cyl, std::span<const AlignedBox<float>> boxes, double margin,
+                             std::span<bool> out, const Options& opt = {}) {
+    return detail::within(cyl, boxes, margin, out, opt);
+}
+inline Stats within_distance(const Cylinder<double>& cyl, std::span<const OrientedBox<double>> boxes, double margin,
+                             std::span<std::uint64_t> mask, const Options& opt = {}) {
+    return detail::within(cyl, boxes, margin, mask, opt);
+}
+inline Stats within_distance(const Cylinder<double>& cyl, std::span<const OrientedBox<double>> boxes, double margin,
+                             std::span<bool> out, const Options& opt = {}) {
+    return detail::within(cyl, boxes, margin, out, opt);
+}
+inline Stats within_distance(const Cylinder<double>& cyl, std::span<const OrientedBox<float>> boxes, double margin,
+                             std::span<std::uint64_t> mask, const Options& opt = {}) {
+    return detail::within(cyl, boxes, margin, mask, opt);
+}
+inline Stats within_distance(const Cylinder<double>& cyl, std::span<const OrientedBox<float>> boxes, double margin,
+                             std::span<bool> out, const Options& opt = {}) {
+    return detail::within(cyl, boxes, margin, out, opt);
+}
+inline Stats within_distance(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes, double margin,
+                             std::span<std::uint64_t> mask, const Options& opt = {}) {
+    return detail::within(cyl, boxes, margin, mask, opt);
+}
+inline Stats within_distance(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes, double margin,
+                             std::span<bool> out, const Options& opt = {}) {
+    return detail::within(cyl, boxes, margin, out, opt);
+}
+inline Stats within_distance(const Cylinder<double>& cyl, std::span<const Parallelepiped<float>> boxes, double margin,
+                             std::span<std::uint64_t> mask, const Options& opt = {}) {
+    return detail::within(cyl, boxes, margin, mask, opt);
+}
+inline Stats within_distance(const Cylinder<double>& cyl, std::span<const Parallelepiped<float>> boxes, double margin,
+                             std::span<bool> out, const Options& opt = {}) {
+    return detail::within(cyl, boxes, margin, out, opt);
+}
+
+template <class Boxes, class Out>
+Stats within_distance(const Cylinder<float>& cyl, const Boxes& boxes, double margin, Out&& out, const Options& opt = {}) {
+    return within_distance(detail::widen(cyl), boxes, margin, std::forward<Out>(out), opt);
 }
 
 }  // namespace boxcyl::batch

@@ -151,11 +151,52 @@ Stats intersects(const Cylinder<double>& cyl, std::span<const Parallelepiped<flo
                  const Options& opt = {});
 
 // A float cylinder is widened to double exactly, like the boxes.
+inline Cylinder<double> widened(const Cylinder<float>& cyl) {
+    auto d = [](const Vec3<float>& v) { return Vec3<double>{v[0], v[1], v[2]}; };
+    return {d(cyl.center), d(cyl.axis), cyl.radius, cyl.height};
+}
 template <class Boxes, class Out>
 Stats intersects(const Cylinder<float>& cyl, const Boxes& boxes, Out&& out, const Options& opt = {}) {
-    auto d = [](const Vec3<float>& v) { return Vec3<double>{v[0], v[1], v[2]}; };
-    return intersects(Cylinder<double>{d(cyl.center), d(cyl.axis), cyl.radius, cyl.height}, boxes,
-                      std::forward<Out>(out), opt);
+    return intersects(widened(cyl), boxes, std::forward<Out>(out), opt);
+}
+
+// Clearance: is each box within distance `margin` of the cylinder? (boxcyl/batch.hpp's
+// within_distance: margin finite and ≥ 0, else std::invalid_argument; margin 0 is intersects().)
+Stats within_distance(const Cylinder<double>& cyl, const AlignedBoxes<double>& boxes, double margin,
+                      std::span<std::uint64_t> mask, const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, const AlignedBoxes<double>& boxes, double margin, std::span<bool> out,
+                      const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, const AlignedBoxes<float>& boxes, double margin,
+                      std::span<std::uint64_t> mask, const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, const AlignedBoxes<float>& boxes, double margin, std::span<bool> out,
+                      const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, std::span<const AlignedBox<double>> boxes, double margin,
+                      std::span<std::uint64_t> mask, const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, std::span<const AlignedBox<double>> boxes, double margin, std::span<bool> out,
+                      const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, std::span<const AlignedBox<float>> boxes, double margin,
+                      std::span<std::uint64_t> mask, const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, std::span<const AlignedBox<float>> boxes, double margin, std::span<bool> out,
+                      const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, std::span<const OrientedBox<double>> boxes, double margin,
+                      std::span<std::uint64_t> mask, const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, std::span<const OrientedBox<double>> boxes, double margin, std::span<bool> out,
+                      const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, std::span<const OrientedBox<float>> boxes, double margin,
+                      std::span<std::uint64_t> mask, const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, std::span<const OrientedBox<float>> boxes, double margin, std::span<bool> out,
+                      const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes, double margin,
+                      std::span<std::uint64_t> mask, const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes, double margin, std::span<bool> out,
+                      const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, std::span<const Parallelepiped<float>> boxes, double margin,
+                      std::span<std::uint64_t> mask, const Options& opt = {});
+Stats within_distance(const Cylinder<double>& cyl, std::span<const Parallelepiped<float>> boxes, double margin, std::span<bool> out,
+                      const Options& opt = {});
+template <class Boxes, class Out>
+Stats within_distance(const Cylinder<float>& cyl, const Boxes& boxes, double margin, Out&& out, const Options& opt = {}) {
+    return within_distance(widened(cyl), boxes, margin, std::forward<Out>(out), opt);
 }
 
 }  // namespace compiled

@@ -560,6 +560,11 @@ def _cylinders(cylinders):
     return _fields("cylinders", ("center", "axis", "radius", "height"), cylinders, ((3,), (3,), (), ()))
 
 
+def _margin(margin):
+    """None, or the margin as a float (the core refuses a negative, NaN or infinite one, named)."""
+    return None if margin is None else _scalar("margin", margin)
+
+
 def _check_lengths(arrays):
     """The common batch length N: every field's leading length must be N or 1."""
     lengths = {a.shape[0] for a in arrays} - {1}
@@ -568,7 +573,7 @@ def _check_lengths(arrays):
 
 
 def intersects_aligned(boxes, cylinders, *, algorithm=Algorithm.inequalities, arithmetic=Arithmetic.filtered,
-                       threads=None):
+                       threads=None, margin=None):
     """Whether each axis-aligned box intersects its cylinder, for arrays of them.
 
     Parameters
@@ -585,6 +590,10 @@ def intersects_aligned(boxes, cylinders, *, algorithm=Algorithm.inequalities, ar
         The default (``"inequalities"``, ``"filtered"``) is the exact query.
     threads : int or None, optional
         How many threads answer (None or 0, the default: all cores; small batches use fewer).
+    margin : float, optional
+        A distance >= 0: each answer becomes ``dist(box, cylinder) <= margin``, exactly, as
+        ``intersects(box, cylinder, margin=margin)`` answers it (whatever ``algorithm`` and
+        ``arithmetic`` say); None (the default) asks whether they touch.
 
     Returns
     -------
@@ -594,23 +603,24 @@ def intersects_aligned(boxes, cylinders, *, algorithm=Algorithm.inequalities, ar
     ------
     ValueError
         For a wrong shape or kind of input, or the first invalid element, named:
-        ``"boxes[3].min[1]: is NaN"``. No answer is returned unless every element is valid.
+        ``"boxes[3].min[1]: is NaN"``; a negative, NaN or infinite margin (``"margin: is negative"``).
+        No answer is returned unless every element is valid.
     KeyboardInterrupt
         Ctrl-C stops a running batch within milliseconds.
 
     Inputs follow the package's input policy (see ``help(boxcyl)``); float64 arrays are read in
-    place, whatever their strides. One cylinder against many boxes with the default query runs
-    the C++ batch API (SIMD filter, exact fallback); the loop runs with the GIL released.
+    place, whatever their strides. One cylinder against many boxes with the default query (or a
+    margin) runs the C++ batch API (SIMD filter, exact fallback); the loop runs with the GIL released.
     """
     box_arrays, box_single = _aligned_boxes(boxes)
     cyl, cylinder_single = _cylinders(cylinders)
     _check_lengths(box_arrays + cyl)
     return _core._intersects_aligned(*box_arrays, box_single, *cyl, cylinder_single,
-                                     *_options(algorithm, arithmetic), _threads(threads))
+                                     *_options(algorithm, arithmetic), _threads(threads), _margin(margin))
 
 
 def intersects_oriented(boxes, cylinders, *, algorithm=Algorithm.inequalities, arithmetic=Arithmetic.filtered,
-                        threads=None):
+                        threads=None, margin=None):
     """Whether each oriented box intersects its cylinder, for arrays of them.
 
     Parameters
@@ -623,7 +633,7 @@ def intersects_oriented(boxes, cylinders, *, algorithm=Algorithm.inequalities, a
         As for :func:`intersects_aligned`.
     algorithm, arithmetic : Algorithm / Arithmetic or their names, optional
         The default is the exact query.
-    threads : int or None, optional
+    threads, margin : optional
         As for :func:`intersects_aligned`.
 
     Returns
@@ -642,18 +652,18 @@ def intersects_oriented(boxes, cylinders, *, algorithm=Algorithm.inequalities, a
     cyl, cylinder_single = _cylinders(cylinders)
     _check_lengths(box_arrays + cyl)
     return _core._intersects_oriented(*box_arrays, box_single, *cyl, cylinder_single,
-                                      *_options(algorithm, arithmetic), _threads(threads))
+                                      *_options(algorithm, arithmetic), _threads(threads), _margin(margin))
 
 
 def intersects_parallelepiped(boxes, cylinders, *, algorithm=Algorithm.inequalities, arithmetic=Arithmetic.filtered,
-                              threads=None):
+                              threads=None, margin=None):
     """Whether each parallelepiped intersects its cylinder, for arrays of them.
 
     Parameters
     ----------
     boxes : a tuple (center, axes, extents), a Parallelepiped, or a list of them
         As for :func:`intersects_oriented`, with any axes (rows).
-    cylinders, algorithm, arithmetic, threads :
+    cylinders, algorithm, arithmetic, threads, margin :
         As for :func:`intersects_aligned`.
 
     Returns
@@ -667,7 +677,7 @@ def intersects_parallelepiped(boxes, cylinders, *, algorithm=Algorithm.inequalit
     cyl, cylinder_single = _cylinders(cylinders)
     _check_lengths(box_arrays + cyl)
     return _core._intersects_parallelepiped(*box_arrays, box_single, *cyl, cylinder_single,
-                                            *_options(algorithm, arithmetic), _threads(threads))
+                                            *_options(algorithm, arithmetic), _threads(threads), _margin(margin))
 
 
 # ---- The grid query. ---------------------------------------------------------------------------------

@@ -11,10 +11,11 @@ Each block of boxes is answered by the numpy batch form (:func:`boxcyl.intersect
 :func:`boxcyl.intersects_oriented`, :func:`boxcyl.intersects_parallelepiped`) where Dask runs it: in a thread, a process, or a worker of a
 ``distributed`` cluster. The answer is a lazy Dask array of bools (one byte per box) with the boxes'
 chunks along the first axis; reduce it (``.sum()``, ``.nonzero()``) or store it (``.to_zarr``) so that
-neither boxes nor answers need to fit in memory at once. The cylinder and the options travel with
-each task (shapes pickle). The answers equal one call of the numpy form on the whole array, and the
-input is refused as the numpy form refuses it (booleans, complex numbers, strings, NaN, ...), an
-invalid box named by its index in the whole array.
+neither boxes nor answers need to fit in memory at once. The cylinder, the options and the margin
+travel with each task (shapes pickle). With ``margin=m`` each answer is whether the box comes within
+distance m of the cylinder (the clearance query, exact). The answers equal one call of the numpy form
+on the whole array, and the input is refused as the numpy form refuses it (booleans, complex
+numbers, strings, NaN, ...), an invalid box named by its index in the whole array.
 
 Within a block, ``threads`` (default 1) threads answer: Dask already runs blocks in parallel; give
 more for few large blocks.
@@ -55,20 +56,27 @@ def _renamed(error, block_info):
     return ValueError(message)
 
 
-def _aligned_block(block, cylinder, algorithm, arithmetic, threads, block_info=None):
+def _aligned_block(block, cylinder, algorithm, arithmetic, threads, margin, block_info=None):
     try:
         return boxcyl.intersects_aligned(block, cylinder, algorithm=algorithm, arithmetic=arithmetic,
-                                         threads=threads)
+                                         threads=threads, margin=margin)
     except ValueError as e:
         raise _renamed(e, block_info) from None
 
 
-def _frame_block(rows, form, cylinder, algorithm, arithmetic, threads, block_info=None):
+def _frame_block(rows, form, cylinder, algorithm, arithmetic, threads, margin, block_info=None):
     boxes = (rows[:, 0:3], rows[:, 3:12].reshape(-1, 3, 3), rows[:, 12:15])
     try:
-        return form(boxes, cylinder, algorithm=algorithm, arithmetic=arithmetic, threads=threads)
+        return form(boxes, cylinder, algorithm=algorithm, arithmetic=arithmetic, threads=threads, margin=margin)
     except ValueError as e:
         raise _renamed(e, block_info) from None
+
+
+def _margin(cylinder, margin):
+    """The margin refused now, as the numpy form refuses it, rather than when the graph is computed."""
+    if margin is not None:
+        boxcyl.intersects_aligned(np.empty((0, 2, 3)), cylinder, margin=margin)
+    return margin
 
 
 def _real_dtype(name, array):
@@ -80,7 +88,7 @@ def _real_dtype(name, array):
         raise ValueError(f"{name}: is {many} (dtype {array.dtype}); expected real numbers")
 
 
-def _frames(boxes, cylinder, form, algorithm, arithmetic, threads):
+def _frames(boxes, cylinder, form, algorithm, arithmetic, threads, margin):
     """The oriented and parallelepiped forms: (center, axes, extents) joined into (N, 15) rows whose
     blocks hold whole boxes, each block split again and answered by `form`."""
     if not isinstance(boxes, tuple) or len(boxes) != 3:
@@ -94,11 +102,13 @@ def _frames(boxes, cylinder, form, algorithm, arithmetic, threads):
         _real_dtype(name, array)
     # One (N, 15) array: center, axes (row by row), extents; each block holds whole boxes.
     rows = da.concatenate([center, axes.reshape(-1, 9), extents], axis=1).rechunk({0: center.chunks[0], 1: -1})
-    return da.map_blocks(_frame_block, rows, form, _cylinder(cylinder), algorithm, arithmetic, threads,
+    cylinder = _cylinder(cylinder)
+    return da.map_blocks(_frame_block, rows, form, cylinder, algorithm, arithmetic, threads, _margin(cylinder, margin),
                          drop_axis=[1], dtype=np.bool_, meta=np.empty((0,), dtype=np.bool_))
 
 
-def intersects_aligned(boxes, cylinder, *, algorithm="inequalities", arithmetic="filtered", threads=1):
+def intersects_aligned(boxes, cylinder, *, algorithm="inequalities", arithmetic="filtered", threads=1,
+                       margin=None):
     """Whether each axis-aligned box of a Dask array intersects one cylinder.
 
     Parameters
@@ -107,8 +117,10 @@ def intersects_aligned(boxes, cylinder, *, algorithm="inequalities", arithmetic=
         Any dtype :func:`boxcyl.intersects_aligned` accepts; chunked along the first axis (other
         chunkings are rechunked so that each block holds whole boxes).
     cylinder : boxcyl.Cylinder
-    algorithm, arithmetic, threads :
-        As for :func:`boxcyl.intersects_aligned`; ``threads`` is per block (default 1).
+    algorithm, arithmetic, threads, margin :
+        As for :func:`boxcyl.intersects_aligned`; ``threads`` is per block (default 1). With
+        ``margin``, each answer is ``dist(box, cylinder) <= margin``, exactly; a bad margin is
+        refused at once (ValueError naming ``margin``).
 
     Returns
     -------
@@ -116,11 +128,13 @@ def intersects_aligned(boxes, cylinder, *, algorithm="inequalities", arithmetic=
         Lazy; an invalid box raises ValueError when computed, naming it by its index in ``boxes``.
     """
     boxes = _rows("boxes", boxes, (2, 3))
-    return da.map_blocks(_aligned_block, boxes, _cylinder(cylinder), algorithm, arithmetic, threads,
+    cylinder = _cylinder(cylinder)
+    return da.map_blocks(_aligned_block, boxes, cylinder, algorithm, arithmetic, threads, _margin(cylinder, margin),
                          drop_axis=[1, 2], dtype=np.bool_, meta=np.empty((0,), dtype=np.bool_))
 
 
-def intersects_oriented(boxes, cylinder, *, algorithm="inequalities", arithmetic="filtered", threads=1):
+def intersects_oriented(boxes, cylinder, *, algorithm="inequalities", arithmetic="filtered", threads=1,
+                        margin=None):
     """Whether each oriented box of Dask arrays intersects one cylinder.
 
     Parameters
@@ -129,17 +143,18 @@ def intersects_oriented(boxes, cylinder, *, algorithm="inequalities", arithmetic
         Shapes (N, 3), (N, 3, 3) (rows are the box axes) and (N, 3) (half side lengths), as for
         :func:`boxcyl.intersects_oriented`; rechunked to the chunks of ``center`` along the first axis.
     cylinder : boxcyl.Cylinder
-    algorithm, arithmetic, threads :
+    algorithm, arithmetic, threads, margin :
         As for :func:`intersects_aligned`.
 
     Returns
     -------
     dask.array.Array of bool, shape (N,), chunks those of ``center`` along the first axis
     """
-    return _frames(boxes, cylinder, boxcyl.intersects_oriented, algorithm, arithmetic, threads)
+    return _frames(boxes, cylinder, boxcyl.intersects_oriented, algorithm, arithmetic, threads, margin)
 
 
-def intersects_parallelepiped(boxes, cylinder, *, algorithm="inequalities", arithmetic="filtered", threads=1):
+def intersects_parallelepiped(boxes, cylinder, *, algorithm="inequalities", arithmetic="filtered", threads=1,
+                              margin=None):
     """Whether each parallelepiped of Dask arrays intersects one cylinder.
 
     Parameters
@@ -148,11 +163,11 @@ def intersects_parallelepiped(boxes, cylinder, *, algorithm="inequalities", arit
         As for :func:`intersects_oriented`, with any axes (rows), as for
         :func:`boxcyl.intersects_parallelepiped`.
     cylinder : boxcyl.Cylinder
-    algorithm, arithmetic, threads :
+    algorithm, arithmetic, threads, margin :
         As for :func:`intersects_aligned`.
 
     Returns
     -------
     dask.array.Array of bool, shape (N,), chunks those of ``center`` along the first axis
     """
-    return _frames(boxes, cylinder, boxcyl.intersects_parallelepiped, algorithm, arithmetic, threads)
+    return _frames(boxes, cylinder, boxcyl.intersects_parallelepiped, algorithm, arithmetic, threads, margin)

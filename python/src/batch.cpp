@@ -7,9 +7,10 @@
 // filter loads (Options::check_boxes): a C-contiguous (N, 2, 3) array of aligned boxes in place (its
 // AlignedBox rows form), on the batch's own threads (Options::threads); other layouts a chunk at a time,
 // gathered into the batch API's layout (six arrays; OrientedBox or Parallelepiped structs) on the
-// threads of the library's split (batch/split.hpp). Anything else (a cylinder per element, other
-// options, one box against many cylinders) is the scalar query per element on those threads, each
-// element checked by boxcyl::is_valid. An element that fails a check is named by boxcyl::validate
+// threads of the library's split (batch/split.hpp). With a margin the same, through the clearance
+// form boxcyl::batch::within_distance (exact whatever the options). Anything else (a cylinder per
+// element, other options, one box against many cylinders) is the scalar query (with a margin the
+// scalar clearance query) per element on those threads, each element checked by boxcyl::is_valid. An element that fails a check is named by boxcyl::validate
 // ("boxes[17].max[0]: is less than boxes[17].min[0]"), and the batch reports the first by index.
 // Every loop looks at the stop token (Ctrl-C): the batch API before each 64-box block, the others
 // before each element.
@@ -25,6 +26,7 @@
 #include <limits>       // the "no failure" index
 #include <memory>       // std::unique_ptr: scratch buffers
 #include <mutex>        // the first failure's message
+#include <optional>     // the margin
 #include <span>         // the batch API's arguments
 #include <thread>       // std::thread::hardware_concurrency
 
@@ -197,14 +199,24 @@ const AlignedBox* aligned_rows(const AlignedFields& b) {
 
 // ---- The two ways through a batch. ----
 
+// The batch API's question: intersects, or with a margin the clearance form.
+template <class Boxes>
+void ask(const Cylinder& cyl, const std::optional<double>& margin, const Boxes& boxes, std::span<bool> out,
+         const batch::Options& opt) {
+    if (margin)
+        batch::within_distance(cyl, boxes, *margin, out, opt);
+    else
+        batch::intersects(cyl, boxes, out, opt);
+}
+
 // One cylinder, many boxes, the default query: the batch API, in place or a gathered chunk at a time.
-void one_cylinder(const AlignedFields& boxes, Index n, const Cylinder& cyl, unsigned threads, bool* result,
-                  FirstFailure& failure, const std::stop_token& stop) {
+void one_cylinder(const AlignedFields& boxes, Index n, const Cylinder& cyl, const std::optional<double>& margin,
+                  unsigned threads, bool* result, FirstFailure& failure, const std::stop_token& stop) {
     if (const AlignedBox* rows = aligned_rows(boxes)) {
         const auto count = static_cast<std::size_t>(n);
         try {
-            batch::intersects(cyl, std::span<const AlignedBox>(rows, count), std::span<bool>(result, count),
-                              checked(stop, threads));
+            ask(cyl, margin, std::span<const AlignedBox>(rows, count), std::span<bool>(result, count),
+                checked(stop, threads));
         } catch (const batch::InvalidBox& e) {
             const auto i = static_cast<Index>(e.index);
             record_invalid(failure, i, boxes(i));
@@ -218,8 +230,8 @@ void one_cylinder(const AlignedFields& boxes, Index n, const Cylinder& cyl, unsi
         gather_aligned(boxes, begin, m, v);
         auto column = [&](Index j) { return std::span<const double>(v + j * m, static_cast<std::size_t>(m)); };
         try {
-            batch::intersects(cyl, batch::AlignedBoxes<double>{column(0), column(1), column(2), column(3), column(4), column(5)},
-                              std::span<bool>(result + begin, static_cast<std::size_t>(m)), checked(stop));
+            ask(cyl, margin, batch::AlignedBoxes<double>{column(0), column(1), column(2), column(3), column(4), column(5)},
+                std::span<bool>(result + begin, static_cast<std::size_t>(m)), checked(stop));
         } catch (const batch::InvalidBox& e) {
             const Index i = begin + static_cast<Index>(e.index);
             record_invalid(failure, i, boxes(i));
@@ -228,16 +240,16 @@ void one_cylinder(const AlignedFields& boxes, Index n, const Cylinder& cyl, unsi
 }
 
 template <class Box>
-void one_cylinder(const FrameFields<Box>& boxes, Index n, const Cylinder& cyl, unsigned threads, bool* result,
-                  FirstFailure& failure, const std::stop_token& stop) {
+void one_cylinder(const FrameFields<Box>& boxes, Index n, const Cylinder& cyl, const std::optional<double>& margin,
+                  unsigned threads, bool* result, FirstFailure& failure, const std::stop_token& stop) {
     for_each_chunk<Buffer<Box>>(n, kFrameChunk, batch_threads(threads, n), failure,
                                 [&](Buffer<Box>& scratch, Index begin, Index end) {
         const Index m = end - begin;
         Box* v = scratch.get(m);
         gather_frames(boxes, begin, m, v);
         try {
-            batch::intersects(cyl, std::span<const Box>(v, static_cast<std::size_t>(m)),
-                              std::span<bool>(result + begin, static_cast<std::size_t>(m)), checked(stop));
+            ask(cyl, margin, std::span<const Box>(v, static_cast<std::size_t>(m)),
+                std::span<bool>(result + begin, static_cast<std::size_t>(m)), checked(stop));
         } catch (const batch::InvalidBox& e) {
             record_invalid(failure, begin + static_cast<Index>(e.index), v[e.index]);
         }
@@ -247,8 +259,8 @@ void one_cylinder(const FrameFields<Box>& boxes, Index n, const Cylinder& cyl, u
 // Any boxes, any cylinders, any options: the scalar query per element, each element checked first.
 template <class BoxAt>
 void per_element(const BoxAt& box_at, bool box_single, const CylinderFields& cyl_at, bool cylinder_single, Index n,
-                 const boxcyl::QueryOptions& opt, unsigned threads, bool* result, FirstFailure& failure,
-                 const std::stop_token& stop) {
+                 const boxcyl::QueryOptions& opt, const std::optional<double>& margin, unsigned threads, bool* result,
+                 FirstFailure& failure, const std::stop_token& stop) {
     const unsigned requested = threads != 0 ? threads : hardware_threads();
     const auto count = static_cast<unsigned>(std::min<Index>(requested, std::max<Index>(1, n / kScalarPerThread)));
     for_each_chunk<char>(n, kScalarBlock, count, failure, [&](char&, Index begin, Index end) {
@@ -262,7 +274,7 @@ void per_element(const BoxAt& box_at, bool box_single, const CylinderFields& cyl
                 return;
             }
             try {
-                result[i] = boxcyl::intersects(box, cyl, opt);
+                result[i] = margin ? boxcyl::within_distance(box, cyl, *margin) : boxcyl::intersects(box, cyl, opt);
             } catch (const std::domain_error& e) {  // e.g. exact §2/§4 asked for a frame not exactly orthonormal
                 failure.record(2 * i, element_name("box", "boxes", box_single, i) + ": " + e.what());
                 return;
@@ -275,22 +287,27 @@ bool is_default(const boxcyl::QueryOptions& o) {
     return o.algorithm == boxcyl::Algorithm::inequalities && o.arithmetic == boxcyl::Arithmetic::filtered;
 }
 
-bool one_cylinder_path(const Batch& b) { return b.cylinder_single && !b.box_single && is_default(b.options); }
+// The clearance query is exact whatever the options: it takes the batch API with any of them.
+bool one_cylinder_path(const Batch& b) {
+    return b.cylinder_single && !b.box_single && (is_default(b.options) || b.margin);
+}
 
 template <class Boxes>
 std::string run(const Boxes& boxes, const CylinderFields& cylinders, const Batch& b, const std::stop_token& stop) {
     FirstFailure failure;
     if (one_cylinder_path(b))
-        one_cylinder(boxes, b.n, cylinders(0), b.threads, b.result, failure, stop);
+        one_cylinder(boxes, b.n, cylinders(0), b.margin, b.threads, b.result, failure, stop);
     else
-        per_element(boxes, b.box_single, cylinders, b.cylinder_single, b.n, b.options, b.threads, b.result, failure,
-                    stop);
+        per_element(boxes, b.box_single, cylinders, b.cylinder_single, b.n, b.options, b.margin, b.threads, b.result,
+                    failure, stop);
     return failure.any() ? failure.message() : std::string();
 }
 
 }  // namespace
 
-bool brief(const Batch& b) { return b.n <= (one_cylinder_path(b) ? kBriefBatch : kBriefScalar); }
+// With a margin, a box the filter leaves can take the scalar clearance query milliseconds: only a
+// batch the scalar loop would run briefly stays uninterruptible.
+bool brief(const Batch& b) { return b.n <= (one_cylinder_path(b) && !b.margin ? kBriefBatch : kBriefScalar); }
 
 std::string intersects(const AlignedFields& boxes, const CylinderFields& cylinders, const Batch& b,
                        const std::stop_token& stop) {

@@ -12,6 +12,7 @@
 #include <cstddef>     // std::ptrdiff_t
 #include <cstdint>     // std::int64_t
 #include <cstring>     // std::memcpy: array elements need not be aligned
+#include <optional>    // a batch's margin
 #include <stdexcept>   // std::invalid_argument, std::runtime_error
 #include <stop_token>  // the stop a long run looks at
 #include <string>      // messages
@@ -132,11 +133,14 @@ struct Batch {
     boxcyl::QueryOptions options;
     unsigned threads = 0;  // 0: all cores
     bool* result = nullptr;
+    // Given: the clearance query, dist(box, cylinder) ≤ *margin (a valid margin), exact whatever the
+    // options say, as the scalar boxcyl.intersects(..., margin=) answers it.
+    std::optional<double> margin;
 };
 
 // Whether the batch is short enough to run on the calling thread, uninterrupted.
 bool brief(const Batch& b);
-// Answers the batch (the single box and cylinder already validated). Returns the message naming its
+// Answers the batch (the single box and cylinder, and the margin, already validated). Returns the message naming its
 // first invalid element by index, or an empty string. Throws boxcyl::batch::Stopped once `stop` is
 // requested.
 std::string intersects(const AlignedFields& boxes, const CylinderFields& cylinders, const Batch& b,

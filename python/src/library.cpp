@@ -1,8 +1,9 @@
 // The library code the module calls, compiled here in one translation unit so that the exact query's
 // templates are instantiated once: the double-precision functions of boxcyl/compiled.hpp that the
 // binding files use (as src/lib defines them all for the compiled library boxcyl::boxcyl) — the scalar
-// queries, the batch API with its header kernel, the grid query — and the scalar exact default that
-// the AVX2 and AVX-512 kernels (src/batch) call (src/batch/pipeline.cpp's explicit instantiations).
+// queries, the batch API with its header kernel (intersects and within_distance), the grid query —
+// and the scalar exact default that the AVX2 and AVX-512 kernels (src/batch) call
+// (src/batch/pipeline.cpp's explicit instantiations).
 #include "boxcyl/batch.hpp"
 #include "boxcyl/clearance.hpp"
 #include "boxcyl/grid.hpp"
@@ -29,6 +30,10 @@ Stats header_oriented(const Cylinder<double>& c, std::span<const boxcyl::Oriente
 Stats header_parallelepiped(const Cylinder<double>& c, std::span<const boxcyl::Parallelepiped<double>> b, Bools out,
                             const Options& o) {
     return boxcyl::batch::intersects(c, b, out, o);
+}
+template <class Boxes>
+Stats header_within(const Cylinder<double>& c, const Boxes& b, double m, Bools out, const Options& o) {
+    return boxcyl::batch::within_distance(c, b, m, out, o);
 }
 void header_for_each_cell(const boxcyl::Grid& g, const Cylinder<double>& c,
                           void (*f)(void*, std::int64_t, std::int64_t, std::int64_t), void* context,
@@ -118,6 +123,23 @@ Stats intersects(const Cylinder<double>& cyl, std::span<const OrientedBox<double
 Stats intersects(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes, std::span<bool> out,
                  const Options& opt) {
     return header_parallelepiped(cyl, boxes, out, opt);
+}
+
+Stats within_distance(const Cylinder<double>& cyl, const AlignedBoxes<double>& boxes, double margin, std::span<bool> out,
+                      const Options& opt) {
+    return header_within(cyl, boxes, margin, out, opt);
+}
+Stats within_distance(const Cylinder<double>& cyl, std::span<const AlignedBox<double>> boxes, double margin,
+                      std::span<bool> out, const Options& opt) {
+    return header_within(cyl, boxes, margin, out, opt);
+}
+Stats within_distance(const Cylinder<double>& cyl, std::span<const OrientedBox<double>> boxes, double margin,
+                      std::span<bool> out, const Options& opt) {
+    return header_within(cyl, boxes, margin, out, opt);
+}
+Stats within_distance(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes, double margin,
+                      std::span<bool> out, const Options& opt) {
+    return header_within(cyl, boxes, margin, out, opt);
 }
 
 }  // namespace boxcyl::batch::compiled

@@ -12,9 +12,11 @@
 
 #include <algorithm>         // std::max
 #include <initializer_list>  // the fields of a batch
+#include <optional>          // a batch's margin
 #include <thread>            // std::thread::hardware_concurrency
 
 #include "bindings.hpp"
+#include "boxcyl/margin.hpp"
 #include "boxcyl/version.hpp"
 
 namespace boxcyl_python {
@@ -88,11 +90,12 @@ CylinderFields cylinder_fields(const py::array& center, const py::array& axis, c
 template <class Boxes>
 py::array_t<bool> run_batch(const Boxes& boxes, const CylinderFields& cylinders, Index n, bool box_single,
                             bool cylinder_single, boxcyl::Algorithm algorithm, boxcyl::Arithmetic arithmetic,
-                            unsigned threads) {
+                            unsigned threads, std::optional<double> margin) {
+    if (margin && !boxcyl::is_valid_margin(*margin)) throw py::value_error(boxcyl::validate_margin(*margin).message());
     if (box_single) validated(boxes(0), "box");
     if (cylinder_single) validated(cylinders(0), "cylinder");
     py::array_t<bool> out(n);
-    const Batch b{n, box_single, cylinder_single, {algorithm, arithmetic}, threads, out.mutable_data()};
+    const Batch b{n, box_single, cylinder_single, {algorithm, arithmetic}, threads, out.mutable_data(), margin};
     std::string failure;
     run_interruptibly(brief(b), [&](const std::stop_token& stop) { failure = intersects(boxes, cylinders, b, stop); });
     if (!failure.empty()) throw py::value_error(failure);
@@ -102,24 +105,25 @@ py::array_t<bool> run_batch(const Boxes& boxes, const CylinderFields& cylinders,
 py::array_t<bool> intersects_aligned(const py::array& min, const py::array& max, bool box_single,
                                      const py::array& center, const py::array& axis, const py::array& radius,
                                      const py::array& height, bool cylinder_single, boxcyl::Algorithm algorithm,
-                                     boxcyl::Arithmetic arithmetic, unsigned threads) {
+                                     boxcyl::Arithmetic arithmetic, unsigned threads, std::optional<double> margin) {
     const AlignedFields boxes{field(min, "min", {3}), field(max, "max", {3})};
     const CylinderFields cyls = cylinder_fields(center, axis, radius, height);
     const Index n = batch_length({&boxes.min, &boxes.max, &cyls.center, &cyls.axis, &cyls.radius, &cyls.height});
-    return run_batch(boxes, cyls, n, box_single, cylinder_single, algorithm, arithmetic, threads);
+    return run_batch(boxes, cyls, n, box_single, cylinder_single, algorithm, arithmetic, threads, margin);
 }
 
 template <class Box>
 py::array_t<bool> intersects_frames(const py::array& box_center, const py::array& axes, const py::array& extents,
                                     bool box_single, const py::array& center, const py::array& axis,
                                     const py::array& radius, const py::array& height, bool cylinder_single,
-                                    boxcyl::Algorithm algorithm, boxcyl::Arithmetic arithmetic, unsigned threads) {
+                                    boxcyl::Algorithm algorithm, boxcyl::Arithmetic arithmetic, unsigned threads,
+                                    std::optional<double> margin) {
     const FrameFields<Box> boxes{field(box_center, "box center", {3}), field(axes, "axes", {3, 3}),
                                  field(extents, "extents", {3})};
     const CylinderFields cyls = cylinder_fields(center, axis, radius, height);
     const Index n = batch_length(
         {&boxes.center, &boxes.axes, &boxes.extents, &cyls.center, &cyls.axis, &cyls.radius, &cyls.height});
-    return run_batch(boxes, cyls, n, box_single, cylinder_single, algorithm, arithmetic, threads);
+    return run_batch(boxes, cyls, n, box_single, cylinder_single, algorithm, arithmetic, threads, margin);
 }
 
 // ---- The grid query: an (M, 3) int64 array of cell indices. ----
@@ -164,13 +168,13 @@ PYBIND11_MODULE(_core, m) {
 
     // The batch kernels: the package's intersects_aligned etc. shape the arguments.
     m.def("_intersects_aligned", &intersects_aligned, "min"_a, "max"_a, "box_single"_a, "center"_a, "axis"_a,
-          "radius"_a, "height"_a, "cylinder_single"_a, "algorithm"_a, "arithmetic"_a, "threads"_a);
+          "radius"_a, "height"_a, "cylinder_single"_a, "algorithm"_a, "arithmetic"_a, "threads"_a, "margin"_a);
     m.def("_intersects_oriented", &intersects_frames<OrientedBox>, "box_center"_a, "axes"_a, "extents"_a,
           "box_single"_a, "center"_a, "axis"_a, "radius"_a, "height"_a, "cylinder_single"_a, "algorithm"_a,
-          "arithmetic"_a, "threads"_a);
+          "arithmetic"_a, "threads"_a, "margin"_a);
     m.def("_intersects_parallelepiped", &intersects_frames<Parallelepiped>, "box_center"_a, "axes"_a, "extents"_a,
           "box_single"_a, "center"_a, "axis"_a, "radius"_a, "height"_a, "cylinder_single"_a, "algorithm"_a,
-          "arithmetic"_a, "threads"_a);
+          "arithmetic"_a, "threads"_a, "margin"_a);
 
     m.def("_grid_cells", &cells_of, "origin"_a, "cell_size"_a, "counts"_a, "cylinder"_a, "margin"_a, "max_cells"_a,
           "The cells (i, j, k) of the grid within `margin` of the cylinder (0: that it meets), sorted; "

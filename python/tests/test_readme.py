@@ -18,5 +18,6 @@ def test_readme_python_blocks_run():
     assert scope["apart"] is False
     exec(compile(blocks[1], "README.md (batches and Dask)", "exec"), scope)
     assert scope["hits"].tolist() == [True, False]
+    assert scope["near"].tolist() == [True, True]  # the second box's face x = 0.5 is 0.5 from the side
     assert scope["count"] == 500_000
     assert isinstance(scope["hits"], np.ndarray)

@@ -1,5 +1,6 @@
-// boxcyl::boxcyl: the batch queries of boxcyl/compiled.hpp, those of boxcyl/batch.hpp compiled once
-// here (with boxcyl::batch_dispatch linked: the AVX2 and AVX-512 kernels are chosen at run time).
+// boxcyl::boxcyl: the batch queries of boxcyl/compiled.hpp (intersects and the clearance form
+// within_distance), those of boxcyl/batch.hpp compiled once here (with boxcyl::batch_dispatch linked:
+// the AVX2 and AVX-512 kernels are chosen at run time).
 #include "boxcyl/batch.hpp"
 
 // The calls into boxcyl/batch.hpp come before boxcyl/compiled.hpp is included: after it, a call
@@ -59,6 +60,13 @@ Stats header_parallelepiped(const Cylinder<double>& c, std::span<const Parallele
     return boxcyl::batch::intersects(c, b, out, o);
 }
 
+// The clearance form for every layout and output (the argument types are those of the compiled
+// declarations, so the call resolves to the header's overload).
+template <class Boxes, class Out>
+Stats header_within(const Cylinder<double>& c, const Boxes& b, double m, Out out, const Options& o) {
+    return boxcyl::batch::within_distance(c, b, m, out, o);
+}
+
 }  // namespace
 
 #include "boxcyl/compiled.hpp"
@@ -115,6 +123,56 @@ Stats intersects(const Cylinder<double>& c, std::span<const Parallelepiped<float
 }
 Stats intersects(const Cylinder<double>& c, std::span<const Parallelepiped<float>> b, Bools out, const Options& o) {
     return header_parallelepiped(c, b, out, o);
+}
+
+
+Stats within_distance(const Cylinder<double>& c, const AlignedBoxes<double>& b, double m, Mask out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, const AlignedBoxes<double>& b, double m, Bools out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, const AlignedBoxes<float>& b, double m, Mask out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, const AlignedBoxes<float>& b, double m, Bools out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, std::span<const AlignedBox<double>> b, double m, Mask out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, std::span<const AlignedBox<double>> b, double m, Bools out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, std::span<const AlignedBox<float>> b, double m, Mask out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, std::span<const AlignedBox<float>> b, double m, Bools out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, std::span<const OrientedBox<double>> b, double m, Mask out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, std::span<const OrientedBox<double>> b, double m, Bools out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, std::span<const OrientedBox<float>> b, double m, Mask out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, std::span<const OrientedBox<float>> b, double m, Bools out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, std::span<const Parallelepiped<double>> b, double m, Mask out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, std::span<const Parallelepiped<double>> b, double m, Bools out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, std::span<const Parallelepiped<float>> b, double m, Mask out, const Options& o) {
+    return header_within(c, b, m, out, o);
+}
+Stats within_distance(const Cylinder<double>& c, std::span<const Parallelepiped<float>> b, double m, Bools out, const Options& o) {
+    return header_within(c, b, m, out, o);
 }
 
 }  // namespace boxcyl::batch::compiled

@@ -7,6 +7,8 @@
 #include <cstdio>   // std::printf
 #include <cstring>  // std::strcmp
 #include <span>     // batch inputs and outputs
+#include <stdexcept>  // a refused margin
+#include <string>   // its message
 #include <vector>   // batch arrays
 
 // Every header the README shows: with the compiled library, <boxcyl/batch.hpp> and <boxcyl/grid.hpp>
@@ -99,6 +101,28 @@ void batch() {
     const boxcyl::Cylinder<float> fcyl{{3, 0, 0}, {0, 0, 5}, 2, 1};
     boxcyl::batch::intersects(fcyl, boxes, std::span<bool>(out));
     check(out[0] && !out[1] && out[2], "batch with a float cylinder");
+    // The clearance form: box 1 is exactly d = 1 − one_ulp from the cylinder's side.
+    const double d = 1 - double(one_ulp), below = std::nextafter(d, 0.0);
+    boxcyl::batch::within_distance(cyl, boxes, d, std::span<std::uint64_t>(mask));
+    check(mask[0] == 0b111, "batch::within_distance at the margin (arrays)");
+    boxcyl::batch::within_distance(cyl, boxes, below, std::span<bool>(out));
+    check(out[0] && !out[1] && out[2], "batch::within_distance one ulp below the margin (arrays, bools)");
+    rows[1].max[0] = one_ulp;
+    boxcyl::batch::within_distance(cyl, std::span<const boxcyl::AlignedBox<T>>(rows), d, std::span<std::uint64_t>(mask));
+    check(mask[0] == 0b111, "batch::within_distance (rows)");
+    boxcyl::batch::within_distance(fcyl, std::span<const boxcyl::OrientedBox<T>>(oriented), 0.5,
+                                   std::span<std::uint64_t>(mask));
+    check(mask[0] == 0b111, "batch::within_distance (oriented boxes, float cylinder)");
+    boxcyl::batch::within_distance(cyl, std::span<const boxcyl::OrientedBox<T>>(oriented), 0.0,
+                                   std::span<std::uint64_t>(mask));
+    check(mask[0] == 0b101, "batch::within_distance at margin 0 (oriented boxes)");
+    bool refused = false;
+    try {
+        boxcyl::batch::within_distance(cyl, boxes, -1.0, std::span<bool>(out));
+    } catch (const std::invalid_argument& e) {
+        refused = std::string(e.what()) == "margin: is negative";
+    }
+    check(refused, "batch::within_distance refuses a negative margin");
 }
 
 // The integer-vertex box spanned by (3,4,0), (-4,3,0), (0,0,5) (extents 1), and a segment along z at
@@ -112,6 +136,12 @@ void parallelepiped() {
     bool out[2] = {};
     boxcyl::batch::intersects(touching, std::span<const boxcyl::Parallelepiped<double>>(many), std::span<bool>(out));
     check(out[0] && out[1], "batch of parallelepipeds");
+    const boxcyl::Cylinder<double> near{{8, 1, 0}, {0, 0, 1}, 0, 2};  // the vertex (7, 1, z) exactly 1 away
+    boxcyl::batch::within_distance(near, std::span<const boxcyl::Parallelepiped<double>>(many), 1.0, std::span<bool>(out));
+    check(out[0] && out[1], "batch::within_distance of parallelepipeds at the margin");
+    boxcyl::batch::within_distance(near, std::span<const boxcyl::Parallelepiped<double>>(many), std::nextafter(1.0, 0.0),
+                                   std::span<bool>(out));
+    check(!out[0] && !out[1], "batch::within_distance of parallelepipeds one ulp below the margin");
 }
 
 void grid() {

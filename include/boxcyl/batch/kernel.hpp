@@ -2,7 +2,8 @@
 // of batch/filter.hpp's Lanes — the SIMD filter over every vector of boxes, a second pass for aligned
 // boxes over the lanes the first left (gathered into full vectors), for oriented boxes the hit search
 // over the lanes the first left (gathered), the scalar exact default for what is still undecided, the
-// blocks split over threads. Everything here lives in filter.hpp's instruction-set namespace
+// blocks split over threads. The clearance form (batch::within_distance) runs the same filter on its
+// probe cylinders and leaves what they do not decide to the scalar clearance query. Everything here lives in filter.hpp's instruction-set namespace
 // (BOXCYL_BATCH_ISA), so that the kernel can be compiled once per instruction set into one program
 // (src/batch/: AVX2, AVX-512) beside the header's own.
 #pragma once
@@ -95,7 +96,7 @@ template <class T>
 struct AlignedSource {
     const AlignedBoxes<T>& b;
 
-    // First pass: lanes [i, i + valid) (block_bits runs the centre-and-ball tests on them).
+    // First pass: lanes [i, i + valid) (filter_block runs the centre-and-ball tests on them).
     BOXCYL_FORCE_INLINE inline void load_lanes(std::size_t i, std::size_t valid, Lanes lo[3], Lanes hi[3]) const {
         load(b.min_x.data(), i, valid, lo[0]);
         load(b.min_y.data(), i, valid, lo[1]);
@@ -196,7 +197,7 @@ template <class T>
 struct OrientedSource {
     std::span<const OrientedBox<T>> b;
 
-    // First pass: lanes [i, i + valid) (block_bits runs the whole filter but its hit search on them).
+    // First pass: lanes [i, i + valid) (filter_block runs the whole filter but its hit search on them).
     BOXCYL_FORCE_INLINE inline void load_frames(std::size_t i, std::size_t valid, Lanes k[3], Lanes A[3][3], Lanes e[3]) const {
         const OrientedBox<T>* x = b.data() + i;
         load([x, valid](std::size_t l) -> const OrientedBox<T>& { return x[std::min(l, valid - 1)]; }, k, A, e);
@@ -242,24 +243,23 @@ BOXCYL_FORCE_INLINE inline LaneBits to_bits(const LaneResult& r) {
     return {sum & 0xFFFF, sum >> 16};
 }
 
-// Answers for boxes [begin, begin + count), count ≤ 64, as bits 0..count−1: the first pass over every
-// vector of boxes without a branch per lane (aligned sources load the lanes, and the centre-and-ball
-// tests run here); a source with a second pass (aligned boxes: the whole filter) sends the lanes the
-// first left undecided through it, gathered into full vectors; a source whose first pass stops before
-// the hit search (oriented boxes) sends the lanes it left through that search (filter.hpp's
-// search_hits), gathered; what is still undecided goes to the scalar exact default, one box at a time.
+// The filter's answers for boxes [begin, begin + count), count ≤ 64, as bits 0..count−1: `hit` for the
+// lanes it proves to meet the cylinder, `open` for those it leaves undecided (the others it proves to
+// miss). The first pass runs over every vector of boxes without a branch per lane (aligned sources load
+// the lanes, and the centre-and-ball tests run here); a source with a second pass (aligned boxes: the
+// whole filter) sends the lanes the first left undecided through it, gathered into full vectors; a
+// source whose first pass stops before the hit search (oriented boxes) sends the lanes it left through
+// that search (filter.hpp's search_hits), gathered.
 // check (Options::check_boxes): every box of the block is known valid before any is answered — for
 // aligned and oriented sources by a few vector operations on the loaded lanes (is_valid over the block
 // only when they cannot clear a vector), else by is_valid per box; the first invalid one throws
 // InvalidBox.
+struct BlockFilter {
+    std::uint64_t hit, open;
+};
 template <class Source>
-std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, const Source& s, std::size_t begin,
-                         std::size_t count, bool check, Stats& st) {
-#ifndef NDEBUG
-    if (!check)
-        for (std::size_t i = begin; i < begin + count; ++i)
-            assert(is_valid(s.box(i)) && "boxcyl::batch::intersects: invalid box (see boxcyl::validate)");
-#endif
+BlockFilter filter_block(const CylinderFilter& f, const Source& s, std::size_t begin, std::size_t count, bool check,
+                         Stats& st) {
     constexpr bool loads = requires(Lanes* v) { s.load_lanes(std::size_t{0}, std::size_t{1}, v, v); };
     constexpr bool frames = requires(Lanes* v, Lanes (*m)[3]) { s.load_frames(std::size_t{0}, std::size_t{1}, v, m, v); };
     std::uint64_t bits = 0, open = 0;
@@ -314,19 +314,88 @@ std::uint64_t block_bits(const CylinderFilter& f, const Cylinder<double>& cyl, c
     if constexpr (requires(const std::size_t* p) { s.searched(f, p, std::size_t{1}); }) {
         if (open != 0) gathered_pass([&](const std::size_t* idx, std::size_t m) { return s.searched(f, idx, m); });
     }
-    for (std::uint64_t o = open; o != 0; o &= o - 1) {
+    return {bits, open};
+}
+
+// What one call asks of every box, prepared once per batch: whether it meets the cylinder
+// (batch::intersects) or whether it is within the margin (Clearance: batch::within_distance).
+struct Meets {
+    Cylinder<double> cylinder;
+    CylinderFilter filter;
+};
+struct Within {
+    const Clearance& query;
+    CylinderFilter filter[3];
+};
+inline Meets prepare_query(const Cylinder<double>& cyl) {
+    assert(is_valid(cyl) && "boxcyl::batch::intersects: invalid cylinder (see boxcyl::validate)");
+    return {cyl, prepare(cyl)};
+}
+inline Within prepare_query(const Clearance& q) {
+    assert(is_valid(q.cylinder) && "boxcyl::batch::within_distance: invalid cylinder (see boxcyl::validate)");
+    Within w{q, {}};
+    for (std::size_t k = 0; k < q.probes; ++k) w.filter[k] = prepare(q.probe[k]);
+    return w;
+}
+
+template <class Source>
+void assert_valid(const Source& s, std::size_t begin, std::size_t count, bool check) {
+#ifndef NDEBUG
+    if (!check)
+        for (std::size_t i = begin; i < begin + count; ++i)
+            assert(is_valid(s.box(i)) && "boxcyl::batch: invalid box (see boxcyl::validate)");
+#else
+    (void)s, (void)begin, (void)count, (void)check;
+#endif
+}
+
+// Answers for boxes [begin, begin + count), count ≤ 64, as bits 0..count−1: the filter, then the scalar
+// exact default for each lane it left undecided, one box at a time.
+template <class Source>
+std::uint64_t block_bits(const Meets& q, const Source& s, std::size_t begin, std::size_t count, bool check, Stats& st) {
+    assert_valid(s, begin, count, check);
+    const BlockFilter r = filter_block(q.filter, s, begin, count, check, st);
+    std::uint64_t bits = r.hit;
+    for (std::uint64_t o = r.open; o != 0; o &= o - 1) {
         const std::size_t i = begin + static_cast<std::size_t>(std::countr_zero(o));
-        if (filtered::query(s.box(i), cyl).intersect) bits |= std::uint64_t{1} << (i - begin);
+        if (filtered::query(s.box(i), q.cylinder).intersect) bits |= std::uint64_t{1} << (i - begin);
         ++st.exact_lanes;
     }
     return bits;
 }
 
-// Runs the blocks over the threads; emit(block, bits, count) stores one block's answers.
-template <class Source, class Emit>
-Stats run(const Cylinder<double>& cyl, const Source& s, std::size_t n, const Options& opt, Emit&& emit) {
-    assert(is_valid(cyl) && "boxcyl::batch::intersects: invalid cylinder (see boxcyl::validate)");
-    const CylinderFilter f = prepare(cyl);
+inline bool scalar_within(const Clearance& q, const AlignedBox<double>& b) { return q.aligned(b, q.cylinder, q.margin); }
+inline bool scalar_within(const Clearance& q, const OrientedBox<double>& b) { return q.oriented(b, q.cylinder, q.margin); }
+
+// The clearance form: the filter on each probe cylinder in turn, over the blocks that still have lanes
+// open (the first probe, holding the rounded cylinder, proves most far boxes out); a lane is answered
+// by the first probe that decides it the way that probe can answer, and the scalar clearance query
+// answers the lanes none decides.
+template <class Source>
+std::uint64_t block_bits(const Within& w, const Source& s, std::size_t begin, std::size_t count, bool check, Stats& st) {
+    assert_valid(s, begin, count, check);
+    const Clearance& q = w.query;
+    std::uint64_t bits = 0, open = count == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
+    for (std::size_t k = 0; k < q.probes && open != 0; ++k) {
+        const BlockFilter r = filter_block(w.filter[k], s, begin, count, check, st);
+        check = false;  // the first pass checked every box of the block
+        const std::uint64_t decided = open & ~r.open, says = decided & (q.decides_when[k] ? r.hit : ~r.hit);
+        if (q.decides_when[k]) bits |= says;
+        open &= ~says;
+    }
+    for (std::uint64_t o = open; o != 0; o &= o - 1) {
+        const std::size_t i = begin + static_cast<std::size_t>(std::countr_zero(o));
+        if (scalar_within(q, s.box(i))) bits |= std::uint64_t{1} << (i - begin);
+        ++st.exact_lanes;
+    }
+    return bits;
+}
+
+// Runs the blocks of query q (a cylinder or a Clearance) over the threads; emit(block, bits, count)
+// stores one block's answers.
+template <class Query, class Source, class Emit>
+Stats run(const Query& query, const Source& s, std::size_t n, const Options& opt, Emit&& emit) {
+    const auto q = prepare_query(query);
     const std::size_t blocks = mask_words(n);
     const unsigned threads = split::thread_count(opt.threads, n);
     std::vector<Stats> per_thread(threads);
@@ -335,7 +404,7 @@ Stats run(const Cylinder<double>& cyl, const Source& s, std::size_t n, const Opt
         for (std::size_t blk = first; blk < last; ++blk) {
             if (opt.stop.stop_requested()) throw Stopped();
             const std::size_t begin = blk * 64, count = std::min<std::size_t>(64, n - begin);
-            emit(blk, block_bits(f, cyl, s, begin, count, opt.check_boxes, x), count);
+            emit(blk, block_bits(q, s, begin, count, opt.check_boxes, x), count);
         }
         per_thread[t] = x;
     });
@@ -346,57 +415,57 @@ Stats run(const Cylinder<double>& cyl, const Source& s, std::size_t n, const Opt
     return st;
 }
 
-template <class Source>
-Stats to_mask(const Cylinder<double>& cyl, const Source& s, std::size_t n, std::span<std::uint64_t> mask,
-              const Options& opt) {
-    if (mask.size() < mask_words(n)) throw std::invalid_argument("boxcyl::batch::intersects: mask has too few words");
-    return run(cyl, s, n, opt, [&](std::size_t blk, std::uint64_t bits, std::size_t) { mask[blk] = bits; });
+template <class Query, class Source>
+Stats to_mask(const Query& q, const Source& s, std::size_t n, std::span<std::uint64_t> mask, const Options& opt) {
+    if (mask.size() < mask_words(n)) throw std::invalid_argument("boxcyl::batch: mask has too few words");
+    return run(q, s, n, opt, [&](std::size_t blk, std::uint64_t bits, std::size_t) { mask[blk] = bits; });
 }
 
-template <class Source>
-Stats to_bools(const Cylinder<double>& cyl, const Source& s, std::size_t n, std::span<bool> out, const Options& opt) {
-    if (out.size() < n) throw std::invalid_argument("boxcyl::batch::intersects: output has fewer elements than boxes");
-    return run(cyl, s, n, opt, [&](std::size_t blk, std::uint64_t bits, std::size_t count) {
+template <class Query, class Source>
+Stats to_bools(const Query& q, const Source& s, std::size_t n, std::span<bool> out, const Options& opt) {
+    if (out.size() < n) throw std::invalid_argument("boxcyl::batch: output has fewer elements than boxes");
+    return run(q, s, n, opt, [&](std::size_t blk, std::uint64_t bits, std::size_t count) {
         for (std::size_t l = 0; l < count; ++l) out[blk * 64 + l] = (bits >> l) & 1u;
     });
 }
 
-
 }  // namespace detail
 
-// The entry points (types.hpp's KernelEntries), and this kernel's table.
-template <class T>
-Stats aligned_mask(const Cylinder<double>& cyl, const AlignedBoxes<T>& b, std::span<std::uint64_t> mask,
-                   const Options& opt) {
-    return detail::to_mask(cyl, detail::AlignedSource<T>{b}, b.size(), mask, opt);
+// The entry points (types.hpp's QueryEntries) for query Q (a cylinder, or a Clearance), and this
+// kernel's table.
+template <class T, class Q>
+Stats aligned_mask(const Q& q, const AlignedBoxes<T>& b, std::span<std::uint64_t> mask, const Options& opt) {
+    return detail::to_mask(q, detail::AlignedSource<T>{b}, b.size(), mask, opt);
 }
-template <class T>
-Stats aligned_bools(const Cylinder<double>& cyl, const AlignedBoxes<T>& b, std::span<bool> out, const Options& opt) {
-    return detail::to_bools(cyl, detail::AlignedSource<T>{b}, b.size(), out, opt);
+template <class T, class Q>
+Stats aligned_bools(const Q& q, const AlignedBoxes<T>& b, std::span<bool> out, const Options& opt) {
+    return detail::to_bools(q, detail::AlignedSource<T>{b}, b.size(), out, opt);
 }
-template <class T>
-Stats rows_mask(const Cylinder<double>& cyl, std::span<const AlignedBox<T>> b, std::span<std::uint64_t> mask,
-                const Options& opt) {
-    return detail::to_mask(cyl, detail::AlignedRowsSource<T>{b}, b.size(), mask, opt);
+template <class T, class Q>
+Stats rows_mask(const Q& q, std::span<const AlignedBox<T>> b, std::span<std::uint64_t> mask, const Options& opt) {
+    return detail::to_mask(q, detail::AlignedRowsSource<T>{b}, b.size(), mask, opt);
 }
-template <class T>
-Stats rows_bools(const Cylinder<double>& cyl, std::span<const AlignedBox<T>> b, std::span<bool> out, const Options& opt) {
-    return detail::to_bools(cyl, detail::AlignedRowsSource<T>{b}, b.size(), out, opt);
+template <class T, class Q>
+Stats rows_bools(const Q& q, std::span<const AlignedBox<T>> b, std::span<bool> out, const Options& opt) {
+    return detail::to_bools(q, detail::AlignedRowsSource<T>{b}, b.size(), out, opt);
 }
-template <class T>
-Stats oriented_mask(const Cylinder<double>& cyl, std::span<const OrientedBox<T>> b, std::span<std::uint64_t> mask,
-                    const Options& opt) {
-    return detail::to_mask(cyl, detail::OrientedSource<T>{b}, b.size(), mask, opt);
+template <class T, class Q>
+Stats oriented_mask(const Q& q, std::span<const OrientedBox<T>> b, std::span<std::uint64_t> mask, const Options& opt) {
+    return detail::to_mask(q, detail::OrientedSource<T>{b}, b.size(), mask, opt);
 }
-template <class T>
-Stats oriented_bools(const Cylinder<double>& cyl, std::span<const OrientedBox<T>> b, std::span<bool> out,
-                     const Options& opt) {
-    return detail::to_bools(cyl, detail::OrientedSource<T>{b}, b.size(), out, opt);
+template <class T, class Q>
+Stats oriented_bools(const Q& q, std::span<const OrientedBox<T>> b, std::span<bool> out, const Options& opt) {
+    return detail::to_bools(q, detail::OrientedSource<T>{b}, b.size(), out, opt);
 }
 
+template <class T, class Q>
+constexpr QueryEntries<T, Q> query_entries() {
+    return {&aligned_mask<T, Q>, &aligned_bools<T, Q>, &rows_mask<T, Q>,
+            &rows_bools<T, Q>,   &oriented_mask<T, Q>, &oriented_bools<T, Q>};
+}
 template <class T>
 constexpr KernelEntries<T> entries() {
-    return {&aligned_mask<T>, &aligned_bools<T>, &rows_mask<T>, &rows_bools<T>, &oriented_mask<T>, &oriented_bools<T>};
+    return {query_entries<T, Cylinder<double>>(), query_entries<T, Clearance>()};
 }
 
 // kernel: the name this table answers to (Kernel::compiled for the header's own).

@@ -84,19 +84,43 @@ struct Stats {
 // Words of a bit mask for n boxes.
 constexpr std::size_t mask_words(std::size_t n) { return (n + 63) / 64; }
 
-// A kernel's entry points for one element type T of the boxes (float or double): aligned boxes (six
-// arrays, or an array of AlignedBox<T>) or oriented boxes, into a bit mask or a bool per box.
-// Preconditions as boxcyl::batch::intersects; the lengths are checked by the caller.
+// The clearance query of one batch (boxcyl::batch::within_distance, margin > 0): the filter tries the
+// probe cylinders in order (boxcyl/clearance.hpp's detail::clearance::probes), and a lane it proves to
+// meet probe k exactly when decides_when[k] says is answered decides_when[k]; the lanes no probe
+// decides go to the scalar query within_distance_unchecked through `aligned` or `oriented`. Through
+// pointers, so that the AVX2 and AVX-512 kernels (src/batch/) call the includer's plain x86-64 copy and
+// do not compile the clearance query themselves.
+struct Clearance {
+    Cylinder<double> cylinder;
+    double margin = 0;
+    Cylinder<double> probe[3];
+    bool decides_when[3] = {};
+    std::size_t probes = 0;
+    bool (*aligned)(const AlignedBox<double>&, const Cylinder<double>&, double) = nullptr;
+    bool (*oriented)(const OrientedBox<double>&, const Cylinder<double>&, double) = nullptr;
+};
+
+// A kernel's entry points for one element type T of the boxes (float or double) and one query Q (a
+// Cylinder<double>: intersects; a Clearance: within_distance): aligned boxes (six arrays, or an array
+// of AlignedBox<T>) or oriented boxes, into a bit mask or a bool per box. Preconditions as
+// boxcyl::batch::intersects; the lengths are checked by the caller.
+template <class T, class Q>
+struct QueryEntries {
+    Stats (*aligned_mask)(const Q&, const AlignedBoxes<T>&, std::span<std::uint64_t>, const Options&);
+    Stats (*aligned_bools)(const Q&, const AlignedBoxes<T>&, std::span<bool>, const Options&);
+    Stats (*rows_mask)(const Q&, std::span<const AlignedBox<T>>, std::span<std::uint64_t>, const Options&);
+    Stats (*rows_bools)(const Q&, std::span<const AlignedBox<T>>, std::span<bool>, const Options&);
+    Stats (*oriented_mask)(const Q&, std::span<const OrientedBox<T>>, std::span<std::uint64_t>, const Options&);
+    Stats (*oriented_bools)(const Q&, std::span<const OrientedBox<T>>, std::span<bool>, const Options&);
+};
+
 template <class T>
 struct KernelEntries {
-    Stats (*aligned_mask)(const Cylinder<double>&, const AlignedBoxes<T>&, std::span<std::uint64_t>, const Options&);
-    Stats (*aligned_bools)(const Cylinder<double>&, const AlignedBoxes<T>&, std::span<bool>, const Options&);
-    Stats (*rows_mask)(const Cylinder<double>&, std::span<const AlignedBox<T>>, std::span<std::uint64_t>,
-                       const Options&);
-    Stats (*rows_bools)(const Cylinder<double>&, std::span<const AlignedBox<T>>, std::span<bool>, const Options&);
-    Stats (*oriented_mask)(const Cylinder<double>&, std::span<const OrientedBox<T>>, std::span<std::uint64_t>,
-                           const Options&);
-    Stats (*oriented_bools)(const Cylinder<double>&, std::span<const OrientedBox<T>>, std::span<bool>, const Options&);
+    QueryEntries<T, Cylinder<double>> intersects;
+    QueryEntries<T, Clearance> within;
+
+    const QueryEntries<T, Cylinder<double>>& of(const Cylinder<double>&) const { return intersects; }
+    const QueryEntries<T, Clearance>& of(const Clearance&) const { return within; }
 };
 
 // One kernel: its name, its width, its entry points.
