@@ -12,6 +12,7 @@
 #include <random>   // fixed-seed generators
 
 #include "boxcyl/filtered/separation.hpp"
+#include "boxcyl/filtered/separation_refined.hpp"
 #include "clearance/clearance_oracle.hpp"
 #include "support/cases.hpp"
 #include "support/fp.hpp"  // RoundingMode
@@ -129,6 +130,53 @@ TEST(SeparationJudged, EveryRoundingMode) {
     }
     std::printf("rounding modes: %ld bounds judged, %d violations\n", t.checked, t.violations);
     EXPECT_EQ(t.violations, 0);
+}
+
+// The refined bounds (double-double after Newton refinement): the enclosures' ends, taken exactly as
+// rationals, bracket the oracle's squared distance; on most separated pairs they are tight to 2^-60
+// (the enclosures' error grows with the coordinates' magnitude, so far from the origin less: 2^-70 or so
+// relative to a distance 10^6 times smaller than the coordinates).
+Rational end_of(const DoubleDouble& x, int side) {
+    const Rational e = Rational(x.error()) * (Rational(1) + Rational(1, 1 << 30));
+    return Rational(x.high()) + Rational(x.low()) + (side > 0 ? e : Rational(-e));
+}
+
+TEST(SeparationJudged, RefinedBoundsRandomPairs) {
+    long checked = 0, separated = 0, tight = 0;
+    int violations = 0;
+    for (Profile p : {Profile::mixed, Profile::degenerate, Profile::uniform, Profile::georeferenced, Profile::magnitudes}) {
+        CaseGenerator gen(0x5e9a0500 + static_cast<std::uint64_t>(p), p);
+        for (int i = 0; i < (p == Profile::magnitudes ? 20 : 120); ++i) {
+            const Case c = gen.next();
+            const filtered::separation::RefinedBounds r = with_box(c, [](const auto& box, const Cylinder<double>& cyl) {
+                filtered::separation::Approximate a;
+                filtered::separation::bounds(box, cyl, -1, &a);
+                return filtered::separation::refined_bounds(box, cyl, a);
+            });
+            if (!r.found || !std::isfinite(r.upper.high()) || !std::isfinite(r.upper.error())) continue;
+            const Parallelepiped<Rational> box = exact_box(c);
+            const Cylinder<Rational> cyl = to_exact(c.cylinder);
+            ++checked;
+            const Rational hi = end_of(r.upper, 1);
+            bool ok = clearance_oracle::compare_squared_distance(box, cyl, hi * hi) <= 0;
+            const bool lower_finite = std::isfinite(r.lower.high()) && std::isfinite(r.lower.error());
+            if (lower_finite) {
+                const Rational lo = end_of(r.lower, -1);
+                if (lo > 0) {
+                    ++separated;
+                    ok = ok && clearance_oracle::compare_squared_distance(box, cyl, lo * lo) >= 0;
+                    if (hi - lo <= Rational(hi) / Rational(mpz_class(1) << 60)) ++tight;
+                }
+            }
+            if (!ok && ++violations <= 5)
+                ADD_FAILURE() << "refined bounds [" << hex(r.lower.lo()) << ", " << hex(r.upper.hi()) << "] do not hold for\n"
+                              << describe(c);
+        }
+    }
+    std::printf("refined: %ld bounds judged, %ld of %ld separated ones tight to 2^-60, %d violations\n", checked, tight,
+                separated, violations);
+    EXPECT_EQ(violations, 0);
+    EXPECT_GT(tight, separated * 8 / 10);
 }
 
 // Cases that once failed: axes whose |D|² underflows (the enclosure of u was NaN, and a clamp turned

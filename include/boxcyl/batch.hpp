@@ -200,12 +200,11 @@ bool scalar_within(const Box& box, const Cylinder<double>& cyl, double m) {
 // The clearance query at margin m > 0: the probes of the scalar query (boxcyl/clearance.hpp), in its
 // order; one whose sizes overflow is left out.
 inline Clearance clearance(const Cylinder<double>& cyl, double m) {
-    const boxcyl::detail::clearance::Probes p = boxcyl::detail::clearance::probes(cyl, m);
     Clearance q{cyl, m, {}, {}, 0, &scalar_within<AlignedBox<double>>, &scalar_within<OrientedBox<double>>};
-    for (std::size_t k = 0; k < p.probe.size(); ++k)
-        if (p.valid[k]) {
-            q.probe[q.probes] = p.probe[k].cylinder;
-            q.decides_when[q.probes++] = p.probe[k].decides_when;
+    for (const boxcyl::detail::clearance::Probe& p : boxcyl::detail::clearance::probes(boxcyl::detail::clearance::grown(cyl, m)))
+        if (p.valid) {
+            q.probe[q.probes] = p.cylinder;
+            q.decides_when[q.probes++] = p.decides_when;
         }
     return q;
 }

@@ -8,8 +8,9 @@
 //
 // How: a table of stages, each answering only what it proves: three probes with the exact intersection
 // query (a cylinder inside the rounded one — a hit answers yes; one that holds it — a miss answers
-// no), certified distance bounds from an approximate closest pair (filtered/separation.hpp), the rim
-// tori's tests in interval arithmetic (filtered/rim.hpp), and the exact clearance decision
+// no), certified distance bounds from an approximate closest pair (filtered/separation.hpp), the same
+// refined in double-double (filtered/separation_refined.hpp), the rim tori's tests in interval
+// arithmetic (filtered/rim.hpp), and the exact clearance decision
 // (exact/clearance.hpp) for what remains. docs/clearance.md has the method and its figures.
 #pragma once
 
@@ -32,6 +33,7 @@
 #include "boxcyl/exact/convert.hpp"
 #include "boxcyl/filtered/rim.hpp"
 #include "boxcyl/filtered/separation.hpp"
+#include "boxcyl/filtered/separation_refined.hpp"
 #endif
 
 namespace boxcyl {
@@ -67,6 +69,19 @@ inline Grown grown(const Cylinder<double>& c, double m) {
             std::isfinite(r.hi) && std::isfinite(h.hi)};
 }
 
+// One probe: the exact intersection query on a cylinder; when its answer is `decides_when`, that is
+// the answer. `valid` is false for the outer cylinder whose sizes overflow (left out).
+struct Probe {
+    Cylinder<double> cylinder;
+    bool decides_when;
+    bool valid;
+};
+// The probes in the order the query asks them (the batch filter asks the same, in the same order): fat
+// (a hit is a hit), outer (a miss is a miss), tall (a hit is a hit).
+inline std::array<Probe, 3> probes(const Grown& g) {
+    return {{{g.fat, true, true}, {g.outer, false, g.outer_valid}, {g.tall, true, true}}};
+}
+
 #if defined(BOXCYL_HAS_EXACT)
 // One query on its way through the stages, with what earlier stages proved for later ones.
 template <class Box>
@@ -75,6 +90,7 @@ struct Pair {
     const Cylinder<double>& cyl;
     double m;
     Grown g;
+    filtered::separation::Approximate search{};  // the distance bounds' search, for the refined stage
     filtered::rim::Proved proved{};
 };
 
@@ -82,28 +98,26 @@ struct Pair {
 template <class Box>
 using Stage = std::optional<bool> (*)(Pair<Box>&);
 
-template <class Box>
-std::optional<bool> fat_probe(Pair<Box>& q) {
-    if (intersects_unchecked(q.box, q.g.fat)) return true;
-    return std::nullopt;
-}
-template <class Box>
-std::optional<bool> outer_probe(Pair<Box>& q) {
-    if (q.g.outer_valid && !intersects_unchecked(q.box, q.g.outer)) return false;
-    return std::nullopt;
-}
-template <class Box>
-std::optional<bool> tall_probe(Pair<Box>& q) {
-    if (intersects_unchecked(q.box, q.g.tall)) return true;
+// Probe k of probes().
+template <class Box, std::size_t k>
+std::optional<bool> probe(Pair<Box>& q) {
+    const Probe p = probes(q.g)[k];
+    if (p.valid && intersects_unchecked(q.box, p.cylinder) == p.decides_when) return p.decides_when;
     return std::nullopt;
 }
 // Certified distance bounds from an approximate closest pair (filtered/separation.hpp).
 template <class Box>
 std::optional<bool> separation(Pair<Box>& q) {
-    const filtered::separation::Bounds b = filtered::separation::bounds(q.box, q.cyl, q.m);
+    const filtered::separation::Bounds b = filtered::separation::bounds(q.box, q.cyl, q.m, &q.search);
     if (b.upper <= q.m) return true;
     if (b.lower > q.m) return false;
     return std::nullopt;
+}
+// The same bounds after Newton refinement, in double-double (filtered/separation_refined.hpp): the
+// pairs within rounding of the margin.
+template <class Box>
+std::optional<bool> refined_separation(Pair<Box>& q) {
+    return filtered::separation::refined_within(q.box, q.cyl, q.m, q.search);
 }
 // Whether the box misses the exact fat and tall cylinders, proved by missing them with their sizes
 // rounded up.
@@ -135,14 +149,15 @@ std::optional<bool> exact_stage(Pair<Box>& q) {
 }
 
 // The order is policy: on random pairs most are decided by one probe (the fat cylinder's hit or the
-// outer one's miss, one exact intersection query each); the separation bounds, dearer, decide nearly
-// all of the rest; the rim tests and the exact decision are for pairs within rounding of the margin
-// (docs/clearance.md gives the measured shares).
+// outer one's miss, one exact intersection query each); the distance bounds in double, dearer, decide
+// nearly all of the rest; the refined bounds those within rounding of the margin; the rim tests and
+// the exact decision what is left: distances exactly at the margin, and every query in a directed
+// rounding mode that the earlier stages leave (docs/clearance.md gives the measured shares).
 template <class Box>
-inline constexpr std::array<Stage<Box>, 6> stages{&fat_probe<Box>, &outer_probe<Box>, &tall_probe<Box>,
-                                                  &separation<Box>, &rim<Box>, &exact_stage<Box>};
-inline constexpr std::array<const char*, 6> stage_names{"fat probe", "outer probe", "tall probe",
-                                                        "distance bounds", "rim intervals", "exact"};
+inline constexpr std::array<Stage<Box>, 7> stages{&probe<Box, 0>, &probe<Box, 1>, &probe<Box, 2>, &separation<Box>,
+                                                  &refined_separation<Box>, &rim<Box>, &exact_stage<Box>};
+inline constexpr std::array<const char*, 7> stage_names{"fat probe",      "outer probe",   "tall probe", "distance bounds",
+                                                        "refined bounds", "rim intervals", "exact"};
 
 // The index of the stage that answers, for the benchmark's per-stage shares (margin > 0).
 template <class Box>

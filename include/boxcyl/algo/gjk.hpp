@@ -48,7 +48,7 @@ inline V box_point(const Box& b, const V& mu) {
 }
 inline V support(const Cylinder& k, const V& d) {
     const double s = dot(d, k.u);
-    const V perp = d - s * k.u;
+    const V perp = cross(k.u, cross(d, k.u));  // d's part across the axis; d − s·u cancels when d ∥ u
     const double len = std::sqrt(dot(perp, perp));
     V p = k.c + (s >= 0 ? k.half_h : -k.half_h) * k.u;
     if (len > 0) p = p + (k.r / len) * perp;

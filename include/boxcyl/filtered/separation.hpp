@@ -48,36 +48,43 @@ inline I positive_part(const I& x) {
 
 }  // namespace detail
 
-// The bounds for the box enclosed by `box` (rim.hpp's enclosure) and the cylinder. With `decide_at`
-// ≥ 0 the search stops once the distance is clearly on one side of it, and only the bound that can
-// decide "dist ≤ decide_at" is proved (the other is left at 0 or +∞).
-inline Bounds bounds(const rim::Box& box, const Cylinder<double>& c, double decide_at = -1) {
-    using detail::mid;
-    const rim::Rims f(c, 0.0);
-    if (!f.valid) return {0, std::numeric_limits<double>::infinity()};
-    algo::gjk::Box gb{mid(box.center), {mid(box.half[0]), mid(box.half[1]), mid(box.half[2])}};
-    const Vec3<double> u = mid(f.u);
-    const algo::gjk::Closest g = algo::gjk::closest(gb, {c.center, u, c.radius, 0.5 * c.height}, decide_at);
+// The search in double: GJK's box point and the best lower-bound direction, with both bounds as
+// doubles (unproved). The refined stage (separation_refined.hpp) starts from it.
+struct Approximate {
+    algo::gjk::Box box;
+    Vec3<double> u;           // the axis, unit up to rounding
+    algo::gjk::Closest closest;
+    Vec3<double> p;           // the box point c + Σ μi·hi
+    double upper;             // p's distance to the cylinder
+    double lower;             // the best direction's gap (−1: none positive)
+    Vec3<double> direction;   // that direction, from the box towards the cylinder
+    bool found = false;       // false: the search did not run (an axis whose enclosure is not finite)
+};
 
-    // Both bounds first in double, to see which one decides (only that one is then evaluated in
-    // intervals, the dearer part).
-    const Vec3<double> p = algo::gjk::detail::box_point(gb, g.mu);
-    const double approx_upper = [&] {
-        const Vec3<double> Z = p - c.center, Zxu = cross(Z, u);
+inline Approximate approximate(const rim::Box& box, const rim::Rims& f, const Cylinder<double>& c, double decide_at) {
+    using detail::mid;
+    Approximate a;
+    a.box = {mid(box.center), {mid(box.half[0]), mid(box.half[1]), mid(box.half[2])}};
+    a.u = mid(f.u);
+    const Vec3<double>& u = a.u;
+    a.closest = algo::gjk::closest(a.box, {c.center, u, c.radius, 0.5 * c.height}, decide_at);
+    a.p = algo::gjk::detail::box_point(a.box, a.closest.mu);
+    {
+        const Vec3<double> Z = a.p - c.center, Zxu = cross(Z, u);
         const double dr = std::max(0.0, std::sqrt(dot(Zxu, Zxu)) - c.radius);
         const double da = std::max(0.0, std::abs(dot(Z, u)) - 0.5 * c.height);
-        return std::sqrt(dr * dr + da * da);
-    }();
+        a.upper = std::sqrt(dr * dr + da * da);
+    }
     // The lower bound's direction: GJK's, or one of the directions that separate the common contacts
     // exactly (a box face's normal: face to side or cap; the axis: cap to vertex, edge or face; an
     // edge's direction crossed with the axis: edge to side), whichever gives the largest gap in double.
-    const Vec3<double> towards = c.center - gb.c;
+    const Vec3<double> towards = c.center - a.box.c;
     auto gap = [&](Vec3<double> n) {  // (n·(C − c) − Σ|n·hi| − (h/2)|n·u| − r·|n × u|) / |n|, rounded
         if (dot(n, towards) < 0) n = -n;
         const double nn = dot(n, n), nu = dot(n, u);
         const Vec3<double> nxu = cross(n, u);
-        const double L = dot(n, towards) - std::abs(dot(n, gb.half[0])) - std::abs(dot(n, gb.half[1])) -
-                         std::abs(dot(n, gb.half[2])) - 0.5 * c.height * std::abs(nu) - c.radius * std::sqrt(dot(nxu, nxu));
+        const double L = dot(n, towards) - std::abs(dot(n, a.box.half[0])) - std::abs(dot(n, a.box.half[1])) -
+                         std::abs(dot(n, a.box.half[2])) - 0.5 * c.height * std::abs(nu) - c.radius * std::sqrt(dot(nxu, nxu));
         return std::pair{nn > 0 ? L / std::sqrt(nn) : -1.0, n};
     };
     std::pair<double, Vec3<double>> best{-1.0, {}};
@@ -85,12 +92,30 @@ inline Bounds bounds(const rim::Box& box, const Cylinder<double>& c, double deci
         const auto candidate = gap(n);
         if (candidate.first > best.first) best = candidate;  // NaN never wins
     };
-    if (!g.overlap) consider(g.q - p);
+    if (!a.closest.overlap) consider(a.closest.q - a.p);
     for (int i = 0; i < 3; ++i) {
-        consider(cross(gb.half[(i + 1) % 3], gb.half[(i + 2) % 3]));
-        consider(cross(gb.half[i], u));
+        consider(cross(a.box.half[(i + 1) % 3], a.box.half[(i + 2) % 3]));
+        consider(cross(a.box.half[i], u));
     }
     consider(u);
+    a.lower = best.first;
+    a.direction = best.second;
+    a.found = true;
+    return a;
+}
+
+// The bounds for the box enclosed by `box` (rim.hpp's enclosure) and the cylinder. With `decide_at`
+// ≥ 0 the search stops once the distance is clearly on one side of it, and only the bound that can
+// decide "dist ≤ decide_at" is proved (the other is left at 0 or +∞). `search`, when given, receives
+// the search's result.
+inline Bounds bounds(const rim::Box& box, const Cylinder<double>& c, double decide_at = -1, Approximate* search = nullptr) {
+    const rim::Rims f(c, 0.0);
+    if (!f.valid) return {0, std::numeric_limits<double>::infinity()};
+    const Approximate a = approximate(box, f, c, decide_at);
+    if (search) *search = a;
+    const algo::gjk::Closest& g = a.closest;
+    const double approx_upper = a.upper;
+    const std::pair<double, Vec3<double>> best{a.lower, a.direction};
     const bool want_upper = decide_at < 0 || approx_upper <= decide_at;
     const bool want_lower = decide_at < 0 || (!want_upper && best.first > decide_at);
 
@@ -123,8 +148,8 @@ inline Bounds bounds(const rim::Box& box, const Cylinder<double>& c, double deci
 }
 
 template <class AnyBox>
-Bounds bounds(const AnyBox& b, const Cylinder<double>& c, double decide_at = -1) {
-    return bounds(rim::enclose(b), c, decide_at);
+Bounds bounds(const AnyBox& b, const Cylinder<double>& c, double decide_at = -1, Approximate* search = nullptr) {
+    return bounds(rim::enclose(b), c, decide_at, search);
 }
 
 }  // namespace boxcyl::filtered::separation

@@ -1,0 +1,351 @@
+// The distance bounds of filtered/separation.hpp again, for the pairs whose distance lies too close to
+// the margin for bounds evaluated in double (within about 2^-40 of it, relatively; pairs within one ulp
+// of their margin always): the box point is refined by Newton's method on the box feature it lies on,
+// and both bounds are evaluated in double-double with proved error bounds (number/double_double.hpp:
+// about 2^-100 relative per operation), so that only distances within about 2^-90 of the margin, or
+// exactly at it, are left undecided.
+//
+// The refinement needs no proof: the point stays in the box by construction (c + Σ μi·hi with
+// |μi| ≤ 1), and a poor direction only loosens the lower bound. The bounds are those of
+// separation.hpp: upper = dist(X, cylinder) for the box point X, lower = the gap between supporting
+// planes along a direction n, here the best of
+//   - the refined pair's direction Y(X) − X (Y(X) the cylinder point nearest X): exact to second order
+//     when X is the nearest box point, whatever feature holds it;
+//   - the double search's best direction (face normals, the axis and edges crossed with the axis
+//     separate face, cap and side contacts exactly).
+// Why Newton: the gap along a direction that is off by an angle θ loses about θ times the contact
+// feature's length when the feature is an edge or a face (the support point jumps), so the direction
+// must be right to the precision sought, and with it the point: Newton's quadratic convergence from
+// the double search's point gives that in two or three steps.
+//
+// Double-double's error bounds hold in round to nearest only; in any other mode this stage declines
+// (nothing proved) and the exact decision answers.
+#pragma once
+
+#include <algorithm>  // std::max
+#include <array>      // the box's half axes
+#include <utility>    // std::swap
+#include <cmath>      // std::abs
+#include <optional>   // undecided
+
+#include "boxcyl/filtered/rim.hpp"         // scaled_axis
+#include "boxcyl/filtered/separation.hpp"  // Bounds, Approximate
+#include "boxcyl/geometry/box.hpp"
+#include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
+#include "boxcyl/number/double_double.hpp"
+
+namespace boxcyl::filtered::separation {
+
+namespace refined {
+
+using D = DoubleDouble;
+using DV = Vec3<DoubleDouble>;
+
+inline DV lift(const Vec3<double>& v) { return {D(v[0]), D(v[1]), D(v[2])}; }
+// The value alone, its error bound dropped: for the search, whose results need no proof.
+inline D value(const D& x) { return {x.high(), x.low(), 0.0}; }
+inline DV value(const DV& v) { return {value(v[0]), value(v[1]), value(v[2])}; }
+inline double approx(const D& x) { return x.high() + x.low(); }
+
+// The box exactly: sums and products of two doubles are exact in double-double.
+struct Box {
+    DV center;
+    std::array<DV, 3> half;
+};
+inline Box exact_box(const Parallelepiped<double>& b) {
+    Box box{lift(b.center), {}};
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) box.half[i][k] = D(b.extents[i]) * D(b.axes[i][k]);
+    return box;
+}
+inline Box exact_box(const OrientedBox<double>& b) { return exact_box(Parallelepiped<double>{b.center, b.axes, b.extents}); }
+inline Box exact_box(const CanonicalBox<double>& b) {
+    Box box{lift({0, 0, 0}), {}};
+    for (int i = 0; i < 3; ++i) {
+        box.half[i] = lift({0, 0, 0});
+        box.half[i][i] = D(b.extents[i]);
+    }
+    return box;
+}
+inline Box exact_box(const AlignedBox<double>& b) {
+    Box box;
+    for (int i = 0; i < 3; ++i) {
+        box.center[i] = (D(b.min[i]) + D(b.max[i])) * D(0.5);
+        box.half[i] = lift({0, 0, 0});
+        box.half[i][i] = (D(b.max[i]) - D(b.min[i])) * D(0.5);
+    }
+    return box;
+}
+
+struct Cyl {
+    DV C, u;
+    D r, half_h;
+};
+
+// max(x, 0) enclosed: x itself when certainly positive, 0 when certainly not, else every value between.
+inline D positive_part(const D& x) {
+    if (x.lo() > 0) return x;
+    if (!(x.hi() > 0)) return x.hi() <= 0 ? D(0.0) : x;  // NaN stays NaN
+    return D::range(0, x.hi());
+}
+
+// √x of a quantity known to be ≥ 0, enclosed even where the enclosure of x reaches 0 or below (sqrt
+// itself declines there): [0, √(upper bound)].
+inline D sqrt_nonnegative(const D& x) {
+    if (x.exact_zero()) return D(0.0);
+    if (x.lo() > 0) return sqrt(x);
+    const double hi = x.hi();
+    if (!(hi >= 0)) return hi <= 0 ? D(0.0) : x;  // NaN stays NaN
+    return D::range(0, boxcyl::detail::next_up(std::sqrt(hi)));
+}
+
+// X's distance to the cylinder, enclosed.
+inline D point_distance(const Cyl& k, const DV& X) {
+    const DV Z = X - k.C;
+    const DV Zxu = cross(Z, k.u);
+    const D rho = sqrt_nonnegative(dot(Zxu, Zxu));
+    const D dr = positive_part(rho - k.r);
+    const D da = positive_part(enclosure_abs(dot(Z, k.u)) - k.half_h);
+    return sqrt_nonnegative(dr * dr + da * da);
+}
+
+// The gap along n (any nonzero vector), over |n|: a lower bound of the distance when positive.
+inline D gap(const Box& box, const Cyl& k, const DV& n) {
+    D L = dot(n, k.C - box.center);
+    for (int i = 0; i < 3; ++i) L = L - enclosure_abs(dot(n, box.half[i]));
+    const DV nxu = cross(n, k.u);
+    L = L - k.half_h * enclosure_abs(dot(n, k.u)) - k.r * sqrt_nonnegative(dot(nxu, nxu));
+    return L / sqrt(dot(n, n));
+}
+
+// The box point for μ (values of |μi| ≤ 1).
+inline DV point(const Box& box, const std::array<D, 3>& mu) {
+    DV X = box.center;
+    for (int i = 0; i < 3; ++i) X = X + DV{mu[i] * box.half[i][0], mu[i] * box.half[i][1], mu[i] * box.half[i][2]};
+    return X;
+}
+
+// g(X) = dist(X, cylinder)², approximately (the search's measure of progress).
+inline double squared_distance(const Cyl& k, const DV& X) {
+    const DV Z = X - k.C;
+    const D t = dot(Z, k.u);
+    const DV Zxu = cross(Z, k.u);
+    const double rho = std::sqrt(std::max(0.0, approx(dot(Zxu, Zxu))));
+    const double dr = std::max(0.0, rho - approx(k.r)), da = std::max(0.0, std::abs(approx(t)) - approx(k.half_h));
+    return dr * dr + da * da;
+}
+
+// The box coordinates μ (|μi| ≤ 1, doubles) of a box point near P: the least-squares coordinates of P
+// over the box's nonzero half axes, clamped to the box (P's foot on the face it lies beyond, for a
+// box whose axes are orthogonal; a point near it otherwise).
+inline std::array<D, 3> foot(const algo::gjk::Box& b, const Vec3<double>& P) {
+    std::array<std::size_t, 3> idx{};
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < 3; ++i)
+        if (dot(b.half[i], b.half[i]) > 0) idx[n++] = i;
+    double G[3][4] = {};
+    const Vec3<double> d = P - b.c;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = 0; j < n; ++j) G[i][j] = dot(b.half[idx[i]], b.half[idx[j]]);
+        G[i][3] = dot(b.half[idx[i]], d);
+    }
+    // Gaussian elimination with partial pivoting on the n × n system (n ≤ 3).
+    for (std::size_t col = 0; col < n; ++col) {
+        std::size_t piv = col;
+        for (std::size_t r = col + 1; r < n; ++r)
+            if (std::abs(G[r][col]) > std::abs(G[piv][col])) piv = r;
+        for (std::size_t c = 0; c < 4; ++c) std::swap(G[col][c], G[piv][c]);
+        if (!(std::abs(G[col][col]) > 0)) return {D(0.0), D(0.0), D(0.0)};
+        for (std::size_t r = 0; r < n; ++r) {
+            if (r == col) continue;
+            const double f = G[r][col] / G[col][col];
+            for (std::size_t c = col; c < 4; ++c) G[r][c] -= f * G[col][c];
+        }
+    }
+    std::array<D, 3> mu{D(0.0), D(0.0), D(0.0)};
+    for (std::size_t i = 0; i < n; ++i) {
+        const double m = G[i][3] / G[i][i];
+        mu[idx[i]] = D(m > 1 ? 1.0 : m < -1 ? -1.0 : m == m ? m : 0.0);
+    }
+    return mu;
+}
+
+// Newton steps on the free coordinates of μ (those strictly inside (−1, 1)) for g(μ) = dist(X(μ), cyl)²,
+// on the values alone. g = (ρ − r)₊² + (|t| − h/2)₊² has, in X, the gradient 2(ρ − r)₊·∇ρ + 2(|t| − h/2)₊·sgn(t)·u
+// and the Hessian 2[∇ρ∇ρᵀ + (ρ − r)₊·∇²ρ] (where ρ > r) + 2uuᵀ (where |t| > h/2), with ∇ρ = P/ρ (P the
+// part of X − C across the axis) and ∇²ρ = (I − uuᵀ − ∇ρ∇ρᵀ)/ρ; the free coordinates see them through
+// the half axes. A step that leaves [−1, 1] is clamped, and that coordinate fixed.
+inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::array<bool, 3>& free, int steps) {
+    const DV u = value(k.u);
+    const D r = value(k.r), hh = value(k.half_h);
+    std::array<bool, 3> movable{};  // a zero half axis leaves the point where it is
+    for (std::size_t i = 0; i < 3; ++i) {
+        movable[i] = approx(dot(box.half[i], box.half[i])) > 0;
+        free[i] = free[i] && movable[i];
+    }
+    for (int step = 0; step < steps; ++step) {
+        const DV X = value(point(box, mu));
+        const DV Z = X - value(k.C);
+        const D t = value(dot(Z, u));
+        const DV P = value(Z - DV{t * u[0], t * u[1], t * u[2]});
+        const double rho_d = std::sqrt(approx(dot(P, P)));
+        const D rho = rho_d > 0 ? value(sqrt(dot(P, P))) : D(0.0);
+        const bool side = approx(rho - r) > 0 && rho_d > 0, cap = std::abs(approx(t)) > approx(hh);
+        // Gradient and Hessian in X (as functions of directions a, b).
+        const DV grad_rho = side ? DV{P[0] / rho, P[1] / rho, P[2] / rho} : lift({0, 0, 0});
+        const D over_r = side ? rho - r : D(0.0);
+        const D over_h = cap ? enclosure_abs(t) - hh : D(0.0);
+        const D sgn = approx(t) < 0 ? D(-1.0) : D(1.0);
+        auto gradient = [&](const DV& a) {
+            return D(2.0) * (over_r * dot(grad_rho, a) + over_h * sgn * dot(u, a));
+        };
+        auto hessian = [&](const DV& a, const DV& b) {
+            D h(0.0);
+            if (side) {
+                const D ga = dot(grad_rho, a), gb = dot(grad_rho, b);
+                h = ga * gb + over_r * (dot(a, b) - dot(u, a) * dot(u, b) - ga * gb) / rho;
+            }
+            if (cap) h = h + dot(u, a) * dot(u, b);
+            return D(2.0) * h;
+        };
+        // A coordinate held at ±1 is released where g decreases into the box (the feature guessed
+        // from the double search may be one too low: an edge where the nearest point is on a face).
+        for (std::size_t i = 0; i < 3; ++i) {
+            if (free[i] || !movable[i]) continue;
+            const double gi = approx(gradient(box.half[i]));
+            if ((approx(mu[i]) >= 1 && gi > 0) || (approx(mu[i]) <= -1 && gi < 0)) free[i] = true;
+        }
+        std::array<std::size_t, 2> idx{};
+        int nfree = 0;
+        for (std::size_t i = 0; i < 3; ++i)
+            if (free[i] && nfree < 2) idx[static_cast<std::size_t>(nfree++)] = i;
+        if (nfree == 0) return;
+        const DV& A0 = box.half[idx[0]];
+        std::array<D, 2> delta;
+        if (nfree == 1) {
+            const D h = hessian(A0, A0);
+            if (!(approx(h) > 0)) return;
+            delta = {value(-gradient(A0) / h), D(0.0)};
+        } else {
+            const DV& A1 = box.half[idx[1]];
+            const D h00 = hessian(A0, A0), h01 = hessian(A0, A1), h11 = hessian(A1, A1);
+            const D det = h00 * h11 - h01 * h01;
+            const D g0 = gradient(A0), g1 = gradient(A1);
+            if (approx(det) > 0 && approx(h00) > 0) {
+                delta = {value((h01 * g1 - h11 * g0) / det), value((h01 * g0 - h00 * g1) / det)};
+            } else {
+                // Singular where a face lies parallel to the cap or the side (every point of the contact
+                // region is nearest): the minimum along the gradient instead.
+                const D gHg = g0 * g0 * h00 + D(2.0) * g0 * g1 * h01 + g1 * g1 * h11;
+                if (!(approx(gHg) > 0)) return;
+                const D s = value(-(g0 * g0 + g1 * g1) / gHg);
+                delta = {value(s * g0), value(s * g1)};
+            }
+        }
+        // A step that raises g is not taken (Newton's model can overshoot far from the minimum or
+        // across a region's edge) but halved, a few times, then the search ends. g in double cannot
+        // see the last steps' gains: only a clear rise rejects a step.
+        const double g_now = squared_distance(k, X);
+        bool taken = false;
+        for (int halving = 0; halving < 4 && !taken; ++halving) {
+            std::array<D, 3> next = mu;
+            std::array<bool, 3> next_free = free;
+            for (int j = 0; j < nfree; ++j) {
+                const std::size_t i = idx[static_cast<std::size_t>(j)];
+                D v = value(mu[i] + delta[static_cast<std::size_t>(j)]);
+                if (approx(v) != approx(v)) return;  // NaN (an underflowed quotient): keep the last point
+                if (approx(v) >= 1) v = D(1.0), next_free[i] = false;
+                else if (approx(v) <= -1) v = D(-1.0), next_free[i] = false;
+                next[i] = v;
+            }
+            if (squared_distance(k, value(point(box, next))) <= g_now * (1 + 0x1p-40)) {
+                mu = next;
+                free = next_free;
+                taken = true;
+            } else {
+                for (D& d : delta) d = value(d * D(0.5));
+            }
+        }
+        if (!taken) return;
+    }
+}
+
+}  // namespace refined
+
+// The refined bounds as double-double enclosures: lower ≤ dist ≤ upper holds for every value each
+// encloses (a lower bound's enclosure may dip below 0: then it proves nothing).
+struct RefinedBounds {
+    DoubleDouble lower, upper;
+    bool found;  // false: declined (not round to nearest, or no search to start from)
+};
+
+// The refined bounds, from the double search `a` (separation.hpp's approximate()).
+template <class AnyBox>
+RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const Approximate& a) {
+    using namespace refined;
+    if (!a.found || !boxcyl::detail::round_to_nearest()) return {D(0.0), D(0.0), false};
+    const UncertaintyScope scope;  // undecided operations are read through their bounds here
+    const Box box = exact_box(b);
+    Cyl k;
+    k.C = lift(c.center);
+    const DV D_axis = lift(rim::scaled_axis(c.axis));
+    const D len = sqrt(dot(D_axis, D_axis));
+    k.u = {D_axis[0] / len, D_axis[1] / len, D_axis[2] / len};
+    k.r = D(c.radius);
+    k.half_h = D(c.height) * D(0.5);
+
+    // The double search's μ, coordinates within 2^-30 of ±1 fixed there (the point is on that face).
+    std::array<D, 3> mu;
+    std::array<bool, 3> free{};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double m = a.closest.mu[i];
+        if (!(std::abs(m) <= 1)) return {D(0.0), D(0.0), false};  // NaN
+        free[i] = std::abs(m) < 1 - 0x1p-30;
+        mu[i] = D(free[i] ? m : (m < 0 ? -1.0 : 1.0));
+    }
+    refine(box, k, mu, free, 4);
+    const DV X = point(box, mu);
+    RefinedBounds out{D(0.0), point_distance(k, X), true};
+
+    // Y(X): the cylinder point nearest X (values), for the refined direction.
+    const DV Z = value(X - k.C);
+    const D t = value(dot(Z, k.u));
+    const DV P = value(Z - DV{t * k.u[0], t * k.u[1], t * k.u[2]});
+    const D rho = value(sqrt(dot(P, P)));
+    D radial = D(1.0);
+    if (approx(rho) > approx(k.r)) radial = value(k.r / rho);
+    D axial = t;
+    if (approx(t) > approx(k.half_h)) axial = k.half_h;
+    else if (approx(t) < -approx(k.half_h)) axial = -k.half_h;
+    const DV Y = value(k.C + DV{axial * k.u[0], axial * k.u[1], axial * k.u[2]} +
+                       DV{radial * P[0], radial * P[1], radial * P[2]});
+    for (const DV& n : {value(Y - X), lift(a.direction)}) {
+        if (!(approx(dot(n, n)) > 0)) continue;
+        const D g = gap(box, k, n);
+        if (g.lo() > out.lower.lo()) out.lower = g;  // NaN never wins
+    }
+    // A second box point where the bounds still differ in double: the foot of the cylinder's point
+    // extreme along the best direction (where a face lies nearly parallel to a cap, Newton's model
+    // sees no curvature, and that rim point's foot is the nearest box point).
+    if (out.upper.hi() - out.lower.lo() > 0x1p-50 * out.upper.hi()) {
+        const DV X2 = point(box, foot(a.box, algo::gjk::detail::support(algo::gjk::Cylinder{c.center, a.u, c.radius, 0.5 * c.height}, -a.direction)));
+        const D upper2 = point_distance(k, X2);
+        if (upper2.hi() < out.upper.hi()) out.upper = upper2;
+    }
+    return out;
+}
+
+// Whether dist ≤ m, when the refined bounds prove it either way.
+template <class AnyBox>
+std::optional<bool> refined_within(const AnyBox& b, const Cylinder<double>& c, double m, const Approximate& a) {
+    const RefinedBounds r = refined_bounds(b, c, a);
+    if (!r.found) return std::nullopt;
+    const DoubleDouble margin(m);
+    const int up = compare(r.upper, margin);  // the sign of m − upper; 2: undecided
+    if (up == 0 || up == 1) return true;
+    if (compare(margin, r.lower) == 1) return false;  // lower − m > 0
+    return std::nullopt;
+}
+
+}  // namespace boxcyl::filtered::separation
