@@ -179,6 +179,52 @@ TEST(SeparationJudged, RefinedBoundsRandomPairs) {
     EXPECT_GT(tight, separated * 8 / 10);
 }
 
+// Contacts the refinement once left loose (the exact decision then answered, in milliseconds): flat
+// boxes whose plane lies within 1e-11 of parallel to a cap, touching at the foot of a rim point or at a
+// kink of the distance along an edge. The refined bounds bracket the oracle's distance and agree to
+// 2^-60, far closer than one ulp of it.
+TEST(SeparationJudged, RefinedNearlyParallelContacts) {
+    auto canonical = [](Vec3<double> e, Cylinder<double> cyl) {
+        Case c;
+        c.kind = BoxKind::canonical;
+        c.canonical = {e};
+        c.cylinder = cyl;
+        return c;
+    };
+    Case aligned;
+    aligned.kind = BoxKind::aligned;
+    aligned.aligned = {{-0x1.1704daa1ad107p+15, -0x1.418eaeda172f2p+16, 0x1.6f62496595db8p+15},
+                       {-0x1.9b9774e49ca6ep+14, -0x1.4954b56951c05p+15, 0x1.6f62496595db8p+15}};
+    aligned.cylinder = {{-0x1.726a786904b2cp+15, -0x1.ee492dc378acp+15, 0x1.11fb6e63e681ep+15},
+                        {-0x0.0000000000003p-1022, 0x1.19799812dea11p-40, 0x1.c62943ff99cep-5}, 0x1.ef63e01fe2adfp+13,
+                        0x1.910556f5eb1bp+7};
+    const Case cases[] = {
+        canonical({0x1.35fef3ba705d1p+1, 0x1.6554e3e0e4f1fp+1, 0x0p+0},
+                  {{-0x1.2939e8ceac7adp+1, 0x1.16742787057a4p+0, 0x1.0268cc7aeb7d4p+0},
+                   {0x0p+0, -0x1.19799812dea11p-38, 0x1.a9e80f35c098p-5}, 0x1.23b9365b150fap-9, 0x1.ab4c18614473ap-2}),
+        canonical({0x1.23658eeffafd6p+1, 0x1.b0e278e5b99e8p+3, 0x0p+0},
+                  {{-0x1.3069661a09495p+3, 0x1.2587f2003ffa6p+2, -0x1.12e2b57a538fp+2},
+                   {-0x1.637834a1d8b48p-2, -0x1.19799812dea11p-38, -0x1.86686337bacfp-3}, 0x1.39d3dccec7d51p+3,
+                   0x1.795f81c447cbbp+2}),
+        aligned,
+    };
+    for (const Case& c : cases) {
+        const filtered::separation::RefinedBounds r = with_box(c, [](const auto& box, const Cylinder<double>& cyl) {
+            filtered::separation::Approximate a;
+            filtered::separation::bounds(box, cyl, -1, &a);
+            return filtered::separation::refined_bounds(box, cyl, a);
+        });
+        ASSERT_TRUE(r.found);
+        const Rational lo = end_of(r.lower, -1), hi = end_of(r.upper, 1);
+        const Parallelepiped<Rational> box = exact_box(c);
+        const Cylinder<Rational> cyl = to_exact(c.cylinder);
+        EXPECT_LE(clearance_oracle::compare_squared_distance(box, cyl, hi * hi), 0) << describe(c);
+        EXPECT_GE(clearance_oracle::compare_squared_distance(box, cyl, lo * lo), 0) << describe(c);
+        EXPECT_LE(hi - lo, hi / Rational(mpz_class(1) << 60)) << "[" << hex(r.lower.lo()) << ", " << hex(r.upper.hi()) << "] for\n"
+                                                              << describe(c);
+    }
+}
+
 // Cases that once failed: axes whose |D|² underflows (the enclosure of u was NaN, and a clamp turned
 // NaN bounds into a "proved" zero distance).
 TEST(SeparationJudged, Regressions) {

@@ -273,6 +273,7 @@ inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::arra
 
 }  // namespace refined
 
+
 // The refined bounds as double-double enclosures: lower ≤ dist ≤ upper holds for every value each
 // encloses (a lower bound's enclosure may dip below 0: then it proves nothing).
 struct RefinedBounds {
@@ -280,9 +281,88 @@ struct RefinedBounds {
     bool found;  // false: declined (not round to nearest, or no search to start from)
 };
 
-// The refined bounds, from the double search `a` (separation.hpp's approximate()).
+// Contacts at a kink of the distance along an edge: where the edge crosses from a cap's region into
+// the rim's (ρ = r) or from the side's into the rim's (|t| = h/2), the distance has a corner that
+// Newton's method does not find (a face within 10⁻¹¹ of parallel to a cap, touching past its edge).
+// On each edge through the point μ (two coordinates at ±1), those crossings are candidate points for
+// the upper bound, and for the lower one the direction across the edge within the cylinder's normal
+// cone there (spanned by the cap's normal and the radial direction).
+inline void kinks(const refined::Box& box, const refined::Cyl& k, const std::array<DoubleDouble, 3>& mu,
+                  RefinedBounds& out) {
+    using namespace refined;
+    const DV u = value(k.u);
+    const D r = value(k.r), hh = value(k.half_h);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const std::size_t j = (i + 1) % 3, l = (i + 2) % 3;
+        if (std::abs(approx(mu[j])) != 1 || std::abs(approx(mu[l])) != 1) continue;
+        const DV E = box.half[i];
+        if (!(approx(dot(E, E)) > 0)) continue;
+        std::array<D, 3> at = mu;
+        at[i] = D(0.0);
+        const DV Z0 = value(point(box, at) - k.C);
+        const D t0 = value(dot(Z0, u)), te = value(dot(E, u));
+        const DV P0 = value(Z0 - DV{t0 * u[0], t0 * u[1], t0 * u[2]});
+        const DV Pe = value(E - DV{te * u[0], te * u[1], te * u[2]});
+        // ρ(s)² = A s² + B s + C0 along the edge X0 + s·E.
+        const D A = value(dot(Pe, Pe)), B = value(D(2.0) * dot(P0, Pe)), C0 = value(dot(P0, P0));
+        std::array<D, 4> roots;
+        std::size_t n = 0;
+        if (approx(A) > 0) {
+            const D disc = value(B * B - D(4.0) * A * (C0 - r * r));
+            if (approx(disc) >= 0) {
+                const D sq = approx(disc) > 0 ? value(sqrt(disc)) : D(0.0);
+                roots[n++] = value((-B - sq) / (D(2.0) * A));
+                roots[n++] = value((-B + sq) / (D(2.0) * A));
+            }
+        }
+        if (approx(te) != 0) {
+            roots[n++] = value((hh - t0) / te);
+            roots[n++] = value((-hh - t0) / te);
+        }
+        for (std::size_t q = 0; q < n; ++q) {
+            const double sq = approx(roots[q]);
+            if (!(std::abs(sq) <= 1)) continue;
+            // A normalised value whose rounded sum is below 1 in magnitude is below 1 itself; one that
+            // rounds to ±1 is taken as exactly ±1 (the point must lie in the box).
+            at[i] = std::abs(sq) == 1 ? D(sq) : roots[q];
+            const DV X = point(box, at);
+            const D up = point_distance(k, X);
+            if (up.hi() < out.upper.hi()) out.upper = up;
+            // The normal cone at the crossing: the cap's normal sgn(t)·u and the radial direction.
+            const DV Z = value(X - k.C);
+            const D t = value(dot(Z, u));
+            const DV P = value(Z - DV{t * u[0], t * u[1], t * u[2]});
+            if (!(approx(dot(P, P)) > 0)) continue;
+            const D rho = value(sqrt(dot(P, P)));
+            const DV e_rho = value(DV{P[0] / rho, P[1] / rho, P[2] / rho});
+            const DV cap = approx(t) < 0 ? value(-u) : u;
+            const D a = value(dot(e_rho, E)), b = value(-dot(cap, E));
+            const DV n_out = value(DV{a * cap[0] + b * e_rho[0], a * cap[1] + b * e_rho[1], a * cap[2] + b * e_rho[2]});
+            for (const DV& nn : {value(-n_out), n_out}) {  // from the box towards the cylinder: either sign
+                if (!(approx(dot(nn, nn)) > 0)) continue;
+                const D g = gap(box, k, nn);
+                if (g.lo() > out.lower.lo()) out.lower = g;
+            }
+        }
+    }
+}
+
+namespace refined {
+// Whether the bounds decide dist ≤ m: true (within), false (not), nullopt.
+inline std::optional<bool> decides(const RefinedBounds& r, double m) {
+    const DoubleDouble margin(m);
+    const int up = compare(r.upper, margin);  // the sign of m − upper; 2: undecided
+    if (up == 0 || up == 1) return true;
+    if (compare(margin, r.lower) == 1) return false;  // lower − m > 0
+    return std::nullopt;
+}
+}  // namespace refined
+
+// The refined bounds, from the double search `a` (separation.hpp's approximate()). With `decide_at`
+// ≥ 0, the further candidates (a foot, the kinks) are tried only while the bounds do not decide
+// dist ≤ decide_at.
 template <class AnyBox>
-RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const Approximate& a) {
+RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const Approximate& a, double decide_at = -1) {
     using namespace refined;
     if (!a.found || !boxcyl::detail::round_to_nearest()) return {D(0.0), D(0.0), false};
     const UncertaintyScope scope;  // undecided operations are read through their bounds here
@@ -325,6 +405,7 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
         const D g = gap(box, k, n);
         if (g.lo() > out.lower.lo()) out.lower = g;  // NaN never wins
     }
+    if (decide_at >= 0 && refined::decides(out, decide_at)) return out;
     // A second box point where the bounds still differ in double: the foot of the cylinder's point
     // extreme along the best direction (where a face lies nearly parallel to a cap, Newton's model
     // sees no curvature, and that rim point's foot is the nearest box point).
@@ -333,19 +414,17 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
         const D upper2 = point_distance(k, X2);
         if (upper2.hi() < out.upper.hi()) out.upper = upper2;
     }
+    if (decide_at >= 0 && refined::decides(out, decide_at)) return out;
+    if (out.upper.hi() - out.lower.lo() > 0x1p-80 * out.upper.hi()) kinks(box, k, mu, out);
     return out;
 }
 
 // Whether dist ≤ m, when the refined bounds prove it either way.
 template <class AnyBox>
 std::optional<bool> refined_within(const AnyBox& b, const Cylinder<double>& c, double m, const Approximate& a) {
-    const RefinedBounds r = refined_bounds(b, c, a);
+    const RefinedBounds r = refined_bounds(b, c, a, m);
     if (!r.found) return std::nullopt;
-    const DoubleDouble margin(m);
-    const int up = compare(r.upper, margin);  // the sign of m − upper; 2: undecided
-    if (up == 0 || up == 1) return true;
-    if (compare(margin, r.lower) == 1) return false;  // lower − m > 0
-    return std::nullopt;
+    return refined::decides(r, m);
 }
 
 }  // namespace boxcyl::filtered::separation
