@@ -134,6 +134,7 @@ void check_set(const Cylinder<double>& cyl, const std::vector<AlignedBox<double>
     compare(cyl, std::span<const OrientedBox<double>>(oriented), m, oriented, wo, threads, where + " oriented", co);
     if (g_kernel != batch::Kernel::compiled) return;  // parallelepipeds have the scalar kernel only
     std::vector<Parallelepiped<double>> p;
+    p.reserve(oriented.size() + aligned.size());
     for (const OrientedBox<double>& o : oriented) p.push_back(as_parallelepiped(o));
     for (const AlignedBox<double>& a : aligned) p.push_back(as_parallelepiped(a));
     compare(cyl, std::span<const Parallelepiped<double>>(p), m, p, scalar(cyl, p, m), threads,
@@ -317,8 +318,10 @@ TEST(BatchClearanceRefusals, BadMarginThrows) {
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
     const std::vector<std::pair<double, std::string>> bad{
         {-1.0, "margin: is negative"}, {nan, "margin: is NaN"}, {inf, "margin: is +Inf"}, {-inf, "margin: is -Inf"}};
-    for (const auto& [m, message] : bad) {
-        auto expect = [&, m = m, message = message](auto&& call) {
+    for (const auto& entry : bad) {
+        const double m = entry.first;  // a plain variable: lambdas below capture it
+        const std::string& message = entry.second;
+        auto expect = [&](auto&& call) {
             try {
                 call();
                 ADD_FAILURE() << "margin " << m << " was accepted";

@@ -588,6 +588,7 @@ void ortho_views(Svg& svg, const Explanation& e, const std::array<Rect, 3>& rect
             // each outline vertex a circle of radius m, and their hull (straight sides at r + m and
             // h/2 + m, corners rounded by m).
             std::vector<Point2> outline;
+            outline.reserve(both.size());
             for (const auto& p : both) outline.push_back({p[v.a], p[v.b]});
             std::vector<Point2> grown;
             for (const Point2& q : algo::hull2d::monotone_chain(std::move(outline)))

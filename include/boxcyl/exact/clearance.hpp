@@ -166,7 +166,7 @@ inline bool within(const Parallelepiped<Rational>& box, const Cylinder<Rational>
         if (sgn(box.extents[i]) == 0 || box.axes[i] == Vec3<Rational>{0, 0, 0}) continue;  // no edge interior
         const Vec3<Rational> E = Rational(2) * half[i];
         for (int bits = 0; bits < 8; ++bits)
-            if (!(bits >> i & 1) && !known.edge_far[static_cast<std::size_t>(8 * i + bits)] &&
+            if (!(bits >> i & 1) && !known.edge_far[8 * static_cast<std::size_t>(i) + static_cast<std::size_t>(bits)] &&
                 detail::edge_meets_rim_tori(rim, vertex(bits), E))
                 return true;
     }
@@ -174,7 +174,7 @@ inline bool within(const Parallelepiped<Rational>& box, const Cylinder<Rational>
         const int j = (i + 1) % 3;
         const int k = (i + 2) % 3;
         for (int sigma : {1, -1}) {
-            if (known.facet_far[static_cast<std::size_t>(2 * i + (sigma > 0))]) continue;
+            if (known.facet_far[2 * static_cast<std::size_t>(i) + (sigma > 0 ? 1U : 0U)]) continue;
             const Vec3<Rational> XF = sigma > 0 ? Vec3<Rational>(box.center + half[i]) : Vec3<Rational>(box.center - half[i]);
             if (detail::facet_near_rim(rim, XF, box.axes[j], box.extents[j], box.axes[k], box.extents[k])) return true;
         }

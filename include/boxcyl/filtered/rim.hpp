@@ -247,7 +247,7 @@ std::optional<bool> decide(const AnyBox& b, const Cylinder<double>& c, double m,
                 if (e == Edge::near) return true;
                 edge_far_both = edge_far_both && e == Edge::far;
             }
-            p.edge_far[static_cast<std::size_t>(8 * i + bits)] = edge_far_both;
+            p.edge_far[8 * static_cast<std::size_t>(i) + static_cast<std::size_t>(bits)] = edge_far_both;
             all_far = all_far && edge_far_both;
         }
     }
@@ -256,7 +256,7 @@ std::optional<bool> decide(const AnyBox& b, const Cylinder<double>& c, double m,
         for (int sigma : {1, -1}) {
             const V XF = sigma > 0 ? V(box.center + box.half[i]) : V(box.center - box.half[i]);
             const bool facet = facet_far(f, XF, box.half[j], box.half[k], 1) && facet_far(f, XF, box.half[j], box.half[k], -1);
-            p.facet_far[static_cast<std::size_t>(2 * i + (sigma > 0))] = facet;
+            p.facet_far[2 * static_cast<std::size_t>(i) + (sigma > 0 ? 1U : 0U)] = facet;
             all_far = all_far && facet;
         }
     }
