@@ -23,6 +23,7 @@
 
 #include "boxcyl/clearance.hpp"
 #include "clearance/clearance_oracle.hpp"
+#include "clearance/exact_case.hpp"
 #include "support/cases.hpp"
 #include "support/fp.hpp"  // RoundingMode
 
@@ -30,13 +31,6 @@ namespace boxcyl {
 namespace {
 
 using namespace boxcyl::testing;
-
-Parallelepiped<Rational> exact_box(const Case& c) {
-    const OrientedBox<Rational> o = c.kind == BoxKind::aligned    ? as_oriented_box(to_exact(c.aligned))
-                                    : c.kind == BoxKind::oriented ? to_exact(c.oriented)
-                                                                  : as_oriented_box(to_exact(c.canonical));
-    return {o.center, o.axes, o.extents};
-}
 
 bool judged(const Case& c, double m) { return clearance_oracle::within(exact_box(c), to_exact(c.cylinder), to_rational(m)); }
 bool answered(const Case& c, double m) {

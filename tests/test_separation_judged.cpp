@@ -14,6 +14,7 @@
 #include "boxcyl/filtered/separation.hpp"
 #include "boxcyl/filtered/separation_refined.hpp"
 #include "clearance/clearance_oracle.hpp"
+#include "clearance/exact_case.hpp"
 #include "support/cases.hpp"
 #include "support/fp.hpp"  // RoundingMode
 
@@ -21,13 +22,6 @@ namespace boxcyl {
 namespace {
 
 using namespace boxcyl::testing;
-
-Parallelepiped<Rational> exact_box(const Case& c) {
-    const OrientedBox<Rational> o = c.kind == BoxKind::aligned    ? as_oriented_box(to_exact(c.aligned))
-                                    : c.kind == BoxKind::oriented ? to_exact(c.oriented)
-                                                                  : as_oriented_box(to_exact(c.canonical));
-    return {o.center, o.axes, o.extents};
-}
 
 filtered::separation::Bounds bounds_of(const Case& c, double decide_at) {
     return with_box(c, [&](const auto& box, const Cylinder<double>& cyl) { return filtered::separation::bounds(box, cyl, decide_at); });

@@ -11,6 +11,7 @@
 
 #if defined(BOXCYL_HEADER_ONLY) || defined(BOXCYL_HAS_EXACT)
 #include "boxcyl/clearance.hpp"
+#include "boxcyl/distance.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"

@@ -23,6 +23,7 @@
 #include <vector>   // cells()
 
 #include "boxcyl/batch/types.hpp"
+#include "boxcyl/distance_types.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
@@ -73,6 +74,25 @@ bool within_distance_unchecked(const AlignedBox<float>& box, const Cylinder<floa
 bool within_distance_unchecked(const OrientedBox<float>& box, const Cylinder<float>& cyl, float margin);
 bool within_distance_unchecked(const CanonicalBox<float>& box, const Cylinder<float>& cyl, float margin);
 bool within_distance_unchecked(const Parallelepiped<float>& box, const Cylinder<float>& cyl, float margin);
+
+// ---- Distance: how far apart, proved (boxcyl/distance.hpp). ----
+// An enclosure [lower, upper] of the exact distance, at most 4 doubles wide, and a nearest pair.
+Distance distance(const AlignedBox<double>& box, const Cylinder<double>& cyl);
+Distance distance(const OrientedBox<double>& box, const Cylinder<double>& cyl);
+Distance distance(const CanonicalBox<double>& box, const Cylinder<double>& cyl);
+Distance distance(const Parallelepiped<double>& box, const Cylinder<double>& cyl);
+Distance distance(const AlignedBox<float>& box, const Cylinder<float>& cyl);
+Distance distance(const OrientedBox<float>& box, const Cylinder<float>& cyl);
+Distance distance(const CanonicalBox<float>& box, const Cylinder<float>& cyl);
+Distance distance(const Parallelepiped<float>& box, const Cylinder<float>& cyl);
+Distance distance_unchecked(const AlignedBox<double>& box, const Cylinder<double>& cyl);
+Distance distance_unchecked(const OrientedBox<double>& box, const Cylinder<double>& cyl);
+Distance distance_unchecked(const CanonicalBox<double>& box, const Cylinder<double>& cyl);
+Distance distance_unchecked(const Parallelepiped<double>& box, const Cylinder<double>& cyl);
+Distance distance_unchecked(const AlignedBox<float>& box, const Cylinder<float>& cyl);
+Distance distance_unchecked(const OrientedBox<float>& box, const Cylinder<float>& cyl);
+Distance distance_unchecked(const CanonicalBox<float>& box, const Cylinder<float>& cyl);
+Distance distance_unchecked(const Parallelepiped<float>& box, const Cylinder<float>& cyl);
 
 // ---- The grid query (boxcyl/grid.hpp). ----
 // for_each_cell's compiled part: f(context, i, j, k) for every cell.

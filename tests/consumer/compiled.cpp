@@ -49,6 +49,10 @@ void scalar(const char* type) {
     const boxcyl::QueryOptions plain{boxcyl::Algorithm::inequalities, boxcyl::Arithmetic::float64};
     const boxcyl::Cylinder<T> far{{4, 0, 0}, {0, 0, 5}, 2, 1};
     check(!boxcyl::intersects(aligned, far, plain), "plain double query");
+    // The face x = 1 and the side at x = 4 − 2 = 2: distance 1 exactly; touching: [0, 0].
+    const boxcyl::Distance d = boxcyl::distance(aligned, far);
+    check(d.lower <= 1 && d.upper >= 1 && d.upper - d.lower <= 4 * std::nextafter(1.0, 2.0) - 4, "distance encloses 1");
+    check(d.on_box[0] == 1 && boxcyl::distance(oriented, touching).upper == 0, "distance witnesses and touching");
 }
 
 // Three aligned boxes: touching, apart by one ulp, overlapping; as arrays, as rows and as oriented boxes.

@@ -25,7 +25,7 @@
 #include <algorithm>  // std::max
 #include <array>      // the box's half axes
 #include <utility>    // std::swap
-#include <cmath>      // std::abs
+#include <cmath>      // std::abs, std::ldexp, std::ilogb
 #include <optional>   // undecided
 
 #include "boxcyl/filtered/rim.hpp"         // scaled_axis
@@ -126,13 +126,16 @@ inline DV point(const Box& box, const std::array<D, 3>& mu) {
     return X;
 }
 
-// g(X) = dist(X, cylinder)², approximately (the search's measure of progress).
+// g(X) = dist(X, cylinder)², approximately (the search's measure of progress), from double-double
+// values: ρ − r cancels where the distance is far below the coordinates (near touching), and in double
+// it would be noise there.
 inline double squared_distance(const Cyl& k, const DV& X) {
-    const DV Z = X - k.C;
-    const D t = dot(Z, k.u);
-    const DV Zxu = cross(Z, k.u);
-    const double rho = std::sqrt(std::max(0.0, approx(dot(Zxu, Zxu))));
-    const double dr = std::max(0.0, rho - approx(k.r)), da = std::max(0.0, std::abs(approx(t)) - approx(k.half_h));
+    const DV Z = value(X - k.C);
+    const D t = value(dot(Z, k.u));
+    const DV Zxu = value(cross(Z, k.u));
+    const D pp = value(dot(Zxu, Zxu));
+    const D rho = approx(pp) > 0 ? value(sqrt(pp)) : D(0.0);
+    const double dr = std::max(0.0, approx(rho - k.r)), da = std::max(0.0, approx(enclosure_abs(t) - k.half_h));
     return dr * dr + da * da;
 }
 
@@ -221,50 +224,87 @@ inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::arra
         for (std::size_t i = 0; i < 3; ++i)
             if (free[i] && nfree < 2) idx[static_cast<std::size_t>(nfree++)] = i;
         if (nfree == 0) return;
+        // The candidate steps, tried in turn until one lowers g:
+        //  1. Newton's step for d = √g (where g > 0): d is smooth there and its minimum simple, while
+        //     g = d² has a nearly double one where the distance is far below the shapes (a near-touching
+        //     edge along the side: Newton on g would only halve d per step). ∇²d ∝ ∇²g − ∇g∇gᵀ/(2g), so
+        //     the step is −(∇²g − ∇g∇gᵀ/(2g))⁻¹∇g.
+        //  2. Newton's step for g (d is linear in the cap's region and along the axis: its form is
+        //     singular there).
+        //  3. The minimum of g along its gradient: where a face lies parallel, or nearly, to the cap or
+        //     the side (every point of the contact region is nearest, and Newton's model has its minimum
+        //     far away or points out of the box).
+        const D g_value = value(over_r * over_r + over_h * over_h);
+        auto form = [&](const DV& a, const DV& b, bool of_d) {
+            const D h = hessian(a, b);
+            return of_d ? value(h - gradient(a) * gradient(b) / (D(2.0) * g_value)) : value(h);
+        };
         const DV& A0 = box.half[idx[0]];
-        std::array<D, 2> delta;
-        if (nfree == 1) {
-            const D h = hessian(A0, A0);
-            if (!(approx(h) > 0)) return;
-            delta = {value(-gradient(A0) / h), D(0.0)};
-        } else {
-            const DV& A1 = box.half[idx[1]];
-            const D h00 = hessian(A0, A0), h01 = hessian(A0, A1), h11 = hessian(A1, A1);
-            const D det = h00 * h11 - h01 * h01;
-            const D g0 = gradient(A0), g1 = gradient(A1);
-            if (approx(det) > 0 && approx(h00) > 0) {
-                delta = {value((h01 * g1 - h11 * g0) / det), value((h01 * g0 - h00 * g1) / det)};
-            } else {
-                // Singular where a face lies parallel to the cap or the side (every point of the contact
-                // region is nearest): the minimum along the gradient instead.
-                const D gHg = g0 * g0 * h00 + D(2.0) * g0 * g1 * h01 + g1 * g1 * h11;
-                if (!(approx(gHg) > 0)) return;
-                const D s = value(-(g0 * g0 + g1 * g1) / gHg);
-                delta = {value(s * g0), value(s * g1)};
+        const DV& A1 = box.half[idx[nfree == 2 ? 1 : 0]];
+        const D g0 = gradient(A0), g1 = nfree == 2 ? gradient(A1) : D(0.0);
+        auto newton = [&](bool of_d, std::array<D, 2>& delta) {
+            if (of_d && !(approx(g_value) > 0)) return false;
+            const D h00 = form(A0, A0, of_d);
+            if (nfree == 1) {
+                if (!(approx(h00) > 0)) return false;
+                delta = {value(-g0 / h00), D(0.0)};
+                return approx(delta[0]) == approx(delta[0]);
             }
-        }
-        // A step that raises g is not taken (Newton's model can overshoot far from the minimum or
-        // across a region's edge) but halved, a few times, then the search ends. g in double cannot
-        // see the last steps' gains: only a clear rise rejects a step.
+            const D h01 = form(A0, A1, of_d), h11 = form(A1, A1, of_d);
+            const D det = h00 * h11 - h01 * h01;
+            if (!(approx(det) > 0 && approx(h00) > 0)) return false;
+            delta = {value((h01 * g1 - h11 * g0) / det), value((h01 * g0 - h00 * g1) / det)};
+            return approx(delta[0]) == approx(delta[0]) && approx(delta[1]) == approx(delta[1]);  // NaN: a quotient undecided
+        };
+        auto gradient_line = [&](std::array<D, 2>& delta) {
+            const D h00 = hessian(A0, A0), h01 = nfree == 2 ? hessian(A0, A1) : D(0.0), h11 = nfree == 2 ? hessian(A1, A1) : D(0.0);
+            const D gHg = g0 * g0 * h00 + D(2.0) * g0 * g1 * h01 + g1 * g1 * h11;
+            if (!(approx(gHg) > 0)) return false;
+            const D s = value(-(g0 * g0 + g1 * g1) / gHg);
+            delta = {value(s * g0), value(s * g1)};
+            return approx(delta[0]) == approx(delta[0]) && approx(delta[1]) == approx(delta[1]);
+        };
         const double g_now = squared_distance(k, X);
         bool taken = false;
-        for (int halving = 0; halving < 4 && !taken; ++halving) {
-            std::array<D, 3> next = mu;
-            std::array<bool, 3> next_free = free;
+        for (int candidate = 0; candidate < 3 && !taken; ++candidate) {
+            std::array<D, 2> delta{D(0.0), D(0.0)};
+            if (!(candidate < 2 ? newton(candidate == 0, delta) : gradient_line(delta))) continue;
+            // A step leaving the box is cut back to the first bound it crosses (clamping each coordinate
+            // alone would leave the step's direction, and no halving of a far step would come back).
+            double alpha = 1;
             for (int j = 0; j < nfree; ++j) {
-                const std::size_t i = idx[static_cast<std::size_t>(j)];
-                D v = value(mu[i] + delta[static_cast<std::size_t>(j)]);
-                if (approx(v) != approx(v)) return;  // NaN (an underflowed quotient): keep the last point
-                if (approx(v) >= 1) v = D(1.0), next_free[i] = false;
-                else if (approx(v) <= -1) v = D(-1.0), next_free[i] = false;
-                next[i] = v;
+                const double m = approx(mu[idx[static_cast<std::size_t>(j)]]), d = approx(delta[static_cast<std::size_t>(j)]);
+                if (m + d > 1) alpha = std::min(alpha, (1 - m) / d);
+                else if (m + d < -1) alpha = std::min(alpha, (-1 - m) / d);
             }
-            if (squared_distance(k, value(point(box, next))) <= g_now * (1 + 0x1p-40)) {
-                mu = next;
-                free = next_free;
-                taken = true;
-            } else {
-                for (D& d : delta) d = value(d * D(0.5));
+            if (alpha < 1)
+                for (D& d : delta) d = value(d * D(alpha));
+            // Converged: a step below double-double's resolution of μ changes nothing.
+            if (std::abs(approx(delta[0])) <= 0x1p-104 && std::abs(approx(delta[1])) <= 0x1p-104) {
+                if (candidate == 0 || alpha == 1) return;
+                continue;  // blocked at a bound: the next candidate may move along it
+            }
+            // A step that raises g is not taken (the model can overshoot far from the minimum or across
+            // a region's edge) but halved, a few times. g's rounding cannot see the last steps' gains:
+            // only a clear rise rejects a step.
+            for (int halving = 0; halving < 4 && !taken; ++halving) {
+                std::array<D, 3> next = mu;
+                std::array<bool, 3> next_free = free;
+                for (int j = 0; j < nfree; ++j) {
+                    const std::size_t i = idx[static_cast<std::size_t>(j)];
+                    D v = value(mu[i] + delta[static_cast<std::size_t>(j)]);
+                    if (approx(v) != approx(v)) return;  // NaN (an underflowed quotient): keep the last point
+                    if (approx(v) >= 1) v = D(1.0), next_free[i] = false;
+                    else if (approx(v) <= -1) v = D(-1.0), next_free[i] = false;
+                    next[i] = v;
+                }
+                if (squared_distance(k, value(point(box, next))) <= g_now * (1 + 0x1p-40)) {
+                    mu = next;
+                    free = next_free;
+                    taken = true;
+                } else {
+                    for (D& d : delta) d = value(d * D(0.5));
+                }
             }
         }
         if (!taken) return;
@@ -279,7 +319,46 @@ inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::arra
 struct RefinedBounds {
     DoubleDouble lower, upper;
     bool found;  // false: declined (not round to nearest, or no search to start from)
+    refined::DV witness{};  // the box point whose distance is `upper` (its value; exactly in the box)
 };
+
+namespace refined {
+// x·2^p, exactly unless it leaves the range (values only).
+inline D scaled(const D& x, int p) { return {std::ldexp(x.high(), p), std::ldexp(x.low(), p), 0.0}; }
+
+// The cylinder point nearest X (values: no proof). X − C is scaled by a power of two to magnitude ~1
+// first, so that its squares neither overflow nor underflow, whatever the coordinates' range.
+inline DV nearest_on_cylinder(const Cyl& k, const DV& X) {
+    const DV Z = value(X - k.C);
+    const double big = std::max({std::abs(approx(Z[0])), std::abs(approx(Z[1])), std::abs(approx(Z[2]))});
+    if (!(big > 0) || !std::isfinite(big)) return value(X);  // X is the centre (or not finite)
+    const int e = -std::ilogb(big);
+    const DV Zs{scaled(Z[0], e), scaled(Z[1], e), scaled(Z[2], e)};
+    const D t = value(dot(Zs, k.u));
+    const DV P = value(Zs - DV{t * k.u[0], t * k.u[1], t * k.u[2]});
+    const D pp = value(dot(P, P));
+    const D rho = approx(pp) > 0 ? value(sqrt(pp)) : D(0.0);
+    const D r = scaled(k.r, e), hh = scaled(k.half_h, e);  // +∞ when far beyond Z: no clamp then
+    D radial = D(1.0);
+    if (approx(rho) > approx(r)) radial = value(r / rho);
+    D axial = t;
+    if (approx(t) > approx(hh)) axial = hh;
+    else if (approx(t) < -approx(hh)) axial = -hh;
+    const DV Ys = value(DV{axial * k.u[0], axial * k.u[1], axial * k.u[2]} + DV{radial * P[0], radial * P[1], radial * P[2]});
+    return value(k.C + DV{scaled(Ys[0], -e), scaled(Ys[1], -e), scaled(Ys[2], -e)});
+}
+// The cylinder as double-double values: u = D/|D| to within the arithmetic's error.
+inline Cyl cylinder(const Cylinder<double>& c) {
+    Cyl k;
+    k.C = lift(c.center);
+    const DV D_axis = lift(rim::scaled_axis(c.axis));
+    const D len = sqrt(dot(D_axis, D_axis));
+    k.u = {D_axis[0] / len, D_axis[1] / len, D_axis[2] / len};
+    k.r = D(c.radius);
+    k.half_h = D(c.height) * D(0.5);
+    return k;
+}
+}  // namespace refined
 
 // Contacts at a kink of the distance along an edge: where the edge crosses from a cap's region into
 // the rim's (ρ = r) or from the side's into the rim's (|t| = h/2), the distance has a corner that
@@ -327,7 +406,7 @@ inline void kinks(const refined::Box& box, const refined::Cyl& k, const std::arr
             at[i] = std::abs(sq) == 1 ? D(sq) : roots[q];
             const DV X = point(box, at);
             const D up = point_distance(k, X);
-            if (up.hi() < out.upper.hi()) out.upper = up;
+            if (up.hi() < out.upper.hi()) out.upper = up, out.witness = value(X);
             // The normal cone at the crossing: the cap's normal sgn(t)·u and the radial direction.
             const DV Z = value(X - k.C);
             const D t = value(dot(Z, u));
@@ -360,20 +439,15 @@ inline std::optional<bool> decides(const RefinedBounds& r, double m) {
 
 // The refined bounds, from the double search `a` (separation.hpp's approximate()). With `decide_at`
 // ≥ 0, the further candidates (a foot, the kinks) are tried only while the bounds do not decide
-// dist ≤ decide_at.
+// dist ≤ decide_at. `newton_steps` bounds the refinement (it ends sooner once converged).
 template <class AnyBox>
-RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const Approximate& a, double decide_at = -1) {
+RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const Approximate& a, double decide_at = -1,
+                             int newton_steps = 4) {
     using namespace refined;
     if (!a.found || !boxcyl::detail::round_to_nearest()) return {D(0.0), D(0.0), false};
     const UncertaintyScope scope;  // undecided operations are read through their bounds here
     const Box box = exact_box(b);
-    Cyl k;
-    k.C = lift(c.center);
-    const DV D_axis = lift(rim::scaled_axis(c.axis));
-    const D len = sqrt(dot(D_axis, D_axis));
-    k.u = {D_axis[0] / len, D_axis[1] / len, D_axis[2] / len};
-    k.r = D(c.radius);
-    k.half_h = D(c.height) * D(0.5);
+    const Cyl k = cylinder(c);
 
     // The double search's μ, coordinates within 2^-30 of ±1 fixed there (the point is on that face).
     std::array<D, 3> mu;
@@ -384,22 +458,12 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
         free[i] = std::abs(m) < 1 - 0x1p-30;
         mu[i] = D(free[i] ? m : (m < 0 ? -1.0 : 1.0));
     }
-    refine(box, k, mu, free, 4);
+    refine(box, k, mu, free, newton_steps);
     const DV X = point(box, mu);
-    RefinedBounds out{D(0.0), point_distance(k, X), true};
+    RefinedBounds out{D(0.0), point_distance(k, X), true, value(X)};
 
-    // Y(X): the cylinder point nearest X (values), for the refined direction.
-    const DV Z = value(X - k.C);
-    const D t = value(dot(Z, k.u));
-    const DV P = value(Z - DV{t * k.u[0], t * k.u[1], t * k.u[2]});
-    const D rho = value(sqrt(dot(P, P)));
-    D radial = D(1.0);
-    if (approx(rho) > approx(k.r)) radial = value(k.r / rho);
-    D axial = t;
-    if (approx(t) > approx(k.half_h)) axial = k.half_h;
-    else if (approx(t) < -approx(k.half_h)) axial = -k.half_h;
-    const DV Y = value(k.C + DV{axial * k.u[0], axial * k.u[1], axial * k.u[2]} +
-                       DV{radial * P[0], radial * P[1], radial * P[2]});
+    // Y(X): the cylinder point nearest X, for the refined direction.
+    const DV Y = nearest_on_cylinder(k, X);
     for (const DV& n : {value(Y - X), lift(a.direction)}) {
         if (!(approx(dot(n, n)) > 0)) continue;
         const D g = gap(box, k, n);
@@ -412,7 +476,7 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
     if (out.upper.hi() - out.lower.lo() > 0x1p-50 * out.upper.hi()) {
         const DV X2 = point(box, foot(a.box, algo::gjk::detail::support(algo::gjk::Cylinder{c.center, a.u, c.radius, 0.5 * c.height}, -a.direction)));
         const D upper2 = point_distance(k, X2);
-        if (upper2.hi() < out.upper.hi()) out.upper = upper2;
+        if (upper2.hi() < out.upper.hi()) out.upper = upper2, out.witness = value(X2);
     }
     if (decide_at >= 0 && refined::decides(out, decide_at)) return out;
     if (out.upper.hi() - out.lower.lo() > 0x1p-80 * out.upper.hi()) kinks(box, k, mu, out);

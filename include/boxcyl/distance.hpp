@@ -1,0 +1,225 @@
+// The distance question: boxcyl::distance(box, cylinder) — how far apart are they, and where? The
+// answer is an enclosure [lower, upper] PROVED to hold the exact Euclidean distance between the closed
+// solids (each double the rational it denotes, the axis D/|D| exact), in every rounding mode, and
+// narrow: upper − lower ≤ 4 ulp(upper), subnormal results included (in practice one or two ulps). It is
+// [0, 0] exactly when they intersect. Every box kind; float inputs are widened exactly. With it come
+// two witness points, one on each solid, whose distance lies in the enclosure up to their rounding.
+// Invalid input throws std::invalid_argument naming the field (validate()); distance_unchecked()
+// skips that check. Needs the exact backend (boxcyl::exact).
+//
+// How (docs/distance.md has the argument):
+//   1. The exact intersection query: a hit is [0, 0].
+//   2. Certified bounds from an approximate closest pair (filtered/separation.hpp), refined by Newton's
+//      method and evaluated in double-double with proved error bounds
+//      (filtered/separation_refined.hpp): the upper bound is a box point's distance to the cylinder,
+//      the lower one the gap between two supporting planes. Each double-double enclosure is then
+//      rounded outward to the nearest doubles it proves.
+//   3. Whatever is still wider than 4 ulps (directed rounding modes, where the double-double stage
+//      declines; distances the refinement does not pin down) is bisected over the doubles with the
+//      exact clearance query: within_distance(box, cyl, m) true makes m an upper bound, false a lower
+//      one. Each bisection step halves the count of doubles in between, so at most 64 steps remain.
+#pragma once
+
+#include <algorithm>    // std::max, std::clamp
+#include <array>        // half axes
+#include <bit>          // std::bit_cast: doubles ≥ 0 ordered as integers
+#include <cmath>        // std::isfinite, std::ldexp, std::ilogb
+#include <cstdint>      // std::uint64_t
+#include <limits>       // infinity
+#include <stdexcept>    // std::invalid_argument
+#include <type_traits>  // std::is_same_v
+
+#include "boxcyl/clearance.hpp"
+#include "boxcyl/distance_types.hpp"
+#include "boxcyl/geometry/box.hpp"
+#include "boxcyl/geometry/cylinder.hpp"
+#include "boxcyl/geometry/parallelepiped.hpp"
+#include "boxcyl/geometry/validate.hpp"
+#include "boxcyl/geometry/vec3.hpp"
+#include "boxcyl/query.hpp"
+
+namespace boxcyl {
+
+#if defined(BOXCYL_HAS_EXACT)
+namespace detail::distance {
+
+// Doubles ≥ 0 are ordered as their bit patterns: the count of doubles between two, and the one
+// halfway (by count) between them.
+inline std::uint64_t steps(double lo, double hi) {
+    return std::bit_cast<std::uint64_t>(hi) - std::bit_cast<std::uint64_t>(lo);
+}
+inline double halfway(double lo, double hi) {
+    const std::uint64_t a = std::bit_cast<std::uint64_t>(lo);
+    return std::bit_cast<double>(a + (std::bit_cast<std::uint64_t>(hi) - a) / 2);
+}
+// The goal: at most 4 doubles apart, which bounds the width by 4 ulp(upper) (the gaps below upper are
+// no wider than the one above it).
+inline constexpr std::uint64_t max_steps = 4;
+
+inline Vec3<double> round(const filtered::separation::refined::DV& v) {
+    using filtered::separation::refined::approx;
+    return {approx(v[0]), approx(v[1]), approx(v[2])};
+}
+
+// An aligned box's witness clamped into it (exact: each coordinate between the bounds it already
+// nearly meets); other boxes' witnesses keep their rounding.
+inline Vec3<double> into(const AlignedBox<double>& b, Vec3<double> p) {
+    for (int i = 0; i < 3; ++i) p[i] = p[i] < b.min[i] ? b.min[i] : p[i] > b.max[i] ? b.max[i] : p[i];
+    return p;
+}
+template <class Box>
+Vec3<double> into(const Box&, const Vec3<double>& p) {
+    return p;
+}
+
+// The doubles the double-double enclosures prove: the least double certainly ≥ the upper bound's
+// value, the greatest certainly ≤ the lower bound's (compare() decides against a double to ~2⁻¹⁰⁰).
+inline double tight_upper(const DoubleDouble& upper) {
+    double up = upper.hi();
+    for (int i = 0; i < 4 && up > 0; ++i) {
+        const double below = boxcyl::detail::next_down(up);
+        const int s = compare(upper, DoubleDouble(below));  // the sign of below − upper; 2: undecided
+        if (s != 0 && s != 1) break;
+        up = below;
+    }
+    return up;
+}
+inline double tight_lower(const DoubleDouble& lower) {
+    double lo = std::max(0.0, lower.lo());  // NaN → 0
+    for (int i = 0; i < 4 && lo < std::numeric_limits<double>::max(); ++i) {
+        const double above = boxcyl::detail::next_up(lo);
+        const int s = compare(DoubleDouble(above), lower);  // the sign of lower − above
+        if (s != 0 && s != 1) break;
+        lo = above;
+    }
+    return lo;
+}
+
+// Newton steps the distance allows the refinement (it stops sooner once converged): more than the
+// clearance query's, which needs only to decide against one margin, so that the witnesses converge too.
+inline constexpr int newton_steps = 16;
+
+// The shapes scaled by 2^e: exact, or `exact` turns false (an input would lose bits or overflow).
+struct Scale {
+    int e;
+    bool exact = true;
+    double operator()(double x) {
+        const double y = std::ldexp(x, e);
+        if (std::ldexp(y, -e) != x) exact = false;
+        return y;
+    }
+    Vec3<double> operator()(const Vec3<double>& v) { return {(*this)(v[0]), (*this)(v[1]), (*this)(v[2])}; }
+    AlignedBox<double> operator()(const AlignedBox<double>& b) { return {(*this)(b.min), (*this)(b.max)}; }
+    OrientedBox<double> operator()(const OrientedBox<double>& b) { return {(*this)(b.center), b.axes, (*this)(b.extents)}; }
+    Parallelepiped<double> operator()(const Parallelepiped<double>& b) { return {(*this)(b.center), b.axes, (*this)(b.extents)}; }
+    CanonicalBox<double> operator()(const CanonicalBox<double>& b) { return {(*this)(b.extents)}; }
+    Cylinder<double> operator()(const Cylinder<double>& c) { return {(*this)(c.center), c.axis, (*this)(c.radius), (*this)(c.height)}; }
+};
+
+// The binary exponent of the largest length the shapes hold (coordinates, half axes, radius, height).
+struct Magnitude {
+    int e = std::numeric_limits<int>::min();
+    void operator()(double x) {
+        if (x != 0 && std::isfinite(x)) e = std::max(e, std::ilogb(x));
+    }
+    void operator()(const Vec3<double>& v) { (*this)(v[0]), (*this)(v[1]), (*this)(v[2]); }
+    void half_axes(const std::array<Vec3<double>, 3>& axes, const Vec3<double>& extents) {
+        for (std::size_t i = 0; i < 3; ++i) {
+            const double a = std::max({std::abs(axes[i][0]), std::abs(axes[i][1]), std::abs(axes[i][2])});
+            if (a != 0 && extents[i] != 0 && std::isfinite(a) && std::isfinite(extents[i]))
+                e = std::max(e, std::ilogb(a) + std::ilogb(extents[i]) + 1);
+        }
+    }
+    void operator()(const AlignedBox<double>& b) { (*this)(b.min), (*this)(b.max); }
+    void operator()(const OrientedBox<double>& b) { (*this)(b.center), half_axes(b.axes, b.extents); }
+    void operator()(const Parallelepiped<double>& b) { (*this)(b.center), half_axes(b.axes, b.extents); }
+    void operator()(const CanonicalBox<double>& b) { (*this)(b.extents); }
+    void operator()(const Cylinder<double>& c) { (*this)(c.center), (*this)(c.radius), (*this)(c.height); }
+};
+
+// The double-double stage's bounds and witnesses (filtered/separation_refined.hpp). Its squares and
+// products must neither overflow nor underflow: the caller hands it shapes scaled to lengths near 1.
+template <class Box>
+Distance refined(const Box& box, const Cylinder<double>& cyl, bool touching) {
+    namespace sep = filtered::separation;
+    Distance out;
+    sep::Approximate search;
+    const sep::Bounds db = sep::bounds(box, cyl, -1, &search);
+    out.lower = touching ? 0.0 : std::max(0.0, db.lower);
+    out.upper = touching ? 0.0 : (db.upper == db.upper ? db.upper : std::numeric_limits<double>::infinity());
+    const sep::RefinedBounds r = sep::refined_bounds(box, cyl, search, -1, newton_steps);
+    if (r.found && !touching) {
+        out.lower = std::max(out.lower, tight_lower(r.lower));
+        out.upper = std::min(out.upper, tight_upper(r.upper));
+    }
+    // The witnesses: the refined box point (the double search's where the refinement declines) and the
+    // cylinder point nearest it, as values (they need no proof; in a directed rounding mode they are
+    // a few ulps less accurate).
+    if (r.found || search.found) {
+        const sep::refined::DV X = r.found ? r.witness : sep::refined::lift(search.p);
+        out.on_box = round(X);
+        out.on_cylinder = round(sep::refined::nearest_on_cylinder(sep::refined::cylinder(cyl), X));
+    }
+    return out;
+}
+
+template <class Box>
+Distance distance(const Box& box, const Cylinder<double>& cyl) {
+    const bool touching = intersects_unchecked(box, cyl);
+    // Scaled so that the largest length is near 1, where the scaling is exact (distances scale with it).
+    Magnitude size;
+    size(box), size(cyl);
+    Scale scale{size.e == std::numeric_limits<int>::min() ? 0 : std::clamp(-size.e, -1000, 1000)};
+    const Box sbox = scale(box);
+    const Cylinder<double> scyl = scale(cyl);
+    Distance out;
+    if (scale.exact && scale.e != 0) {
+        out = refined(sbox, scyl, touching);
+        Scale back{-scale.e};
+        out.on_box = back(out.on_box);
+        out.on_cylinder = back(out.on_cylinder);
+        const double lower = back(out.lower), upper = back(out.upper);
+        // Rounded back outward where the result left the normal range.
+        out.lower = std::ldexp(lower, scale.e) == out.lower ? lower : std::max(0.0, boxcyl::detail::next_down(lower));
+        out.upper = std::ldexp(upper, scale.e) == out.upper ? upper : boxcyl::detail::next_up(upper);
+    } else {
+        out = refined(box, cyl, touching);
+    }
+    out.on_box = into(box, out.on_box);
+    if (touching) return out;
+    // The exact bisection: what the bounds leave wider than the goal.
+    while (steps(out.lower, out.upper) > max_steps) {
+        const double m = halfway(out.lower, out.upper);
+        if (within_distance_unchecked(box, cyl, m))
+            out.upper = m;
+        else
+            out.lower = m;
+    }
+    return out;
+}
+
+}  // namespace detail::distance
+#endif
+
+// The certified distance. Preconditions: a valid box and cylinder.
+template <class Box, class T>
+Distance distance_unchecked(const Box& box, const Cylinder<T>& cyl) {
+#if defined(BOXCYL_HAS_EXACT)
+    if constexpr (std::is_same_v<T, double>)
+        return detail::distance::distance(box, cyl);
+    else
+        return detail::distance::distance(detail::cast<double>(box), detail::cast<double>(cyl));
+#else
+    static_assert(detail::dependent_false<T>, "boxcyl::distance is certified by the exact clearance query and needs "
+                                              "the exact backend: link boxcyl::exact (GMP, FLINT)");
+    return {};
+#endif
+}
+
+template <class Box, class T>
+Distance distance(const Box& box, const Cylinder<T>& cyl) {
+    detail::require_valid(box, cyl);
+    return distance_unchecked(box, cyl);
+}
+
+}  // namespace boxcyl
