@@ -2,6 +2,7 @@
 //
 //   boxcyl::batch::intersects(cylinder, boxes, out[, Options{threads}]) -> Stats
 //   boxcyl::batch::within_distance(cylinder, boxes, margin, out[, Options]) -> Stats
+//   boxcyl::batch::distance(cylinder, boxes, out[, Options]) -> Stats        (batch/distance.hpp)
 //
 // within_distance answers the clearance query dist(box, cylinder) ≤ margin (boxcyl/clearance.hpp) for
 // every box, bit for bit as the scalar within_distance(box, cylinder, margin); the same layouts,
@@ -346,5 +347,7 @@ Stats within_distance(const Cylinder<float>& cyl, const Boxes& boxes, double mar
 }
 
 }  // namespace boxcyl::batch
+
+#include "boxcyl/batch/distance.hpp"  // batch::distance, batch::distance_within
 
 #endif  // the templates

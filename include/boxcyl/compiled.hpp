@@ -219,6 +219,42 @@ Stats within_distance(const Cylinder<float>& cyl, const Boxes& boxes, double mar
     return within_distance(widened(cyl), boxes, margin, std::forward<Out>(out), opt);
 }
 
+// ---- Distance (boxcyl/batch/distance.hpp): one boxcyl::Distance per box, over the threads; ----
+// distance_within: only the boxes within `margin` (the clearance filter first), [margin, +∞] for the others.
+Stats distance(const Cylinder<double>& cyl, const AlignedBoxes<double>& boxes, std::span<Distance> out, const Options& opt = {});
+Stats distance_within(const Cylinder<double>& cyl, const AlignedBoxes<double>& boxes, double margin, std::span<Distance> out,
+                      const Options& opt = {});
+Stats distance(const Cylinder<double>& cyl, const AlignedBoxes<float>& boxes, std::span<Distance> out, const Options& opt = {});
+Stats distance_within(const Cylinder<double>& cyl, const AlignedBoxes<float>& boxes, double margin, std::span<Distance> out,
+                      const Options& opt = {});
+Stats distance(const Cylinder<double>& cyl, std::span<const AlignedBox<double>> boxes, std::span<Distance> out, const Options& opt = {});
+Stats distance_within(const Cylinder<double>& cyl, std::span<const AlignedBox<double>> boxes, double margin, std::span<Distance> out,
+                      const Options& opt = {});
+Stats distance(const Cylinder<double>& cyl, std::span<const AlignedBox<float>> boxes, std::span<Distance> out, const Options& opt = {});
+Stats distance_within(const Cylinder<double>& cyl, std::span<const AlignedBox<float>> boxes, double margin, std::span<Distance> out,
+                      const Options& opt = {});
+Stats distance(const Cylinder<double>& cyl, std::span<const OrientedBox<double>> boxes, std::span<Distance> out, const Options& opt = {});
+Stats distance_within(const Cylinder<double>& cyl, std::span<const OrientedBox<double>> boxes, double margin, std::span<Distance> out,
+                      const Options& opt = {});
+Stats distance(const Cylinder<double>& cyl, std::span<const OrientedBox<float>> boxes, std::span<Distance> out, const Options& opt = {});
+Stats distance_within(const Cylinder<double>& cyl, std::span<const OrientedBox<float>> boxes, double margin, std::span<Distance> out,
+                      const Options& opt = {});
+Stats distance(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes, std::span<Distance> out, const Options& opt = {});
+Stats distance_within(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes, double margin, std::span<Distance> out,
+                      const Options& opt = {});
+Stats distance(const Cylinder<double>& cyl, std::span<const Parallelepiped<float>> boxes, std::span<Distance> out, const Options& opt = {});
+Stats distance_within(const Cylinder<double>& cyl, std::span<const Parallelepiped<float>> boxes, double margin, std::span<Distance> out,
+                      const Options& opt = {});
+template <class Boxes>
+Stats distance(const Cylinder<float>& cyl, const Boxes& boxes, std::span<Distance> out, const Options& opt = {}) {
+    return distance(widened(cyl), boxes, out, opt);
+}
+template <class Boxes>
+Stats distance_within(const Cylinder<float>& cyl, const Boxes& boxes, double margin, std::span<Distance> out,
+                      const Options& opt = {}) {
+    return distance_within(widened(cyl), boxes, margin, out, opt);
+}
+
 }  // namespace compiled
 }  // namespace batch
 }  // namespace boxcyl

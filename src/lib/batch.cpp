@@ -1,5 +1,5 @@
-// boxcyl::boxcyl: the batch queries of boxcyl/compiled.hpp (intersects and the clearance form
-// within_distance), those of boxcyl/batch.hpp compiled once here (with boxcyl::batch_dispatch linked:
+// boxcyl::boxcyl: the batch queries of boxcyl/compiled.hpp (intersects, the clearance form
+// within_distance and the distances), those of boxcyl/batch.hpp compiled once here (with boxcyl::batch_dispatch linked:
 // the AVX2 and AVX-512 kernels are chosen at run time).
 #include "boxcyl/batch.hpp"
 
@@ -65,6 +65,16 @@ Stats header_parallelepiped(const Cylinder<double>& c, std::span<const Parallele
 template <class Boxes, class Out>
 Stats header_within(const Cylinder<double>& c, const Boxes& b, double m, Out out, const Options& o) {
     return boxcyl::batch::within_distance(c, b, m, out, o);
+}
+
+template <class Boxes>
+Stats header_distance(const Cylinder<double>& c, const Boxes& b, std::span<boxcyl::Distance> out, const Options& o) {
+    return boxcyl::batch::distance(c, b, out, o);
+}
+template <class Boxes>
+Stats header_distance_within(const Cylinder<double>& c, const Boxes& b, double m, std::span<boxcyl::Distance> out,
+                             const Options& o) {
+    return boxcyl::batch::distance_within(c, b, m, out, o);
 }
 
 }  // namespace
@@ -173,6 +183,55 @@ Stats within_distance(const Cylinder<double>& c, std::span<const Parallelepiped<
 }
 Stats within_distance(const Cylinder<double>& c, std::span<const Parallelepiped<float>> b, double m, Bools out, const Options& o) {
     return header_within(c, b, m, out, o);
+}
+
+Stats distance(const Cylinder<double>& c, const AlignedBoxes<double>& b, std::span<Distance> out, const Options& o) {
+    return header_distance(c, b, out, o);
+}
+Stats distance_within(const Cylinder<double>& c, const AlignedBoxes<double>& b, double m, std::span<Distance> out, const Options& o) {
+    return header_distance_within(c, b, m, out, o);
+}
+Stats distance(const Cylinder<double>& c, const AlignedBoxes<float>& b, std::span<Distance> out, const Options& o) {
+    return header_distance(c, b, out, o);
+}
+Stats distance_within(const Cylinder<double>& c, const AlignedBoxes<float>& b, double m, std::span<Distance> out, const Options& o) {
+    return header_distance_within(c, b, m, out, o);
+}
+Stats distance(const Cylinder<double>& c, std::span<const AlignedBox<double>> b, std::span<Distance> out, const Options& o) {
+    return header_distance(c, b, out, o);
+}
+Stats distance_within(const Cylinder<double>& c, std::span<const AlignedBox<double>> b, double m, std::span<Distance> out, const Options& o) {
+    return header_distance_within(c, b, m, out, o);
+}
+Stats distance(const Cylinder<double>& c, std::span<const AlignedBox<float>> b, std::span<Distance> out, const Options& o) {
+    return header_distance(c, b, out, o);
+}
+Stats distance_within(const Cylinder<double>& c, std::span<const AlignedBox<float>> b, double m, std::span<Distance> out, const Options& o) {
+    return header_distance_within(c, b, m, out, o);
+}
+Stats distance(const Cylinder<double>& c, std::span<const OrientedBox<double>> b, std::span<Distance> out, const Options& o) {
+    return header_distance(c, b, out, o);
+}
+Stats distance_within(const Cylinder<double>& c, std::span<const OrientedBox<double>> b, double m, std::span<Distance> out, const Options& o) {
+    return header_distance_within(c, b, m, out, o);
+}
+Stats distance(const Cylinder<double>& c, std::span<const OrientedBox<float>> b, std::span<Distance> out, const Options& o) {
+    return header_distance(c, b, out, o);
+}
+Stats distance_within(const Cylinder<double>& c, std::span<const OrientedBox<float>> b, double m, std::span<Distance> out, const Options& o) {
+    return header_distance_within(c, b, m, out, o);
+}
+Stats distance(const Cylinder<double>& c, std::span<const Parallelepiped<double>> b, std::span<Distance> out, const Options& o) {
+    return header_distance(c, b, out, o);
+}
+Stats distance_within(const Cylinder<double>& c, std::span<const Parallelepiped<double>> b, double m, std::span<Distance> out, const Options& o) {
+    return header_distance_within(c, b, m, out, o);
+}
+Stats distance(const Cylinder<double>& c, std::span<const Parallelepiped<float>> b, std::span<Distance> out, const Options& o) {
+    return header_distance(c, b, out, o);
+}
+Stats distance_within(const Cylinder<double>& c, std::span<const Parallelepiped<float>> b, double m, std::span<Distance> out, const Options& o) {
+    return header_distance_within(c, b, m, out, o);
 }
 
 }  // namespace boxcyl::batch::compiled

@@ -69,6 +69,9 @@ void batch() {
     bool out[3] = {};
     boxcyl::batch::intersects(cyl, boxes, std::span<bool>(out), {/*threads*/ 2});
     check(out[0] && !out[1] && out[2], "batch of aligned boxes (bools, 2 threads)");
+    std::vector<boxcyl::Distance> dist(3);
+    boxcyl::batch::distance(cyl, boxes, std::span<boxcyl::Distance>(dist));
+    check(dist[0].upper == 0 && dist[1].lower > 0 && dist[2].upper == 0, "batch::distance of aligned boxes");
     std::vector<boxcyl::AlignedBox<T>> rows;
     for (std::size_t i = 0; i < 3; ++i) rows.push_back({{min_x[i], min_y[i], min_z[i]}, {max_x[i], max_y[i], max_z[i]}});
     mask.assign(mask.size(), 0);
