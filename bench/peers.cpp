@@ -404,4 +404,63 @@ bool PeerQueries::answer(std::size_t i) const { return impl_->answer(i); }
 long PeerQueries::pass(std::size_t n) const { return impl_->pass(n); }
 bool PeerQueries::failed(std::size_t i) const { return impl_->failed(i); }
 
+// ---- The distances themselves ----
+
+struct PeerDistances::Impl {
+    virtual ~Impl() = default;
+    virtual std::optional<double> distance(std::size_t i) const = 0;
+};
+
+namespace {
+
+class FclDistances final : public PeerDistances::Impl {
+public:
+    FclDistances(const std::vector<Case>& cases, fcl::GJKSolverType solver) : s_(cases) { request_.gjk_solver_type = solver; }
+    std::optional<double> distance(std::size_t i) const override {
+        fcl::DistanceResultd result;
+        return fcl::distance(&s_.boxes[i], s_.box_tf[i], &s_.cylinders[i], s_.cylinder_tf[i], request_, result);
+    }
+
+private:
+    FclShapes s_;
+    fcl::DistanceRequestd request_;
+};
+
+class BulletDistances final : public PeerDistances::Impl {
+public:
+    BulletDistances(const std::vector<Case>& cases, bool epa2) : s_(cases), epa2_(epa2) {}
+    std::optional<double> distance(std::size_t i) const override {
+        if (!epa2_) return s_.gjk_distance(i);
+        btGjkEpaSolver2::sResults r;
+        const btTransform& a = s_.inputs[i].m_transformA;
+        const btTransform& b = s_.inputs[i].m_transformB;
+        if (!btGjkEpaSolver2::Distance(s_.boxes[i].get(), a, s_.cylinders[i].get(), b, b.getOrigin() - a.getOrigin(), r))
+            return std::nullopt;
+        return r.distance;
+    }
+
+private:
+    BulletShapes s_;
+    bool epa2_;
+};
+
+}  // namespace
+
+PeerDistances::PeerDistances(ClearancePeer peer, const std::vector<Case>& cases) {
+    switch (peer) {
+        case ClearancePeer::fcl_libccd: impl_ = std::make_unique<FclDistances>(cases, fcl::GST_LIBCCD); break;
+        case ClearancePeer::fcl_indep: impl_ = std::make_unique<FclDistances>(cases, fcl::GST_INDEP); break;
+        case ClearancePeer::bullet_gjk: impl_ = std::make_unique<BulletDistances>(cases, false); break;
+        case ClearancePeer::bullet_gjkepa2: impl_ = std::make_unique<BulletDistances>(cases, true); break;
+    }
+    if (!impl_) throw std::logic_error("unknown peer library");
+}
+PeerDistances::~PeerDistances() = default;
+std::optional<double> PeerDistances::distance(std::size_t i) const { return impl_->distance(i); }
+double PeerDistances::pass(std::size_t n) const {
+    double sum = 0;
+    for (std::size_t i = 0; i < n; ++i) sum += impl_->distance(i).value_or(0.0);
+    return sum;
+}
+
 }  // namespace boxcyl::bench

@@ -11,6 +11,7 @@
 #include <algorithm>  // std::max
 #include <cstddef>    // std::size_t
 #include <memory>     // std::unique_ptr
+#include <optional>   // a peer's distance, when it gives one
 #include <vector>     // the queries
 
 #include "support/cases.hpp"
@@ -84,6 +85,26 @@ public:
     // Whether the library failed on query i when it was first tried (ODE's internal assertions): its
     // answer counts as false, and the timed passes leave it out.
     bool failed(std::size_t i) const;
+
+    struct Impl;
+
+private:
+    std::unique_ptr<Impl> impl_;
+};
+
+// The distance itself as each clearance peer computes it (bench_distance.cpp): FCL's distance() (its
+// defaults: distance_tolerance 1e-6, no nearest points), btGjkPairDetector's and btGjkEpaSolver2's.
+// None when the library gives none (Bullet's GJK gave up; btGjkEpaSolver2 says "not separated").
+class PeerDistances {
+public:
+    PeerDistances(ClearancePeer peer, const std::vector<boxcyl::testing::Case>& cases);
+    ~PeerDistances();
+    PeerDistances(const PeerDistances&) = delete;
+    PeerDistances& operator=(const PeerDistances&) = delete;
+
+    std::optional<double> distance(std::size_t i) const;
+    // Distances 0 … n−1 in order (the timed pass); returns their sum.
+    double pass(std::size_t n) const;
 
     struct Impl;
 

@@ -72,29 +72,6 @@ Vec3<double> into(const Box&, const Vec3<double>& p) {
     return p;
 }
 
-// The doubles the double-double enclosures prove: the least double certainly ≥ the upper bound's
-// value, the greatest certainly ≤ the lower bound's (compare() decides against a double to ~2⁻¹⁰⁰).
-inline double tight_upper(const DoubleDouble& upper) {
-    double up = upper.hi();
-    for (int i = 0; i < 4 && up > 0; ++i) {
-        const double below = boxcyl::detail::next_down(up);
-        const int s = compare(upper, DoubleDouble(below));  // the sign of below − upper; 2: undecided
-        if (s != 0 && s != 1) break;
-        up = below;
-    }
-    return up;
-}
-inline double tight_lower(const DoubleDouble& lower) {
-    double lo = std::max(0.0, lower.lo());  // NaN → 0
-    for (int i = 0; i < 4 && lo < std::numeric_limits<double>::max(); ++i) {
-        const double above = boxcyl::detail::next_up(lo);
-        const int s = compare(DoubleDouble(above), lower);  // the sign of lower − above
-        if (s != 0 && s != 1) break;
-        lo = above;
-    }
-    return lo;
-}
-
 // Newton steps the distance allows the refinement (it stops sooner once converged): more than the
 // clearance query's, which needs only to decide against one margin, so that the witnesses converge too.
 inline constexpr int newton_steps = 16;
@@ -139,18 +116,25 @@ struct Magnitude {
 
 // The double-double stage's bounds and witnesses (filtered/separation_refined.hpp). Its squares and
 // products must neither overflow nor underflow: the caller hands it shapes scaled to lengths near 1.
+// GJK's convergence test for the distance: loose, as Newton's method refines its point to the end.
+inline constexpr double search_gap = 0x1p-44;
+
 template <class Box>
 Distance refined(const Box& box, const Cylinder<double>& cyl, bool touching) {
     namespace sep = filtered::separation;
-    Distance out;
-    sep::Approximate search;
-    const sep::Bounds db = sep::bounds(box, cyl, -1, &search);
-    out.lower = touching ? 0.0 : std::max(0.0, db.lower);
-    out.upper = touching ? 0.0 : (db.upper == db.upper ? db.upper : std::numeric_limits<double>::infinity());
-    const sep::RefinedBounds r = sep::refined_bounds(box, cyl, search, -1, newton_steps);
+    Distance out{0.0, touching ? 0.0 : std::numeric_limits<double>::infinity(), {}, {}};
+    const filtered::rim::Box enclosed = filtered::rim::enclose(box);
+    const filtered::rim::Rims f(cyl, 0.0);
+    if (!f.valid) return out;  // an axis whose enclosure is not finite: the bisection alone
+    const sep::Approximate search = sep::approximate(enclosed, f, cyl, -1, search_gap);
+    const sep::RefinedBounds r = sep::refined_bounds(box, cyl, search, -1, newton_steps, max_steps);
     if (r.found && !touching) {
-        out.lower = std::max(out.lower, tight_lower(r.lower));
-        out.upper = std::min(out.upper, tight_upper(r.upper));
+        out.lower = sep::refined::lower_double(r.lower);
+        out.upper = sep::refined::upper_double(r.upper);
+    } else if (!touching) {  // not round to nearest: the interval bounds, proved in every mode
+        const sep::Bounds db = sep::bounds(box, cyl, -1);
+        out.lower = std::max(0.0, db.lower);
+        if (db.upper == db.upper) out.upper = db.upper;
     }
     // The witnesses: the refined box point (the double search's where the refinement declines) and the
     // cylinder point nearest it, as values (they need no proof; in a directed rounding mode they are

@@ -61,13 +61,15 @@ struct Approximate {
     bool found = false;       // false: the search did not run (an axis whose enclosure is not finite)
 };
 
-inline Approximate approximate(const rim::Box& box, const rim::Rims& f, const Cylinder<double>& c, double decide_at) {
+// `rel_gap`: GJK's convergence test (the double-double refinement that follows needs much less).
+inline Approximate approximate(const rim::Box& box, const rim::Rims& f, const Cylinder<double>& c, double decide_at,
+                               double rel_gap = 0x1p-44) {
     using detail::mid;
     Approximate a;
     a.box = {mid(box.center), {mid(box.half[0]), mid(box.half[1]), mid(box.half[2])}};
     a.u = mid(f.u);
     const Vec3<double>& u = a.u;
-    a.closest = algo::gjk::closest(a.box, {c.center, u, c.radius, 0.5 * c.height}, decide_at);
+    a.closest = algo::gjk::closest(a.box, {c.center, u, c.radius, 0.5 * c.height}, decide_at, 48, rel_gap);
     a.p = algo::gjk::detail::box_point(a.box, a.closest.mu);
     {
         const Vec3<double> Z = a.p - c.center, Zxu = cross(Z, u);

@@ -24,6 +24,9 @@
 
 #include <algorithm>  // std::max
 #include <array>      // the box's half axes
+#include <bit>        // std::bit_cast: doubles ≥ 0 ordered as integers
+#include <cstdint>    // std::uint64_t
+#include <limits>     // the largest double
 #include <utility>    // std::swap
 #include <cmath>      // std::abs, std::ldexp, std::ilogb
 #include <optional>   // undecided
@@ -195,28 +198,29 @@ inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::arra
         const double rho_d = std::sqrt(approx(dot(P, P)));
         const D rho = rho_d > 0 ? value(sqrt(dot(P, P))) : D(0.0);
         const bool side = approx(rho - r) > 0 && rho_d > 0, cap = std::abs(approx(t)) > approx(hh);
-        // Gradient and Hessian in X (as functions of directions a, b).
+        // Gradient and Hessian in X, seen through the half axes: each dot product once per step.
         const DV grad_rho = side ? DV{P[0] / rho, P[1] / rho, P[2] / rho} : lift({0, 0, 0});
         const D over_r = side ? rho - r : D(0.0);
         const D over_h = cap ? enclosure_abs(t) - hh : D(0.0);
         const D sgn = approx(t) < 0 ? D(-1.0) : D(1.0);
-        auto gradient = [&](const DV& a) {
-            return D(2.0) * (over_r * dot(grad_rho, a) + over_h * sgn * dot(u, a));
-        };
-        auto hessian = [&](const DV& a, const DV& b) {
+        std::array<D, 3> gr{}, uu{}, grad{};  // ∇ρ·Aᵢ, u·Aᵢ, ∂g/∂μᵢ
+        for (std::size_t i = 0; i < 3; ++i) {
+            if (!movable[i]) continue;
+            gr[i] = side ? value(dot(grad_rho, box.half[i])) : D(0.0);
+            uu[i] = value(dot(u, box.half[i]));
+            grad[i] = value(D(2.0) * (over_r * gr[i] + over_h * sgn * uu[i]));
+        }
+        auto hessian = [&](std::size_t i, std::size_t j) {
             D h(0.0);
-            if (side) {
-                const D ga = dot(grad_rho, a), gb = dot(grad_rho, b);
-                h = ga * gb + over_r * (dot(a, b) - dot(u, a) * dot(u, b) - ga * gb) / rho;
-            }
-            if (cap) h = h + dot(u, a) * dot(u, b);
-            return D(2.0) * h;
+            if (side) h = gr[i] * gr[j] + over_r * (dot(box.half[i], box.half[j]) - uu[i] * uu[j] - gr[i] * gr[j]) / rho;
+            if (cap) h = h + uu[i] * uu[j];
+            return value(D(2.0) * h);
         };
         // A coordinate held at ±1 is released where g decreases into the box (the feature guessed
         // from the double search may be one too low: an edge where the nearest point is on a face).
         for (std::size_t i = 0; i < 3; ++i) {
             if (free[i] || !movable[i]) continue;
-            const double gi = approx(gradient(box.half[i]));
+            const double gi = approx(grad[i]);
             if ((approx(mu[i]) >= 1 && gi > 0) || (approx(mu[i]) <= -1 && gi < 0)) free[i] = true;
         }
         std::array<std::size_t, 2> idx{};
@@ -234,38 +238,34 @@ inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::arra
         //  3. The minimum of g along its gradient: where a face lies parallel, or nearly, to the cap or
         //     the side (every point of the contact region is nearest, and Newton's model has its minimum
         //     far away or points out of the box).
+        const std::size_t i0 = idx[0], i1 = idx[nfree == 2 ? 1 : 0];
         const D g_value = value(over_r * over_r + over_h * over_h);
-        auto form = [&](const DV& a, const DV& b, bool of_d) {
-            const D h = hessian(a, b);
-            return of_d ? value(h - gradient(a) * gradient(b) / (D(2.0) * g_value)) : value(h);
-        };
-        const DV& A0 = box.half[idx[0]];
-        const DV& A1 = box.half[idx[nfree == 2 ? 1 : 0]];
-        const D g0 = gradient(A0), g1 = nfree == 2 ? gradient(A1) : D(0.0);
+        const D g0 = grad[i0], g1 = nfree == 2 ? grad[i1] : D(0.0);
+        const D hg00 = hessian(i0, i0), hg01 = nfree == 2 ? hessian(i0, i1) : D(0.0), hg11 = nfree == 2 ? hessian(i1, i1) : D(0.0);
         auto newton = [&](bool of_d, std::array<D, 2>& delta) {
             if (of_d && !(approx(g_value) > 0)) return false;
-            const D h00 = form(A0, A0, of_d);
+            const D two_g = D(2.0) * g_value;
+            const D h00 = of_d ? value(hg00 - g0 * g0 / two_g) : hg00;
             if (nfree == 1) {
                 if (!(approx(h00) > 0)) return false;
                 delta = {value(-g0 / h00), D(0.0)};
                 return approx(delta[0]) == approx(delta[0]);
             }
-            const D h01 = form(A0, A1, of_d), h11 = form(A1, A1, of_d);
+            const D h01 = of_d ? value(hg01 - g0 * g1 / two_g) : hg01, h11 = of_d ? value(hg11 - g1 * g1 / two_g) : hg11;
             const D det = h00 * h11 - h01 * h01;
             if (!(approx(det) > 0 && approx(h00) > 0)) return false;
             delta = {value((h01 * g1 - h11 * g0) / det), value((h01 * g0 - h00 * g1) / det)};
             return approx(delta[0]) == approx(delta[0]) && approx(delta[1]) == approx(delta[1]);  // NaN: a quotient undecided
         };
         auto gradient_line = [&](std::array<D, 2>& delta) {
-            const D h00 = hessian(A0, A0), h01 = nfree == 2 ? hessian(A0, A1) : D(0.0), h11 = nfree == 2 ? hessian(A1, A1) : D(0.0);
-            const D gHg = g0 * g0 * h00 + D(2.0) * g0 * g1 * h01 + g1 * g1 * h11;
+            const D gHg = g0 * g0 * hg00 + D(2.0) * g0 * g1 * hg01 + g1 * g1 * hg11;
             if (!(approx(gHg) > 0)) return false;
             const D s = value(-(g0 * g0 + g1 * g1) / gHg);
             delta = {value(s * g0), value(s * g1)};
             return approx(delta[0]) == approx(delta[0]) && approx(delta[1]) == approx(delta[1]);
         };
         const double g_now = squared_distance(k, X);
-        bool taken = false;
+        bool taken = false, last = false;
         for (int candidate = 0; candidate < 3 && !taken; ++candidate) {
             std::array<D, 2> delta{D(0.0), D(0.0)};
             if (!(candidate < 2 ? newton(candidate == 0, delta) : gradient_line(delta))) continue;
@@ -302,12 +302,16 @@ inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::arra
                     mu = next;
                     free = next_free;
                     taken = true;
+                    // A whole Newton step this small: the next would move μ by about its square, below
+                    // double-double's resolution (quadratic convergence).
+                    last = candidate < 2 && alpha == 1 && halving == 0 &&
+                           std::max(std::abs(approx(delta[0])), std::abs(approx(delta[1]))) <= 0x1p-52;
                 } else {
                     for (D& d : delta) d = value(d * D(0.5));
                 }
             }
         }
-        if (!taken) return;
+        if (!taken || last) return;
     }
 }
 
@@ -427,6 +431,34 @@ inline void kinks(const refined::Box& box, const refined::Cyl& k, const std::arr
 }
 
 namespace refined {
+// The doubles the enclosures prove: the least double certainly ≥ the upper bound's value, the greatest
+// certainly ≤ the lower bound's (compare() decides against a double to about 2⁻¹⁰⁰).
+inline double upper_double(const DoubleDouble& upper) {
+    double up = upper.hi();
+    for (int i = 0; i < 4 && up > 0; ++i) {
+        const double below = boxcyl::detail::next_down(up);
+        const int s = compare(upper, DoubleDouble(below));  // the sign of below − upper; 2: undecided
+        if (s != 0 && s != 1) break;
+        up = below;
+    }
+    return up;
+}
+inline double lower_double(const DoubleDouble& lower) {
+    double lo = std::max(0.0, lower.lo());  // NaN → 0
+    for (int i = 0; i < 4 && lo < std::numeric_limits<double>::max(); ++i) {
+        const double above = boxcyl::detail::next_up(lo);
+        const int s = compare(DoubleDouble(above), lower);  // the sign of lower − above
+        if (s != 0 && s != 1) break;
+        lo = above;
+    }
+    return lo;
+}
+// Whether the doubles the bounds prove are at most n apart.
+inline bool within_doubles(const RefinedBounds& r, std::uint64_t n) {
+    const double lo = lower_double(r.lower), up = upper_double(r.upper);
+    return lo <= up && std::bit_cast<std::uint64_t>(up) - std::bit_cast<std::uint64_t>(lo) <= n;
+}
+
 // Whether the bounds decide dist ≤ m: true (within), false (not), nullopt.
 inline std::optional<bool> decides(const RefinedBounds& r, double m) {
     const DoubleDouble margin(m);
@@ -439,10 +471,11 @@ inline std::optional<bool> decides(const RefinedBounds& r, double m) {
 
 // The refined bounds, from the double search `a` (separation.hpp's approximate()). With `decide_at`
 // ≥ 0, the further candidates (a foot, the kinks) are tried only while the bounds do not decide
-// dist ≤ decide_at. `newton_steps` bounds the refinement (it ends sooner once converged).
+// dist ≤ decide_at, and with `enough_doubles` > 0 only while the bounds prove doubles farther apart than
+// that. `newton_steps` bounds the refinement (it ends sooner once converged).
 template <class AnyBox>
 RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const Approximate& a, double decide_at = -1,
-                             int newton_steps = 4) {
+                             int newton_steps = 4, std::uint64_t enough_doubles = 0) {
     using namespace refined;
     if (!a.found || !boxcyl::detail::round_to_nearest()) return {D(0.0), D(0.0), false};
     const UncertaintyScope scope;  // undecided operations are read through their bounds here
@@ -469,7 +502,11 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
         const D g = gap(box, k, n);
         if (g.lo() > out.lower.lo()) out.lower = g;  // NaN never wins
     }
-    if (decide_at >= 0 && refined::decides(out, decide_at)) return out;
+    auto enough = [&] {
+        return (decide_at >= 0 && refined::decides(out, decide_at)) ||
+               (enough_doubles > 0 && refined::within_doubles(out, enough_doubles));
+    };
+    if (enough()) return out;
     // A second box point where the bounds still differ in double: the foot of the cylinder's point
     // extreme along the best direction (where a face lies nearly parallel to a cap, Newton's model
     // sees no curvature, and that rim point's foot is the nearest box point).
@@ -478,7 +515,7 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
         const D upper2 = point_distance(k, X2);
         if (upper2.hi() < out.upper.hi()) out.upper = upper2, out.witness = value(X2);
     }
-    if (decide_at >= 0 && refined::decides(out, decide_at)) return out;
+    if (enough()) return out;
     if (out.upper.hi() - out.lower.lo() > 0x1p-80 * out.upper.hi()) kinks(box, k, mu, out);
     return out;
 }
