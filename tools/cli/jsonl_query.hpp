@@ -174,4 +174,11 @@ inline std::size_t process_stream(std::istream& in, std::ostream& out, const Run
     return answer_stream(in, out, opt, threads).bad;
 }
 
+// answer_stream for any subcommand: answer(line, line_number) answers each line that read_line kept,
+// on `threads` threads as above; it must not throw (answer_line reports a resource error as the
+// line's error) and may be called from several threads at once.
+using LineAnswerer = std::function<LineAnswer(std::string_view, std::size_t)>;
+StreamCounts answer_lines(std::istream& in, std::ostream& out, std::size_t max_line_bytes, unsigned threads,
+                          const LineAnswerer& answer);
+
 }  // namespace boxcyl::cli
