@@ -481,10 +481,20 @@ std::string read_vec3_field(const json& obj, const char* key, const std::string&
     return read_vec3(obj, key, field, out);
 }
 
-ParsedLine parse_line(std::string_view text, std::size_t line_number) {
+namespace {
+
+// parse_line and parse_distance_line: the same line without or with "margin".
+ParsedLine parse_query_line(std::string_view text, std::size_t line_number, bool margin_allowed) {
     Query q;
-    const ObjectLine o = parse_object_line(text, line_number, [&q](const json& root) -> std::string {
-        if (auto e = check_keys(root, "", {"id", "box", "cylinder", "margin"}); !e.empty()) return e;
+    const ObjectLine o = parse_object_line(text, line_number, [&q, margin_allowed](const json& root) -> std::string {
+        // Named before any other key: a margin on a distance line is a question for intersect.
+        if (!margin_allowed && root.contains("margin"))
+            return "margin: not a key of distance lines (the answer is the distance itself; a margin "
+                   "belongs to `boxcyl intersect`)";
+        if (auto e = margin_allowed ? check_keys(root, "", {"id", "box", "cylinder", "margin"})
+                                    : check_keys(root, "", {"id", "box", "cylinder"});
+            !e.empty())
+            return e;
         if (auto e = read_box(root, q.box); !e.empty()) return e;
         if (auto e = read_cylinder(root, q.cylinder); !e.empty()) return e;
         if (root.contains("margin")) {
@@ -510,6 +520,14 @@ ParsedLine parse_line(std::string_view text, std::size_t line_number) {
     r.error = o.error;
     if (o.error.empty()) r.query = q;
     return r;
+}
+
+}  // namespace
+
+ParsedLine parse_line(std::string_view text, std::size_t line_number) { return parse_query_line(text, line_number, true); }
+
+ParsedLine parse_distance_line(std::string_view text, std::size_t line_number) {
+    return parse_query_line(text, line_number, false);
 }
 
 Validity check_arithmetic(const Query& q, const RunOptions& opt) {
