@@ -18,6 +18,8 @@ Cylinder(center=(3.0, 0.0, 0.0), axis=(0.0, 0.0, 5.0), radius=2.0, height=1.0)
 Batch forms take arrays and return a numpy bool array; see :func:`intersects_aligned`,
 :func:`intersects_oriented` and :func:`intersects_parallelepiped`; :mod:`boxcyl.dask` answers
 chunked Dask arrays. :func:`grid_cells` lists the cells of a regular grid that a cylinder meets.
+:func:`distance` bounds how far apart a box and a cylinder are, proved (and
+:func:`distances_aligned` etc. over arrays).
 
 Input policy: numbers are real numbers, read as float64 (numpy integer and float arrays, Python
 ints and floats, and object arrays of real numbers such as ``Fraction`` or ``Decimal``, each
@@ -29,6 +31,7 @@ the element in a batch: ``"boxes[17].max[0]: is less than boxes[17].min[0]"``.
 
 import decimal as _decimal
 import numbers as _numbers
+import typing as _typing
 
 import numpy as _np
 
@@ -40,8 +43,14 @@ __all__ = [
     "Algorithm",
     "Arithmetic",
     "Cylinder",
+    "Distance",
+    "Distances",
     "OrientedBox",
     "Parallelepiped",
+    "distance",
+    "distances_aligned",
+    "distances_oriented",
+    "distances_parallelepiped",
     "grid_cells",
     "intersects",
     "intersects_aligned",
@@ -460,6 +469,62 @@ def intersects(box, cylinder, *, algorithm=Algorithm.inequalities, arithmetic=Ar
     return _core.intersects(box, cylinder, *options)
 
 
+# ---- The distance. -----------------------------------------------------------------------------------
+
+class Distance(_typing.NamedTuple):
+    """How far apart a box and a cylinder are (:func:`distance`).
+
+    ``lower <= dist(box, cylinder) <= upper`` is proved for the float64 values of the shapes;
+    ``lower`` and ``upper`` are at most 4 float64 values apart (``upper - lower`` is at most 4 units
+    in the last place of ``upper``), and both are exactly 0.0 when the solids touch or overlap.
+    ``upper`` is ``inf`` when the distance exceeds the largest float64. ``on_box`` and
+    ``on_cylinder`` are a nearest pair of points, one near each solid: approximate, not proved (for
+    solids that meet, near a common point)."""
+
+    lower: float
+    upper: float
+    on_box: _typing.Tuple[float, float, float]
+    on_cylinder: _typing.Tuple[float, float, float]
+
+
+def _check_shapes(box, cylinder, batch_names):
+    if not isinstance(box, (_core.AlignedBox, _core.OrientedBox, _core.Parallelepiped)):
+        raise ValueError(f"box: expected an AlignedBox, an OrientedBox or a Parallelepiped, got {_type_name(box)} "
+                         f"(for arrays use {batch_names})")
+    if not isinstance(cylinder, _core.Cylinder):
+        raise ValueError(f"cylinder: expected a Cylinder, got {_type_name(cylinder)}")
+
+
+def distance(box, cylinder):
+    """The Euclidean distance between the closed box and the closed cylinder, as proved bounds.
+
+    Parameters
+    ----------
+    box : AlignedBox, OrientedBox or Parallelepiped
+    cylinder : Cylinder
+
+    Returns
+    -------
+    Distance
+        ``(lower, upper, on_box, on_cylinder)``: ``lower <= distance <= upper``, proved, at most 4
+        float64 values apart, both exactly 0.0 when the solids touch or overlap (``upper`` is
+        ``inf`` beyond the largest float64); ``on_box`` and ``on_cylinder`` a nearest pair of
+        points (approximate). See :class:`Distance`.
+
+    Raises
+    ------
+    ValueError
+        For arguments of the wrong kind (named).
+
+    There are no ``algorithm`` or ``arithmetic`` options: the bounds are certified whatever the
+    rounding (exact arithmetic decides what double-double arithmetic leaves open). The query runs
+    with the GIL released. ``intersects(box, cylinder, margin=m)`` is ``True`` exactly when the
+    distance is at most ``m``.
+    """
+    _check_shapes(box, cylinder, "distances_aligned / distances_oriented / distances_parallelepiped")
+    return Distance(*_core.distance(box, cylinder))
+
+
 # ---- Batch arguments: float64 arrays of shape (M, *tail), M = N or 1, never copied when float64. ---
 
 def _field(name, value, tail):
@@ -678,6 +743,77 @@ def intersects_parallelepiped(boxes, cylinders, *, algorithm=Algorithm.inequalit
     _check_lengths(box_arrays + cyl)
     return _core._intersects_parallelepiped(*box_arrays, box_single, *cyl, cylinder_single,
                                             *_options(algorithm, arithmetic), _threads(threads), _margin(margin))
+
+
+# ---- The batch distances. ----------------------------------------------------------------------------
+
+class Distances(_typing.NamedTuple):
+    """The distances of a batch (:func:`distances_aligned` etc.): float64 arrays, element i as
+    :func:`distance` gives it for pair i — ``lower`` and ``upper`` of shape (N,), ``on_box`` and
+    ``on_cylinder`` of shape (N, 3)."""
+
+    lower: _np.ndarray
+    upper: _np.ndarray
+    on_box: _np.ndarray
+    on_cylinder: _np.ndarray
+
+
+def distances_aligned(boxes, cylinders, *, threads=None):
+    """The distance of each axis-aligned box to its cylinder, for arrays of them.
+
+    Parameters
+    ----------
+    boxes, cylinders :
+        As for :func:`intersects_aligned` (one box or one cylinder is used with every element).
+    threads : int or None, optional
+        How many threads answer (None or 0, the default: all cores; small batches use fewer).
+
+    Returns
+    -------
+    Distances
+        ``(lower, upper, on_box, on_cylinder)`` arrays of shapes (N,), (N,), (N, 3), (N, 3); element
+        i is :func:`distance` of pair i, exactly.
+
+    Raises
+    ------
+    ValueError
+        For a wrong shape or kind of input, or the first invalid element, named
+        (``"boxes[3].min[1]: is NaN"``). No answer is returned unless every element is valid.
+    KeyboardInterrupt
+        Ctrl-C stops a running batch.
+
+    Each pair is answered by the scalar :func:`distance` (tens of microseconds each; no SIMD
+    filter), on ``threads`` threads with the GIL released.
+    """
+    box_arrays, box_single = _aligned_boxes(boxes)
+    cyl, cylinder_single = _cylinders(cylinders)
+    _check_lengths(box_arrays + cyl)
+    return Distances(*_core._distances_aligned(*box_arrays, box_single, *cyl, cylinder_single, _threads(threads)))
+
+
+def distances_oriented(boxes, cylinders, *, threads=None):
+    """The distance of each oriented box to its cylinder, for arrays of them.
+
+    ``boxes`` as for :func:`intersects_oriented`; ``cylinders``, ``threads``, the result and the
+    errors as for :func:`distances_aligned`.
+    """
+    box_arrays, box_single = _frame_boxes(boxes)
+    cyl, cylinder_single = _cylinders(cylinders)
+    _check_lengths(box_arrays + cyl)
+    return Distances(*_core._distances_oriented(*box_arrays, box_single, *cyl, cylinder_single, _threads(threads)))
+
+
+def distances_parallelepiped(boxes, cylinders, *, threads=None):
+    """The distance of each parallelepiped to its cylinder, for arrays of them.
+
+    ``boxes`` as for :func:`intersects_parallelepiped`; ``cylinders``, ``threads``, the result and
+    the errors as for :func:`distances_aligned`.
+    """
+    box_arrays, box_single = _frame_boxes(boxes, _core.Parallelepiped)
+    cyl, cylinder_single = _cylinders(cylinders)
+    _check_lengths(box_arrays + cyl)
+    return Distances(*_core._distances_parallelepiped(*box_arrays, box_single, *cyl, cylinder_single,
+                                                     _threads(threads)))
 
 
 # ---- The grid query. ---------------------------------------------------------------------------------

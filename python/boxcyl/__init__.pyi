@@ -1,6 +1,6 @@
 # Type stubs of the package boxcyl (PEP 561: see py.typed). The runtime is __init__.py over the
 # compiled boxcyl._core; these describe what users call.
-from typing import Any, ClassVar, Dict, Literal, Optional, Sequence, SupportsFloat, Tuple, Union
+from typing import Any, ClassVar, Dict, Literal, NamedTuple, Optional, Sequence, SupportsFloat, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -133,3 +133,21 @@ def intersects_oriented(boxes: _OrientedBoxes, cylinders: _Cylinders, *, algorit
 def intersects_parallelepiped(boxes: _Parallelepipeds, cylinders: _Cylinders, *, algorithm: _AlgorithmLike = ...,
                               arithmetic: _ArithmeticLike = ..., threads: Optional[int] = ...,
                               margin: Optional[float] = ...) -> npt.NDArray[np.bool_]: ...
+
+class Distance(NamedTuple):
+    lower: float
+    upper: float
+    on_box: _Vector3
+    on_cylinder: _Vector3
+
+class Distances(NamedTuple):
+    lower: npt.NDArray[np.float64]
+    upper: npt.NDArray[np.float64]
+    on_box: npt.NDArray[np.float64]
+    on_cylinder: npt.NDArray[np.float64]
+
+def distance(box: Union[AlignedBox, OrientedBox, Parallelepiped], cylinder: Cylinder) -> Distance: ...
+def distances_aligned(boxes: _AlignedBoxes, cylinders: _Cylinders, *, threads: Optional[int] = ...) -> Distances: ...
+def distances_oriented(boxes: _OrientedBoxes, cylinders: _Cylinders, *, threads: Optional[int] = ...) -> Distances: ...
+def distances_parallelepiped(boxes: _Parallelepipeds, cylinders: _Cylinders, *,
+                             threads: Optional[int] = ...) -> Distances: ...

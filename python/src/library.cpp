@@ -1,11 +1,12 @@
 // The library code the module calls, compiled here in one translation unit so that the exact query's
 // templates are instantiated once: the double-precision functions of boxcyl/compiled.hpp that the
 // binding files use (as src/lib defines them all for the compiled library boxcyl::boxcyl) — the scalar
-// queries, the batch API with its header kernel (intersects and within_distance), the grid query —
-// and the scalar exact default that the AVX2 and AVX-512 kernels (src/batch) call
+// queries, the distance, the batch API with its header kernel (intersects and within_distance), the
+// grid query — and the scalar exact default that the AVX2 and AVX-512 kernels (src/batch) call
 // (src/batch/pipeline.cpp's explicit instantiations).
 #include "boxcyl/batch.hpp"
 #include "boxcyl/clearance.hpp"
+#include "boxcyl/distance.hpp"
 #include "boxcyl/grid.hpp"
 #include "boxcyl/query.hpp"
 
@@ -95,6 +96,26 @@ bool within_distance(const OrientedBox<double>& box, const Cylinder<double>& cyl
 }
 bool within_distance(const Parallelepiped<double>& box, const Cylinder<double>& cyl, double margin) {
     return boxcyl::within_distance<Parallelepiped<double>, double>(box, cyl, margin);
+}
+
+// The distance's templates by name (a plain call here would find these functions themselves).
+Distance distance_unchecked(const AlignedBox<double>& box, const Cylinder<double>& cyl) {
+    return boxcyl::distance_unchecked<AlignedBox<double>, double>(box, cyl);
+}
+Distance distance_unchecked(const OrientedBox<double>& box, const Cylinder<double>& cyl) {
+    return boxcyl::distance_unchecked<OrientedBox<double>, double>(box, cyl);
+}
+Distance distance_unchecked(const Parallelepiped<double>& box, const Cylinder<double>& cyl) {
+    return boxcyl::distance_unchecked<Parallelepiped<double>, double>(box, cyl);
+}
+Distance distance(const AlignedBox<double>& box, const Cylinder<double>& cyl) {
+    return boxcyl::distance<AlignedBox<double>, double>(box, cyl);
+}
+Distance distance(const OrientedBox<double>& box, const Cylinder<double>& cyl) {
+    return boxcyl::distance<OrientedBox<double>, double>(box, cyl);
+}
+Distance distance(const Parallelepiped<double>& box, const Cylinder<double>& cyl) {
+    return boxcyl::distance<Parallelepiped<double>, double>(box, cyl);
 }
 
 void for_each_cell_erased(const Grid& g, const Cylinder<double>& c, CellCallback f, void* context, GridStats* stats) {

@@ -45,6 +45,12 @@ GOOD = textwrap.dedent("""
     cells: npt.NDArray[np.int64] = boxcyl.grid_cells((0, 0, 0), (1, 1, 1), (4, 4, 4), rod, max_cells=100)
     hits = boxcyl.intersects_parallelepiped([sheared], rod, threads=0)
     lazy = boxcyl.dask.intersects_parallelepiped((np.zeros((4, 3)), np.zeros((4, 3, 3)), np.ones((4, 3))), rod)
+    gap: boxcyl.Distance = boxcyl.distance(pbox, cyl)
+    lo = gap.lower + gap.upper + gap.on_box[0] + gap.on_cylinder[2]
+    gaps: boxcyl.Distances = boxcyl.distances_aligned(np.zeros((4, 2, 3)), cyl, threads=2)
+    bounds: npt.NDArray[np.float64] = gaps.lower
+    gaps = boxcyl.distances_oriented([obox], [cyl])
+    gaps = boxcyl.distances_parallelepiped((np.zeros((4, 3)), np.zeros((4, 3, 3)), np.ones((4, 3))), rod, threads=None)
     print(boxcyl.__version__, boxcyl.Algorithm.oracle.name, hash(cyl))
 """)
 
@@ -59,6 +65,8 @@ BAD = textwrap.dedent("""
     n: int = box.min
     boxcyl.Cylinder.from_rotation((0, 0, 0), ((1, 0, 0), (0, 1, 0), (0, 0, 1)), radius=1, height=1, along="w")
     boxcyl.grid_cells((0, 0, 0), (1, 1, 1), (4, 4, 4), box)
+    boxcyl.distance(box, cyl, margin=1.0)
+    far: str = boxcyl.distance(box, cyl).upper
 """)
 
 
@@ -81,7 +89,7 @@ def test_mypy_strict_accepts_documented_use(tmp_path):
 def test_mypy_rejects_misuse_line_by_line(tmp_path):
     done = mypy(tmp_path, BAD)
     lines = sorted({int(line.split(":")[1]) for line in done.stdout.splitlines() if ": error:" in line})
-    assert lines == [5, 6, 7, 8, 9, 10, 11], done.stdout
+    assert lines == [5, 6, 7, 8, 9, 10, 11, 12, 13], done.stdout
 
 
 def test_stubtest_finds_the_stubs_consistent_with_the_module(tmp_path):

@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include "boxcyl/version.hpp"
+#include "distance.hpp"
 #include "explain.hpp"
 #include "grid.hpp"
 #include "io.hpp"
@@ -246,6 +247,8 @@ int run_app_unguarded(int argc, const char* const* argv, std::istream& in, std::
     add_explain_command(app, explain);
     GridCommand grid;
     add_grid_command(app, grid);
+    DistanceCommand distance;
+    add_distance_command(app, distance);
 
     try {
         app.parse(argc, argv);
@@ -260,6 +263,7 @@ int run_app_unguarded(int argc, const char* const* argv, std::istream& in, std::
 
     if (explain.app->parsed()) return run_explain(explain, in, out, err);
     if (grid.app->parsed()) return run_grid(grid, in, out, err);
+    if (distance.app->parsed()) return run_distance(distance, in, out, err);
 
     RunOptions options = make_run_options(algorithm, arithmetic);
     options.max_line_bytes = max_line_bytes;

@@ -42,7 +42,7 @@ std::unique_ptr<std::istream> open_input(const std::string& file, std::ostream& 
 // How the input is named in messages: "standard input" for "-", else 'FILE'.
 std::string input_name(const std::string& file);
 
-// The exit code of a run of `intersect` or `grid` over `in` (named `name`) that wrote `out`, after
+// The exit code of a run of `intersect`, `grid` or `distance` over `in` (named `name`) that wrote `out`, after
 // saying on `err` why the run ended early: the output could not be written (exit_io), the input could
 // not be read (exit_io), a stop signal (exit_signal_base + signal); else exit_ok or exit_bad_lines.
 int end_of_run(const StreamCounts& counts, const std::istream& in, const std::string& name, std::ostream& out,

@@ -481,10 +481,20 @@ std::string read_vec3_field(const json& obj, const char* key, const std::string&
     return read_vec3(obj, key, field, out);
 }
 
-ParsedLine parse_line(std::string_view text, std::size_t line_number) {
+namespace {
+
+// parse_line and parse_distance_line: the same line without or with "margin".
+ParsedLine parse_query_line(std::string_view text, std::size_t line_number, bool margin_allowed) {
     Query q;
-    const ObjectLine o = parse_object_line(text, line_number, [&q](const json& root) -> std::string {
-        if (auto e = check_keys(root, "", {"id", "box", "cylinder", "margin"}); !e.empty()) return e;
+    const ObjectLine o = parse_object_line(text, line_number, [&q, margin_allowed](const json& root) -> std::string {
+        // Named before any other key: a margin on a distance line is a question for intersect.
+        if (!margin_allowed && root.contains("margin"))
+            return "margin: not a key of distance lines (the answer is the distance itself; a margin "
+                   "belongs to `boxcyl intersect`)";
+        if (auto e = margin_allowed ? check_keys(root, "", {"id", "box", "cylinder", "margin"})
+                                    : check_keys(root, "", {"id", "box", "cylinder"});
+            !e.empty())
+            return e;
         if (auto e = read_box(root, q.box); !e.empty()) return e;
         if (auto e = read_cylinder(root, q.cylinder); !e.empty()) return e;
         if (root.contains("margin")) {
@@ -510,6 +520,14 @@ ParsedLine parse_line(std::string_view text, std::size_t line_number) {
     r.error = o.error;
     if (o.error.empty()) r.query = q;
     return r;
+}
+
+}  // namespace
+
+ParsedLine parse_line(std::string_view text, std::size_t line_number) { return parse_query_line(text, line_number, true); }
+
+ParsedLine parse_distance_line(std::string_view text, std::size_t line_number) {
+    return parse_query_line(text, line_number, false);
 }
 
 Validity check_arithmetic(const Query& q, const RunOptions& opt) {
@@ -619,11 +637,6 @@ LineAnswer answer_line(std::string_view text, std::size_t line_number, const Run
 
 namespace {
 
-StreamCounts process_stream_serial(std::istream& in, std::ostream& out, const RunOptions& opt) {
-    return process_lines(in, out, opt.max_line_bytes,
-                         [&opt](std::string_view line, std::size_t n) { return answer_line(line, n, opt); });
-}
-
 // Consecutive input lines and, once a worker has answered them, their output lines.
 struct Block {
     Block() {
@@ -645,7 +658,8 @@ struct Block {
 // This thread reads and cuts the input into blocks; `threads` workers answer blocks in any order; one
 // writer thread writes the answered blocks strictly in input order. Reading, answering and writing
 // overlap, and at most 2 * threads blocks exist between reader and writer (memory bound).
-StreamCounts process_stream_parallel(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads) {
+StreamCounts process_stream_parallel(std::istream& in, std::ostream& out, std::size_t max_line_bytes, unsigned threads,
+                                     const LineAnswerer& answer) {
     const std::size_t max_in_flight = 2 * std::size_t{threads};
     std::mutex m;
     std::condition_variable work_ready;  // workers: a block in `todo`, or the end
@@ -672,8 +686,8 @@ StreamCounts process_stream_parallel(std::istream& in, std::ostream& out, const 
                 for (std::size_t i = 0; i < b->lines.size(); ++i) {
                     const std::size_t n = b->first_line + i;
                     const LineAnswer a = b->status[i] == LineRead::line
-                                             ? answer_line(b->lines[i], n, opt)
-                                             : unread_line_answer(b->status[i], n, opt.max_line_bytes);
+                                             ? answer(b->lines[i], n)
+                                             : unread_line_answer(b->status[i], n, max_line_bytes);
                     b->out += a.text;
                     b->out += '\n';
                     if (!a.good) ++b->bad;
@@ -782,7 +796,7 @@ StreamCounts process_stream_parallel(std::istream& in, std::ostream& out, const 
                 break;
             }
             bool newline = false;
-            const LineRead r = read_line(in, line, opt.max_line_bytes, nullptr, &newline);
+            const LineRead r = read_line(in, line, max_line_bytes, nullptr, &newline);
             if (hook_failure) std::rethrow_exception(hook_failure);
             if (r == LineRead::end || (!newline && stop_signal() != 0)) {
                 if (!block->lines.empty()) dispatch(block);
@@ -813,9 +827,16 @@ StreamCounts process_stream_parallel(std::istream& in, std::ostream& out, const 
 
 }  // namespace
 
-StreamCounts answer_stream(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads) {
+StreamCounts answer_lines(std::istream& in, std::ostream& out, std::size_t max_line_bytes, unsigned threads,
+                          const LineAnswerer& answer) {
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    return threads == 1 ? process_stream_serial(in, out, opt) : process_stream_parallel(in, out, opt, threads);
+    return threads == 1 ? process_lines(in, out, max_line_bytes, answer)
+                        : process_stream_parallel(in, out, max_line_bytes, threads, answer);
+}
+
+StreamCounts answer_stream(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads) {
+    return answer_lines(in, out, opt.max_line_bytes, threads,
+                        [&opt](std::string_view line, std::size_t n) { return answer_line(line, n, opt); });
 }
 
 }  // namespace boxcyl::cli

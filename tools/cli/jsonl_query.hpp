@@ -17,6 +17,7 @@
 
 #include <nlohmann/json_fwd.hpp>  // nlohmann::json, for the readers shared with other subcommands
 
+#include "boxcyl/distance_types.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
@@ -44,6 +45,10 @@ struct ParsedLine {
 // Reads one line (without its newline; a trailing '\r' is JSON whitespace and harmless) as a query:
 // JSON syntax, structure, number range and boxcyl::validate(). `line_number` counts from 1.
 ParsedLine parse_line(std::string_view text, std::size_t line_number);
+
+// The same for `boxcyl distance`, whose lines have no "margin" (the distance is the answer): a line
+// with one is bad, and its message says where a margin belongs.
+ParsedLine parse_distance_line(std::string_view text, std::size_t line_number);
 
 // The JSON half of parse_line, for other subcommands (`boxcyl grid`): reads `text` as one JSON object
 // under the same rules and messages (empty line, syntax, numbers beyond the double range, duplicate
@@ -77,6 +82,10 @@ Validity check_arithmetic(const Query& q, const RunOptions& opt);
 // arithmetic, for the parallelepiped its axes span exactly as given.
 bool run_query(const Query& q, const QueryOptions& opt);
 bool needs_hull_for_frame(const Query& q, const QueryOptions& opt);
+
+// boxcyl::distance for the query's box and cylinder (`boxcyl distance`; the margin is not looked at).
+// Needs the exact backend: without it, throws std::invalid_argument saying so.
+Distance run_distance_query(const Query& q);
 
 // Output lines, without the newline. `id` is JSON text or empty (no "id" key).
 std::string format_answer(const std::string& id, bool intersect);
@@ -173,5 +182,12 @@ StreamCounts answer_stream(std::istream& in, std::ostream& out, const RunOptions
 inline std::size_t process_stream(std::istream& in, std::ostream& out, const RunOptions& opt, unsigned threads = 1) {
     return answer_stream(in, out, opt, threads).bad;
 }
+
+// answer_stream for any subcommand: answer(line, line_number) answers each line that read_line kept,
+// on `threads` threads as above; it must not throw (answer_line reports a resource error as the
+// line's error) and may be called from several threads at once.
+using LineAnswerer = std::function<LineAnswer(std::string_view, std::size_t)>;
+StreamCounts answer_lines(std::istream& in, std::ostream& out, std::size_t max_line_bytes, unsigned threads,
+                          const LineAnswerer& answer);
 
 }  // namespace boxcyl::cli

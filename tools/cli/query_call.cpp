@@ -2,7 +2,7 @@
 // not depend on which algorithms exist).
 #include <array>    // box axes
 #include <cmath>    // std::fabs
-#include <stdexcept>  // a margin without the exact backend
+#include <stdexcept>  // a margin or a distance without the exact backend
 #include <variant>  // std::visit over the box kinds
 
 #if defined(BOXCYL_CLI_EXACT)
@@ -66,6 +66,15 @@ bool run_query(const Query& q, const QueryOptions& opt) {
         return boxcyl::intersects(p, q.cylinder, QueryOptions{Algorithm::hull, opt.arithmetic});
     }
     return std::visit([&](const auto& box) { return boxcyl::intersects(box, q.cylinder, opt); }, q.box);
+}
+
+Distance run_distance_query(const Query& q) {
+#if defined(BOXCYL_CLI_EXACT)
+    return std::visit([&](const auto& box) { return boxcyl::distance(box, q.cylinder); }, q.box);
+#else
+    (void)q;
+    throw std::invalid_argument("distance: needs the exact backend (this boxcyl was built without GMP/FLINT)");
+#endif
 }
 
 }  // namespace boxcyl::cli

@@ -867,9 +867,100 @@ skewed_frames)
     run 0 intersect --help
     contains "$work/out" "2^-49"
     ;;
+distance_basic)
+    # boxcyl distance: a proved enclosure [lower, upper] of the distance and a nearest pair, one line
+    # per input line; bad lines as intersect reports them; a margin refused; no arithmetic to choose.
+    box='"box": {"min": [0, 0, 0], "max": [1, 1, 1]}'
+    printf '%s\n' \
+      "{\"id\": \"one\", $box, \"cylinder\": {\"center\": [3, 0.5, 0.5], \"axis\": [0, 0, 1], \"radius\": 1, \"height\": 1}}" \
+      "{\"id\": \"touch\", $box, \"cylinder\": {\"center\": [2, 0.5, 0.5], \"axis\": [0, 0, 1], \"radius\": 1, \"height\": 1}}" \
+      "{\"id\": \"bad\", $box, \"cylinder\": {\"center\": [2, 0.5, 0.5], \"axis\": [0, 0, 0], \"radius\": 1, \"height\": 1}}" \
+      "{\"id\": \"m\", $box, \"cylinder\": {\"center\": [2, 0.5, 0.5], \"axis\": [0, 0, 1], \"radius\": 1, \"height\": 1}, \"margin\": 1}" \
+      '{"id": "far", "box": {"min": [-1e308, 0, 0], "max": [-1e308, 1, 1]}, "cylinder": {"center": [1e308, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}}' \
+      >"$work/in"
+    run 1 distance "$work/in"
+    [[ $(wc -l <"$work/out") == 5 ]] || fail "expected 5 output lines, got $(wc -l <"$work/out")"
+    [[ -s $work/err ]] && fail "stderr not empty: $(head -c 300 "$work/err")"
+    # Distance exactly 1: lower <= 1 <= upper, a few ulps wide (awk reads each number as the nearest double).
+    sed -n 1p "$work/out" | grep -q '^{"id": "one", "lower": [0-9.e+-]*, "upper": [0-9.e+-]*, "on_box": \[.*\], "on_cylinder": \[.*\]}$' ||
+        fail "line 1 is not a distance line: $(sed -n 1p "$work/out")"
+    sed -n 1p "$work/out" | awk -F'[:,] *' '{ lo = $4 + 0; hi = $6 + 0; exit !(lo <= 1 && hi >= 1 && hi - lo <= 1e-15) }' ||
+        fail "line 1: not a tight enclosure of 1: $(sed -n 1p "$work/out")"
+    sed -n 2p "$work/out" | grep -q '^{"id": "touch", "lower": 0, "upper": 0, "on_box": \[' ||
+        fail "touching: not exactly 0: $(sed -n 2p "$work/out")"
+    sed -n 3p "$work/out" | grep -qxF '{"id": "bad", "error": "line 3: cylinder.axis: is the zero vector"}' ||
+        fail "invalid line: $(sed -n 3p "$work/out")"
+    sed -n 4p "$work/out" | grep -qF '{"id": "m", "error": "line 4: margin: not a key of distance lines' ||
+        fail "margin: $(sed -n 4p "$work/out")"
+    # Beyond the largest double the upper bound is null (JSON has no infinity).
+    sed -n 5p "$work/out" | grep -q '^{"id": "far", "lower": 1.7976931348623157e+308, "upper": null, ' ||
+        fail "far: $(sed -n 5p "$work/out")"
+    # A bad line's error is intersect's, word for word.
+    head -n 3 "$work/in" | tail -n 1 >"$work/bad"
+    run 1 intersect "$work/bad"
+    mv "$work/out" "$work/bad_intersect"
+    run 1 distance "$work/bad"
+    same_bytes "$work/out" "$work/bad_intersect"
+    # Standard input reads as the file does; good lines only exit 0.
+    head -n 2 "$work/in" >"$work/good"
+    run 0 distance "$work/good"
+    mv "$work/out" "$work/from_file"
+    cp "$work/good" "$work/stdin"
+    run 0 distance
+    same_bytes "$work/out" "$work/from_file"
+    run 0 distance -
+    same_bytes "$work/out" "$work/from_file"
+    rm "$work/stdin"
+    # Options that do not apply are refused, saying why; usage errors as for intersect.
+    run 2 distance --arithmetic float "$work/good"
+    contains "$work/err" "--arithmetic does not apply: every distance is certified"
+    run 2 distance --algorithm oracle "$work/good"
+    contains "$work/err" "--algorithm does not apply"
+    run 2 distance --threads -1 "$work/good"
+    run 2 distance "$work/missing.jsonl"
+    contains "$work/err" "cannot open"
+    run 0 distance --help
+    for phrase in '"lower"' '"upper"' '"on_box"' '"on_cylinder"' "null" "margin" "--threads" "--max-line-bytes" \
+        "4 doubles apart" "exactly 0" "no --algorithm or" "EXIT STATUS"; do
+        contains "$work/out" "$phrase"
+    done
+    run 0 --help
+    contains "$work/out" "distance"
+    # A write error exits 3 with its message, as for intersect.
+    if [[ -w /dev/full ]]; then
+        for t in 1 2; do
+            "$exe" distance --threads $t "$work/good" >/dev/full 2>"$work/err"
+            rc=$?
+            [[ $rc == 3 ]] || fail "distance --threads $t >/dev/full: exited $rc, expected 3"
+            contains "$work/err" "boxcyl: cannot write standard output: No space left on device"
+        done
+    fi
+    ;;
+distance_threads)
+    # --threads N: byte for byte the single-threaded output and exit status, in input order, from a
+    # file and from a pipe (several blocks of lines, bad lines among them).
+    n=9000
+    bash "$(dirname "$0")/gen_queries.sh" $n 13 499 >"$work/in"
+    run 1 distance --threads 1 "$work/in"
+    mv "$work/out" "$work/serial"
+    [[ $(wc -l <"$work/serial") == "$n" ]] || fail "got $(wc -l <"$work/serial") output lines for $n input lines"
+    # In input order: output line i answers id i (bad lines name line i).
+    awk '{ id = "\"id\": " NR ","; where = "line " NR ":"; if (index($0, id) != 2 && index($0, where) == 0) { print NR; exit 1 } }' \
+        "$work/serial" || fail "an output line out of order"
+    grep -q '"lower": ' "$work/serial" || fail "no answers"
+    for t in 2 3 0; do
+        run 1 distance --threads $t "$work/in"
+        same_bytes "$work/out" "$work/serial"
+    done
+    cat "$work/in" | "$exe" distance --threads 2 >"$work/out" 2>"$work/err"
+    rc=$?
+    [[ $rc == 1 ]] || fail "piped --threads 2 exited $rc, expected 1"
+    same_bytes "$work/out" "$work/serial"
+    ;;
 readme_commands)
     # Every `echo '<input>' | boxcyl <subcommand>` line of the README (the quick start's intersect, the
-    # grid example) with its output shown under it as `# <output>`: run as written, output compared.
+    # grid and distance examples) with its output shown under it as `# <output>`: run as written, output
+    # compared.
     readme=$examples/../README.md
     awk -v work="$work" '
         pending { if ($0 ~ /^# /) { n++; print substr($0, 3) > (work "/want" n); print sub_ > (work "/sub" n); print in_ > (work "/in" n) } pending = 0 }

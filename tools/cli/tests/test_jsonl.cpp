@@ -9,6 +9,7 @@
 #include <cmath>         // std::signbit, std::sqrt
 #include <csignal>       // SIGTERM, SIGINT
 #include <cstdint>       // bit patterns
+#include <limits>        // the largest double, infinity
 #include <random>        // fixed-seed random doubles
 #include <sstream>       // process_stream on strings
 #include <streambuf>     // inputs cut short by a stop signal, outputs that fail
@@ -18,6 +19,7 @@
 
 #include <nlohmann/json.hpp>  // outputs must be valid JSON (and so valid UTF-8)
 
+#include "distance.hpp"
 #include "io.hpp"
 #include "jsonl_query.hpp"
 #include "options.hpp"
@@ -912,6 +914,153 @@ TEST(JsonlStream, WriteErrorStopsReading) {
         EXPECT_TRUE(out.bad());
         // One line (threads == 1); at most the blocks in flight and the one being filled (threads > 1).
         EXPECT_LE(c.lines, threads == 1 ? 1 : (2 * threads + 2) * stream_block_lines) << threads << " threads";
+    }
+}
+
+// --- `boxcyl distance`: the same lines without "margin", a proved enclosure and a nearest pair ---
+
+// The numbers of a distance line, read back (nlohmann reads each as the nearest double).
+struct DistanceLine {
+    double lower, upper;
+    std::vector<double> on_box, on_cylinder;
+};
+DistanceLine read_distance(const std::string& text) {
+    const nlohmann::json j = nlohmann::json::parse(text);
+    return {j.at("lower").get<double>(), j.at("upper").get<double>(), j.at("on_box").get<std::vector<double>>(),
+            j.at("on_cylinder").get<std::vector<double>>()};
+}
+
+TEST(JsonlDistance, ExactlyOneApartIsEnclosedTightly) {
+    // The face x = 1 of the unit box and the cylinder's side at x = 2: distance exactly 1.
+    const LineAnswer a = answer_distance_line(
+        R"({"id": "one", "box": {"min": [0, 0, 0], "max": [1, 1, 1]}, )"
+        R"("cylinder": {"center": [3, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}})",
+        1);
+    ASSERT_TRUE(a.good) << a.text;
+    EXPECT_EQ(a.text.rfind(R"({"id": "one", "lower": )", 0), 0u) << a.text;
+    const DistanceLine d = read_distance(a.text);
+    EXPECT_LE(d.lower, 1.0);
+    EXPECT_GE(d.upper, 1.0);
+    EXPECT_LE(bits(d.upper) - bits(d.lower), 4u) << a.text;  // at most 4 doubles apart
+    ASSERT_EQ(d.on_box.size(), 3u);
+    ASSERT_EQ(d.on_cylinder.size(), 3u);
+    EXPECT_NEAR(d.on_box[0], 1.0, 1e-12);
+    EXPECT_NEAR(d.on_cylinder[0], 2.0, 1e-12);
+    // An oriented box and a parallelepiped spanning the same unit box: the same enclosure.
+    for (const char* box : {R"({"center": [0.5, 0.5, 0.5], "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "extents": [0.5, 0.5, 0.5]})",
+                            R"({"kind": "parallelepiped", "center": [0.5, 0.5, 0.5], "axes": [[0.5, 0, 0], [0, 0.5, 0], [0, 0, 0.5]], "extents": [1, 1, 1]})"}) {
+        const LineAnswer b = answer_distance_line(std::string(R"({"box": )") + box +
+                                                      R"(, "cylinder": {"center": [3, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}})",
+                                                  2);
+        ASSERT_TRUE(b.good) << b.text;
+        const DistanceLine e = read_distance(b.text);
+        EXPECT_LE(e.lower, 1.0) << b.text;
+        EXPECT_GE(e.upper, 1.0) << b.text;
+        EXPECT_LE(bits(e.upper) - bits(e.lower), 4u) << b.text;
+    }
+}
+
+TEST(JsonlDistance, TouchingIsExactlyZero) {
+    // kCyl's side touches the face x = 1 along a segment.
+    const LineAnswer a = answer_distance_line(R"({"id": 7, )" + kBox + ", " + kCyl + "}", 1);
+    ASSERT_TRUE(a.good) << a.text;
+    EXPECT_EQ(a.text.rfind(R"({"id": 7, "lower": 0, "upper": 0, "on_box": [)", 0), 0u) << a.text;
+    const DistanceLine d = read_distance(a.text);
+    EXPECT_EQ(bits(d.lower), bits(0.0));
+    EXPECT_EQ(bits(d.upper), bits(0.0));
+}
+
+TEST(JsonlDistance, ExactTextAndNumbersThatRoundTrip) {
+    Distance d;
+    d.lower = 0.1;
+    d.upper = 0.30000000000000004;
+    d.on_box = {-0.0, 5e-324, 1.7976931348623157e308};
+    d.on_cylinder = {1, -2.5, 1e23};
+    EXPECT_EQ(format_distance("", d), R"({"lower": 0.1, "upper": 0.30000000000000004, "on_box": [-0, 5e-324, )"
+                                      R"(1.7976931348623157e+308], "on_cylinder": [1, -2.5, 1e+23]})");
+    // Beyond the largest double the upper bound is +inf: null, since JSON has no infinity.
+    d.upper = std::numeric_limits<double>::infinity();
+    const std::string text = format_distance("\"far\"", d);
+    EXPECT_EQ(text.rfind(R"({"id": "far", "lower": 0.1, "upper": null, )", 0), 0u) << text;
+    EXPECT_TRUE(nlohmann::json::parse(text).at("upper").is_null());
+    // Random doubles read back bit for bit.
+    std::mt19937_64 rng(11);
+    for (int i = 0; i < 2000; ++i) {
+        std::uint64_t b = rng();
+        b &= ~(std::uint64_t{1} << 63);
+        if ((b >> 52) == 0x7ff) continue;  // not finite
+        d.lower = std::bit_cast<double>(b);
+        d.upper = std::bit_cast<double>(b + 1);
+        const DistanceLine r = read_distance(format_distance("", d));
+        EXPECT_EQ(bits(r.lower), bits(d.lower));
+        EXPECT_EQ(bits(r.upper), bits(d.upper));
+    }
+}
+
+TEST(JsonlDistance, FarBeyondTheDoubleRangeHasNoUpperBound) {
+    const LineAnswer a = answer_distance_line(
+        R"({"box": {"min": [-1e308, 0, 0], "max": [-1e308, 1, 1]}, )"
+        R"("cylinder": {"center": [1e308, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}})",
+        1);
+    ASSERT_TRUE(a.good) << a.text;
+    const nlohmann::json j = nlohmann::json::parse(a.text);
+    EXPECT_TRUE(j.at("upper").is_null()) << a.text;
+    EXPECT_EQ(j.at("lower").get<double>(), std::numeric_limits<double>::max()) << a.text;
+}
+
+TEST(JsonlDistance, BadLinesAreReportedAsIntersectReportsThem) {
+    const RunOptions opt = make_run_options(default_algorithm, default_arithmetic);
+    for (const std::string& line :
+         {std::string(), std::string("nope"), std::string(R"({"id": "a", "box": {)"), R"({"id": 5, )" + kBox + "}",
+          R"({"id": 3, )" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": -1, "height": 1}})",
+          R"({"id": 3, )" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 0], "radius": 1, "height": 1}})",
+          "{" + kBox + ", " + kCyl + "} x"}) {
+        const LineAnswer a = answer_distance_line(line, 9);
+        EXPECT_FALSE(a.good) << line;
+        EXPECT_EQ(a.text, answer_line(line, 9, opt).text) << line;
+    }
+    EXPECT_EQ(answer_distance_line(R"({"id": 5, )" + kBox + "}", 5).text, R"({"id": 5, "error": "line 5: cylinder: missing"})");
+    // An unknown key is named with the keys a distance line accepts.
+    EXPECT_EQ(answer_distance_line(R"({"id": 4, )" + kBox + ", " + kCyl + R"(, "radius": 1})", 6).text,
+              R"x({"id": 4, "error": "line 6: radius: unknown key (accepted: id, box, cylinder)"})x");
+}
+
+TEST(JsonlDistance, AMarginIsRefusedWhateverItsValue) {
+    for (const char* margin : {"1", "0", "-1", "\"x\""}) {
+        const LineAnswer a = answer_distance_line("{\"id\": 2, " + kBox + ", " + kCyl + ", \"margin\": " + margin + "}", 3);
+        EXPECT_FALSE(a.good);
+        EXPECT_EQ(a.text, R"({"id": 2, "error": "line 3: margin: not a key of distance lines (the answer is the )"
+                          R"x(distance itself; a margin belongs to `boxcyl intersect`)"})x")
+            << margin;
+    }
+}
+
+TEST(JsonlDistance, ThreadedOutputIsByteIdenticalToSerialInInputOrder) {
+    for (const std::size_t n : {std::size_t{0}, std::size_t{40}, 2 * stream_block_lines + 17}) {
+        const std::string input = mixed_input(n, n % 2 == 0);
+        std::istringstream in1(input);
+        std::ostringstream out1;
+        DistanceOptions opt;
+        opt.threads = 1;
+        const StreamCounts c1 = process_distance_stream(in1, out1, opt);
+        const std::vector<std::string> lines = lines_of(out1.str());
+        ASSERT_EQ(lines.size(), n);
+        EXPECT_EQ(c1.lines, n);
+        // In input order: line i answers the query with id i, or names line i.
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::string id = "{\"id\": " + std::to_string(i + 1) + ", ";
+            const std::string where = "line " + std::to_string(i + 1) + ": ";
+            EXPECT_TRUE(lines[i].rfind(id, 0) == 0 || lines[i].find(where) != std::string::npos) << lines[i];
+        }
+        for (const unsigned threads : {2u, 3u}) {
+            std::istringstream in(input);
+            std::ostringstream out;
+            opt.threads = threads;
+            const StreamCounts c = process_distance_stream(in, out, opt);
+            EXPECT_EQ(c.lines, c1.lines);
+            EXPECT_EQ(c.bad, c1.bad);
+            EXPECT_TRUE(out.str() == out1.str()) << n << " lines, " << threads << " threads: output differs";
+        }
     }
 }
 
