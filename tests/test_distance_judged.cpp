@@ -176,6 +176,12 @@ TEST(DistanceJudged, KnownDistances) {
         EXPECT_LE(d.lower, k.value) << describe(k.c);
         EXPECT_GE(d.upper, k.value) << describe(k.c);
     }
+    // The README's example: a corner exactly 5 from the rim, enclosed exactly, with the exact nearest pair.
+    const Distance readme = distance(AlignedBox<double>{{6, 0, 5}, {7, 1, 6}}, Cylinder<double>{{0, 0, 0}, {0, 0, 1}, 3, 2});
+    EXPECT_EQ(readme.lower, 5.0);
+    EXPECT_EQ(readme.upper, 5.0);
+    EXPECT_EQ(readme.on_box, (Vec3<double>{6, 0, 5}));
+    EXPECT_EQ(readme.on_cylinder, (Vec3<double>{3, 0, 1}));
     // A distance beyond the largest double: the enclosure's upper end is +∞.
     const Case far{BoxKind::aligned, AlignedBox<double>{{-0x1p1023, 0, 0}, {-0x1p1023, 0, 0}}, {}, {},
                    Cylinder<double>{{0x1p1023, 0, 0}, {0, 0, 1}, 0, 0}};

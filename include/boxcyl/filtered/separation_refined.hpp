@@ -271,19 +271,23 @@ inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::arra
             if (!(candidate < 2 ? newton(candidate == 0, delta) : gradient_line(delta))) continue;
             // A step leaving the box is cut back to the first bound it crosses (clamping each coordinate
             // alone would leave the step's direction, and no halving of a far step would come back).
+            // The coordinate that meets its bound is put on it exactly and fixed there, so that the
+            // next step moves the others (a thin box's short axis would otherwise cut every step to
+            // nothing).
             double alpha = 1;
+            int hit = -1;
             for (int j = 0; j < nfree; ++j) {
                 const double m = approx(mu[idx[static_cast<std::size_t>(j)]]), d = approx(delta[static_cast<std::size_t>(j)]);
-                if (m + d > 1) alpha = std::min(alpha, (1 - m) / d);
-                else if (m + d < -1) alpha = std::min(alpha, (-1 - m) / d);
+                const double a = m + d > 1 ? (1 - m) / d : m + d < -1 ? (-1 - m) / d : 1.0;
+                if (a < alpha) alpha = a, hit = j;
             }
             if (alpha < 1)
                 for (D& d : delta) d = value(d * D(alpha));
-            // Converged: a step below double-double's resolution of μ changes nothing.
-            if (std::abs(approx(delta[0])) <= 0x1p-104 && std::abs(approx(delta[1])) <= 0x1p-104) {
-                if (candidate == 0 || alpha == 1) return;
-                continue;  // blocked at a bound: the next candidate may move along it
-            }
+            // Converged: a whole step below double-double's resolution of μ changes nothing.
+            const bool tiny = std::abs(approx(delta[0])) <= 0x1p-104 && std::abs(approx(delta[1])) <= 0x1p-104;
+            if (tiny && hit < 0) return;
+            if (tiny && approx(mu[idx[static_cast<std::size_t>(hit)]]) == (approx(delta[static_cast<std::size_t>(hit)]) > 0 ? 1.0 : -1.0))
+                continue;  // already on that bound: the next candidate may move along it
             // A step that raises g is not taken (the model can overshoot far from the minimum or across
             // a region's edge) but halved, a few times. g's rounding cannot see the last steps' gains:
             // only a clear rise rejects a step.
@@ -294,6 +298,7 @@ inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::arra
                     const std::size_t i = idx[static_cast<std::size_t>(j)];
                     D v = value(mu[i] + delta[static_cast<std::size_t>(j)]);
                     if (approx(v) != approx(v)) return;  // NaN (an underflowed quotient): keep the last point
+                    if (j == hit && halving == 0) v = D(approx(delta[static_cast<std::size_t>(j)]) > 0 ? 1.0 : -1.0);
                     if (approx(v) >= 1) v = D(1.0), next_free[i] = false;
                     else if (approx(v) <= -1) v = D(-1.0), next_free[i] = false;
                     next[i] = v;
@@ -517,6 +522,13 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
     }
     if (enough()) return out;
     if (out.upper.hi() - out.lower.lo() > 0x1p-80 * out.upper.hi()) kinks(box, k, mu, out);
+    if (enough()) return out;
+    // The kinks of every edge: the refinement can leave its point inside a face that lies nearly
+    // parallel to a cap, while the nearest point is where one of the face's edges enters the rim's
+    // region. The four vertices of even parity meet each of the 12 edges once.
+    if (out.upper.hi() - out.lower.lo() > 0x1p-80 * out.upper.hi())
+        for (const double x : {-1.0, 1.0})
+            for (const double y : {-1.0, 1.0}) kinks(box, k, {D(x), D(y), D(x * y)}, out);
     return out;
 }
 
