@@ -202,6 +202,8 @@ constexpr const char* text_dark = "#222";
 std::string margin_line() {
     return "fill=\"none\" stroke=\"" + std::string(orange_line) + "\" stroke-width=\"1.6\" stroke-dasharray=\"7,4\"";
 }
+// The nearest pair (boxcyl::distance): purple, a colour no other mark uses.
+constexpr const char* purple = "#7b1fa2";
 
 const char* verdict_colour(const Explanation& e) {
     if (e.what == Case::touching_within_rounding && !e.margin) return "#9a5b00";
@@ -321,6 +323,51 @@ void label(Svg& svg, double x, double y, const std::string& t, const std::string
                              "\" stroke=\"#fff\" stroke-width=\"3\" stroke-linejoin=\"round\" paint-order=\"stroke\"");
 }
 
+// --- the nearest pair, in any view -------------------------------------------------------------
+
+// A world point seen along the axis: the plane coordinates the box vertices take in the main panel.
+Point2 in_plane(const Explanation& e, const Vec3<double>& x) {
+    const Vec3<double> d = x - e.center;
+    return {dot(e.e1, d), dot(e.e2, d)};
+}
+
+// The nearest pair in one view, `to2` the view's mapping of world points to pixels (the one its box
+// vertices take): a dot on each solid (ringed in the solid's colour) and the segment between them.
+// For intersecting solids (upper = 0) the witnesses are near one common point, and only it is drawn:
+// a segment of rounding length would show nothing, and the point says where the solids meet.
+template <class To2>
+void nearest_marks(Svg& svg, const Explanation& e, const std::string& id, const To2& to2) {
+    if (!e.nearest) return;
+    const auto a = to2(e.nearest->on_box), b = to2(e.nearest->on_cylinder);
+    // Witnesses whose pixels overflow (coordinates near the double range) have no place to be drawn.
+    for (double v : {a.first, a.second, b.first, b.second})
+        if (!std::isfinite(v)) return;
+    const auto mark = [&](const std::pair<double, double>& p, const char* ring) {
+        svg.circle(p.first, p.second, 3.5,
+                   "fill=\"" + std::string(purple) + "\" stroke=\"" + ring + "\" stroke-width=\"1.2\"");
+    };
+    svg.raw("<g id=\"" + id + "\" class=\"nearest\">\n");
+    if (e.nearest->upper == 0) {
+        mark(a, "#fff");
+    } else {
+        svg.line(a.first, a.second, b.first, b.second, "stroke=\"" + std::string(purple) + "\" stroke-width=\"1.5\"");
+        mark(a, blue_line);
+        mark(b, orange_line);
+    }
+    svg.raw("</g>\n");
+}
+
+// The one label of the nearest pair, with every digit the bounds need (they are a few ulps apart).
+std::string nearest_text(const Distance& d) {
+    if (d.upper == 0)
+        return "Nearest points, distance 0: the solids intersect; purple marks a common point (boxcyl::distance).";
+    if (!std::isfinite(d.upper))
+        return "Nearest points, distance at least " + num_exact(d.lower) +
+               ", beyond the double range (boxcyl::distance).";
+    return "Nearest points, distance in [" + num_exact(d.lower) + ", " + num_exact(d.upper) +
+           "] (boxcyl::distance, proved).";
+}
+
 void main_panel(Svg& svg, const Explanation& e, const Rect& r) {
     panel(svg, r, "Looking along the cylinder's axis (the plane ⊥ axis through its centre)");
     svg.raw("<g clip-path=\"url(#clip-main)\">\n");
@@ -332,6 +379,11 @@ void main_panel(Svg& svg, const Explanation& e, const Rect& r) {
     for (const Point2& p : e.polygon) ext.add(p.x, p.y);
     if (ext.width() == 0 && ext.height() == 0)
         for (const Point2& p : e.box_shadow) ext.add(p.x, p.y);
+    if (e.nearest)  // the nearest pair in sight (the box's may lie beyond the slab)
+        for (const Vec3<double>& w : {e.nearest->on_box, e.nearest->on_cylinder}) {
+            const Point2 p = in_plane(e, w);
+            ext.add(p.x, p.y);
+        }
     // Square extent so that the picture sits centred.
     const double half = std::max(ext.width(), ext.height()) / 2;
     const double ca = (ext.amin + ext.amax) / 2, cb = (ext.bmin + ext.bmax) / 2;
@@ -433,6 +485,10 @@ void main_panel(Svg& svg, const Explanation& e, const Rect& r) {
                   anchor(sx), 13, false, red, lo, hi);
         svg.raw("</g>\n");
     }
+    nearest_marks(svg, e, "nearest", [&](const Vec3<double>& w) {
+        const Point2 p = in_plane(e, w);
+        return std::pair<double, double>{m.x(p.x), m.y(p.y)};
+    });
     svg.raw("</g>\n");
 
     // Notes under the caption for the degenerate pictures.
@@ -545,6 +601,8 @@ void ortho_views(Svg& svg, const Explanation& e, const std::array<Rect, 3>& rect
     for (std::size_t k = 0; k < views.size(); ++k) {
         const View& v = views[k];
         for (const auto& p : e.box_vertices) ext[k].add(p[v.a], p[v.b]);
+        if (e.nearest)
+            for (const Vec3<double>& w : {e.nearest->on_box, e.nearest->on_cylinder}) ext[k].add(w[v.a], w[v.b]);
         for (const auto* rim : {&near_a, &near_b})
             for (const auto& p : *rim) {
                 ext[k].add(p[v.a] - margin, p[v.b] - margin);
@@ -620,6 +678,7 @@ void ortho_views(Svg& svg, const Explanation& e, const std::array<Rect, 3>& rect
         svg.line(c0.first, c0.second, c1.first, c1.second, "stroke=\"#000\" stroke-width=\"1\" stroke-dasharray=\"4,3\"");
         const auto cc = to2(e.center);
         svg.circle(cc.first, cc.second, 2, "fill=\"#000\"");
+        nearest_marks(svg, e, std::string(v.id) + "-nearest", to2);  // ids stay unique: one group per view
         svg.raw("</g>\n</g>\n");
     }
 }
@@ -656,6 +715,14 @@ void legend(Svg& svg, const Rect& r, const Explanation& e) {
         entry("<rect x=\"" + px(x) + "\" y=\"" + px(y - 11) + "\" width=\"24\" height=\"14\" rx=\"5\" " +
                   margin_line() + "/>\n",
               {"the cylinder grown by the margin: every point", "within it of the cylinder (the verdict's solid)"});
+    if (e.nearest) {
+        const std::string ring = "\" stroke-width=\"1.2\"/>\n";
+        entry("<line x1=\"" + px(x + 3) + "\" y1=\"" + px(y - 4) + "\" x2=\"" + px(x + 21) + "\" y2=\"" + px(y - 4) +
+                  "\" stroke=\"" + purple + "\" stroke-width=\"1.5\"/>\n<circle cx=\"" + px(x + 3) + "\" cy=\"" +
+                  px(y - 4) + "\" r=\"3.5\" fill=\"" + purple + "\" stroke=\"" + blue_line + ring + "<circle cx=\"" +
+                  px(x + 21) + "\" cy=\"" + px(y - 4) + "\" r=\"3.5\" fill=\"" + purple + "\" stroke=\"" + orange_line + ring,
+              {"nearest points of the box and the cylinder", "(boxcyl::distance), and the segment joining them"});
+    }
     svg.raw("</g>\n");
 }
 
@@ -683,8 +750,8 @@ std::vector<std::string> input_lines(const Query& q) {
 }
 
 std::string render(const Explanation& e, const std::string& label, const std::vector<std::string>& inputs) {
-    // A margin adds a legend entry (and a verdict line): the page grows by its height.
-    const double grow = e.margin ? 37 : 0;
+    // A margin (and a verdict line) and the nearest pair each add a legend entry: the page grows by its height.
+    const double grow = (e.margin ? 37 : 0) + (e.nearest ? 37 : 0);
     const double W = 1040, H = 950 + grow;
     Svg svg;
     svg.raw("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
@@ -735,6 +802,11 @@ std::string render(const Explanation& e, const std::string& label, const std::ve
          }) {
         svg.text(24, ty, l, "font-size=\"12\" fill=\"#444\"");
         ty += 16;
+    }
+    if (e.nearest) {  // smaller where the bounds need many digits, so that it stays left of the legend
+        const std::string t = nearest_text(*e.nearest);
+        const double size = std::min(12.0, 12 * 600 / text_width(t, 12, false));
+        svg.text(24, ty, t, "font-size=\"" + px(size) + "\" fill=\"" + std::string(purple) + "\"");
     }
     svg.raw("</svg>\n");
     return svg.s;
@@ -801,6 +873,8 @@ void add_explain_command(CLI::App& app, ExplainCommand& cmd) {
         "precision and says so when the two differ (inputs within rounding of touching).\n\n"
         "With a \"margin\": M key the verdict is whether the box is within distance M of the cylinder\n"
         "(exact, as `intersect` answers it), and the cylinder grown by M is drawn dashed.\n\n"
+        "The nearest points boxcyl::distance gives (as `boxcyl distance` answers) are marked in every view,\n"
+        "with the segment between them, and the distance's proved bounds are written under the picture.\n\n"
         "With --line N only the first N lines of the input are read.\n\n"
         "EXIT STATUS\n"
         "  0  the picture was written\n"
@@ -910,6 +984,8 @@ int run_explain(const ExplainCommand& cmd, std::istream& in, std::ostream& out, 
     const bool intersects = run_query(plain, QueryOptions{});
     Explanation e = std::visit([&](const auto& box) { return explain::compute(box, q.cylinder, intersects); }, q.box);
     if (q.margin) e = explain::with_margin(e, *q.margin, run_query(q, QueryOptions{}));
+    // The nearest pair, as `boxcyl distance` answers it; not computed for a picture that cannot show it.
+    if (e.drawable) e = explain::with_nearest(e, run_distance_query(q));
     const std::string svg = render(e, p.id, input_lines(q));
 
     if (!cmd.output.empty()) return write_file(cmd.output, svg, err);

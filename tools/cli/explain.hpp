@@ -22,10 +22,12 @@ namespace boxcyl::cli {
 std::string render_svg(const explain::Explanation& e, const std::string& label, const std::vector<std::string>& inputs = {});
 
 // The SVG element ids a picture carries (the tests look for them), by what they show; "margin" (the
-// cylinder grown by the margin, seen along the axis) only when the query has a margin.
+// cylinder grown by the margin, seen along the axis) only when the query has a margin; "nearest" (the
+// nearest pair seen along the axis; "view-top-nearest" etc. in the other views, all of class
+// "nearest") only when the explanation has it (with_nearest) and the view's pixels of the pair are finite.
 inline constexpr const char* svg_ids[] = {
     "verdict", "polygon", "disk", "axis-point", "closest", "gap", "box-shadow", "axial", "legend",
-    "view-top", "view-front", "view-side", "margin",
+    "view-top", "view-front", "view-side", "margin", "nearest",
 };
 
 // The `explain` subcommand's command-line state.

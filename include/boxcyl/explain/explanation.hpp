@@ -14,6 +14,9 @@
 // With a margin m the question is the clearance one (boxcyl::within_distance: is the box within
 // distance m of the cylinder?), whose exact answer becomes the verdict; the construction above still
 // explains whether the box meets the cylinder itself, and the picture adds the cylinder grown by m.
+//
+// With the distance question's answer (boxcyl::distance) the picture also marks its nearest pair: the
+// proved bounds of the distance and the two approximate witness points, one on each solid.
 #pragma once
 
 #include <algorithm>  // std::min, std::max
@@ -26,12 +29,14 @@
 #include <vector>   // point sets
 
 #include "boxcyl/algo/convex_hull.hpp"  // hull2d::monotone_chain, as_parallelepiped
+#include "boxcyl/distance_types.hpp"   // the nearest pair
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/reduce.hpp"  // to_unit
 #include "boxcyl/geometry/vec3.hpp"
 #if defined(BOXCYL_HAS_EXACT)
 #include "boxcyl/clearance.hpp"  // the exact verdict with a margin
+#include "boxcyl/distance.hpp"   // the nearest pair
 #include "boxcyl/query.hpp"      // the exact verdict
 #endif
 
@@ -90,6 +95,10 @@ struct Explanation {
     // within_distance. exact_intersects and `what` still describe the cylinder itself.
     std::optional<double> margin;
     bool exact_within = false;
+
+    // The distance question's answer, when given (with_nearest) and the picture is drawable: the proved
+    // enclosure [lower, upper] of the distance (both 0 when the solids intersect) and the nearest pair.
+    std::optional<Distance> nearest;
 
     // The picture's verdict: within the margin when one is given, else intersects.
     bool verdict() const { return margin ? exact_within : exact_intersects; }
@@ -259,6 +268,13 @@ inline Explanation with_margin(Explanation e, double margin, bool exact_within) 
     return e;
 }
 
+// The nearest pair on top of a picture: `d` must be boxcyl::distance(box, cyl) for the picture's
+// inputs. Kept only where the picture is drawable: a picture that shows nothing cannot mark points.
+inline Explanation with_nearest(Explanation e, const Distance& d) {
+    if (e.drawable) e.nearest = d;
+    return e;
+}
+
 #if defined(BOXCYL_HAS_EXACT)
 // The same with the exact verdict of the default query.
 template <class Box>
@@ -270,6 +286,13 @@ Explanation compute(const Box& box, const Cylinder<double>& cyl) {
 template <class Box>
 Explanation compute_within(const Box& box, const Cylinder<double>& cyl, double margin) {
     return with_margin(compute(box, cyl), margin, boxcyl::within_distance(box, cyl, margin));
+}
+
+// The picture with the nearest pair: the exact verdict and boxcyl::distance computed.
+template <class Box>
+Explanation compute_nearest(const Box& box, const Cylinder<double>& cyl) {
+    const Explanation e = compute(box, cyl);
+    return e.drawable ? with_nearest(e, boxcyl::distance(box, cyl)) : e;
 }
 #endif
 

@@ -60,7 +60,7 @@ examples)
         run 0 explain --line "$i" "$examples/queries.jsonl" -o "$work/$i.svg"
         [[ -s $work/out ]] && fail "line $i: -o given, yet standard output not empty"
         well_formed "$work/$i.svg" || fail "line $i: not well-formed XML"
-        for id in verdict disk axis-point box-shadow axial legend view-top view-front view-side; do
+        for id in verdict disk axis-point box-shadow axial legend view-top view-front view-side nearest; do
             contains "$work/$i.svg" "id=\"$id\""
         done
         answer=$(sed -n "${i}p" "$work/answers")
@@ -240,6 +240,32 @@ margin)
     with_margin '"1"' >"$work/stdin"
     run 1 explain
     contains "$work/err" "margin: expected a number"
+    ;;
+nearest)
+    # The nearest pair of boxcyl::distance, marked in every view with the bounds `boxcyl distance`
+    # gives: a unit cube 1 from a vertical cylinder of radius 1.
+    far='{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "cylinder": {"center": [3, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}}'
+    printf '%s\n' "$far" >"$work/stdin"
+    run 0 distance
+    lower=$(sed -n 's/.*"lower": \([^,]*\),.*/\1/p' "$work/out")
+    upper=$(sed -n 's/.*"upper": \([^,]*\),.*/\1/p' "$work/out")
+    [[ -n $lower && -n $upper ]] || fail "boxcyl distance: $(cat "$work/out")"
+    run 0 explain -o "$work/far.svg"
+    well_formed "$work/far.svg" || fail "nearest: not well-formed XML"
+    for id in nearest view-top-nearest view-front-nearest view-side-nearest; do
+        contains "$work/far.svg" "<g id=\"$id\" class=\"nearest\">"
+    done
+    contains "$work/far.svg" ">Nearest points, distance in [$lower, $upper] (boxcyl::distance, proved).<"
+    contains "$work/far.svg" ">Nearest points, distance in [1"
+    # Touching solids: one common point in each view, no segment.
+    printf '%s\n' "${query/\"radius\": 0.4375/\"radius\": 0.5}" >"$work/stdin"
+    run 0 explain -o "$work/touching.svg"
+    well_formed "$work/touching.svg" || fail "touching: not well-formed XML"
+    contains "$work/touching.svg" ">Intersects (touching)<"
+    contains "$work/touching.svg" ">Nearest points, distance 0: the solids intersect;"
+    group=$(sed -n '/<g id="nearest"/,/<\/g>/p' "$work/touching.svg")
+    [[ $(grep -c '<circle' <<<"$group") == 1 ]] || fail "touching: not one common point: $group"
+    grep -qF '<line' <<<"$group" && fail "touching: a segment drawn: $group"
     ;;
 extreme)
     # Coordinates near the double range: distances right or "more than" the range, never NaN.

@@ -7,6 +7,8 @@
 #include <algorithm>  // std::max, std::count
 #include <array>      // frames
 #include <cmath>      // std::fabs, std::ldexp, std::nextafter
+#include <cstdio>     // std::snprintf
+#include <cstdlib>    // std::strtod
 #include <string>
 #include <vector>
 
@@ -234,7 +236,7 @@ TEST(ExplainRandom, NearTouchingPairsAreFlaggedWhenThePictureCannotTell) {
 // --- the SVG writer ----------------------------------------------------------------------------
 
 TEST(ExplainSvg, CarriesEveryElementAndTheVerdict) {
-    const Explanation e = explain::compute(unit_box(), Cylinder<double>{{1.5, 0.5, 0.5}, {0, 0, 1}, 0.4375, 1});
+    const Explanation e = explain::compute_nearest(unit_box(), Cylinder<double>{{1.5, 0.5, 0.5}, {0, 0, 1}, 0.4375, 1});
     const std::string svg = cli::render_svg(e, "\"gap-side-face\"");
     EXPECT_EQ(svg.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
     EXPECT_EQ(svg.substr(svg.size() - 7), "</svg>\n");
@@ -259,7 +261,8 @@ TEST(ExplainSvg, MarginIsTheVerdictAndIsDrawn) {
     EXPECT_TRUE(at.verdict());
     EXPECT_EQ(at.what, Case::gap);  // the picture of the cylinder itself is unchanged
     const std::string svg = cli::render_svg(at, "\"m\"");
-    for (const char* id : cli::svg_ids) EXPECT_NE(svg.find("id=\"" + std::string(id) + "\""), std::string::npos) << id;
+    for (const std::string id : cli::svg_ids)
+        EXPECT_EQ(svg.find("id=\"" + id + "\"") != std::string::npos, id != "nearest") << id;  // no distance asked
     EXPECT_NE(svg.find("<title>boxcyl explain: query &quot;m&quot;: Within distance 0.0625</title>"), std::string::npos);
     EXPECT_NE(svg.find(">Within distance 0.0625<"), std::string::npos);
     EXPECT_NE(svg.find("it meets the cylinder grown by 0.0625 (dashed)"), std::string::npos);
@@ -296,6 +299,110 @@ TEST(ExplainSvg, MarginReachesARim) {
     EXPECT_EQ(at.what, Case::outside_slab);
     EXPECT_NE(cli::render_svg(at, "").find(">Within distance 0.625<"), std::string::npos);
     EXPECT_FALSE(explain::compute_within(unit_box(), c, std::nextafter(0.625, 0.0)).verdict());
+}
+
+// The text of one element: from `from` (e.g. "<g id=\"nearest\"") to the next "</g>".
+std::string group(const std::string& svg, const std::string& from) {
+    const auto at = svg.find(from);
+    if (at == std::string::npos) return "";
+    return svg.substr(at, svg.find("</g>", at) - at);
+}
+
+// The fewest digits (6 to 17) that read back as x, as explain prints exact numbers.
+std::string round_trip(double x) {
+    char buf[40];
+    for (int d = 6; d <= 17; ++d) {
+        std::snprintf(buf, sizeof buf, "%.*g", d, x);
+        if (std::strtod(buf, nullptr) == x) break;
+    }
+    return buf;
+}
+
+// A number attribute of the first element `tag` (e.g. "<line") in `text`.
+double attribute(const std::string& text, const std::string& tag, const std::string& name) {
+    const auto at = text.find(tag);
+    if (at == std::string::npos) return -1;
+    const auto v = text.find(" " + name + "=\"", at) + name.size() + 3;
+    return std::stod(text.substr(v, text.find('"', v) - v));
+}
+
+// The nearest pair of boxcyl::distance: a unit cube and a vertical cylinder of radius 1 whose axis is
+// 2.5 from the face x = 1, so 1 apart; the pair lies on y = 0.5, at x = 1 on the box and x = 2 on the
+// cylinder, and is marked in every view with the bounds written once.
+TEST(ExplainSvg, NearestPairIsMarkedInEveryView) {
+    const Cylinder<double> c{{3, 0.5, 0.5}, {0, 0, 1}, 1, 1};
+    const Explanation e = explain::compute_nearest(unit_box(), c);
+    ASSERT_TRUE(e.nearest);
+    const Distance d = boxcyl::distance(unit_box(), c);
+    EXPECT_EQ(e.nearest->lower, d.lower);
+    EXPECT_EQ(e.nearest->upper, d.upper);
+    EXPECT_LE(e.nearest->lower, 1.0);
+    EXPECT_GE(e.nearest->upper, 1.0);
+    EXPECT_NEAR(e.nearest->on_box[0], 1, 1e-12);
+    EXPECT_NEAR(e.nearest->on_cylinder[0], 2, 1e-12);
+    EXPECT_NEAR(e.nearest->on_box[1], 0.5, 1e-12);
+    const std::string svg = cli::render_svg(e, "");
+    for (const std::string id : cli::svg_ids)
+        EXPECT_EQ(svg.find("id=\"" + id + "\"") != std::string::npos, id != "margin") << id;
+    // The bounds, once, with the digits that read back as the doubles.
+    const std::string text =
+        ">Nearest points, distance in [" + round_trip(d.lower) + ", " + round_trip(d.upper) + "] (boxcyl::distance";
+    EXPECT_NE(svg.find(text), std::string::npos) << text;
+    EXPECT_NE(svg.find(">Nearest points, distance in [1"), std::string::npos);
+    EXPECT_EQ(svg.find("Nearest points, distance in ["), svg.rfind("Nearest points, distance in ["));
+    EXPECT_NE(svg.find("nearest points of the box and the cylinder"), std::string::npos);  // the legend
+    // Seen along the axis (x right, y up) and from the top, the segment runs right from the box to the
+    // cylinder at one height; from the front (x, z), right too. A dot on each end.
+    for (const char* id : {"<g id=\"nearest\"", "<g id=\"view-top-nearest\"", "<g id=\"view-front-nearest\""}) {
+        const std::string g = group(svg, id);
+        ASSERT_FALSE(g.empty()) << id;
+        EXPECT_NE(g.find("class=\"nearest\""), std::string::npos) << id;
+        EXPECT_LT(attribute(g, "<line", "x1"), attribute(g, "<line", "x2")) << id;
+        EXPECT_EQ(std::count(g.begin(), g.end(), '<') - 1, 3) << id;  // a line and two circles
+    }
+    for (const char* id : {"<g id=\"nearest\"", "<g id=\"view-top-nearest\""}) {
+        const std::string g = group(svg, id);
+        EXPECT_EQ(attribute(g, "<line", "y1"), attribute(g, "<line", "y2")) << id;
+    }
+    // From the side (y, z) the box point hides the cylinder point: both at y = 0.5.
+    const std::string side = group(svg, "<g id=\"view-side-nearest\"");
+    EXPECT_NEAR(attribute(side, "<line", "x1"), attribute(side, "<line", "x2"), 0.01);
+}
+
+// Intersecting solids: the distance is [0, 0] and the witnesses are near one common point, so only
+// that point is drawn (no segment), and the text says they intersect.
+TEST(ExplainSvg, NearestPairOfIntersectingSolidsIsOneCommonPoint) {
+    const Cylinder<double> touching{{1.5, 0.5, 0.5}, {0, 0, 1}, 0.5, 1};  // the side touches the face x = 1
+    const Explanation e = explain::compute_nearest(unit_box(), touching);
+    ASSERT_TRUE(e.nearest);
+    EXPECT_EQ(e.nearest->lower, 0.0);
+    EXPECT_EQ(e.nearest->upper, 0.0);
+    EXPECT_NEAR(e.nearest->on_box[0], 1, 1e-9);  // where they touch
+    const std::string svg = cli::render_svg(e, "");
+    EXPECT_NE(svg.find(">Nearest points, distance 0: the solids intersect; purple marks a common point"),
+              std::string::npos);
+    for (const char* id : {"<g id=\"nearest\"", "<g id=\"view-top-nearest\"", "<g id=\"view-front-nearest\"",
+                           "<g id=\"view-side-nearest\""}) {
+        const std::string g = group(svg, id);
+        ASSERT_FALSE(g.empty()) << id;
+        EXPECT_EQ(g.find("<line"), std::string::npos) << id;
+        EXPECT_EQ(std::count(g.begin(), g.end(), '<') - 1, 1) << id;  // one circle
+    }
+}
+
+// No distance asked (compute) or a picture that shows nothing: no nearest pair.
+TEST(ExplainSvg, NearestPairOnlyWhenAskedAndDrawable) {
+    const Cylinder<double> c{{3, 0.5, 0.5}, {0, 0, 1}, 1, 1};
+    const std::string plain = cli::render_svg(explain::compute(unit_box(), c), "");
+    EXPECT_EQ(plain.find("nearest"), std::string::npos);
+    EXPECT_EQ(plain.find("Nearest"), std::string::npos);
+    const AlignedBox<double> huge{{-1.7e308, 0, 0}, {1.7e308, 1, 1}};
+    const Cylinder<double> far{{1.7e308, 0.5, 0.5}, {1, 1, 0}, 1, 1};
+    const Explanation e = explain::compute_nearest(huge, far);
+    EXPECT_FALSE(e.drawable);
+    EXPECT_FALSE(e.nearest);
+    EXPECT_FALSE(explain::with_nearest(e, Distance{1, 1, {}, {}}).nearest);
+    EXPECT_EQ(cli::render_svg(e, "").find("nearest"), std::string::npos);
 }
 
 TEST(ExplainSvg, VerdictTitles) {
