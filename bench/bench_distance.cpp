@@ -6,9 +6,11 @@
 //                  far below the shapes
 //   georeferenced: 1024 pairs of the georeferenced profile (coordinates of 1e5–1e7, shapes of 1e-3–10)
 // Benchmarks: boxcyl::distance on each set, and the exact intersects() on the same pairs (the yes/no
-// question's cost, for scale). Built with -DBOXCYL_BENCH_PEERS=ON, also FCL's distance() (both solvers)
+// question's cost, for scale); batch::distance of the random set's oriented boxes against one
+// cylinder over 1 and 2 threads (wall time). Built with -DBOXCYL_BENCH_PEERS=ON, also FCL's distance() (both solvers)
 // and Bullet's two GJK distances (peers.hpp), timed in the same run.
-// The table that follows the output: time per query and its ratio to boxcyl::distance's; for boxcyl
+// The table that follows the output: time per query and its ratio to boxcyl::distance's (the batch
+// rows: to one thread's); for boxcyl
 // the width of its enclosures (how many are one double wide; the widest); for each peer, how many of
 // its distances fall outside boxcyl's proved enclosure, and by how much (relative to the distance:
 // median and largest), and how many it gave no distance for.
@@ -25,6 +27,7 @@
 #include <string>     // names
 #include <vector>     // the sets
 
+#include "boxcyl/batch.hpp"
 #include "boxcyl/distance.hpp"
 #include "support/cases.hpp"
 #ifdef BOXCYL_BENCH_PEERS
@@ -178,7 +181,8 @@ void print_summary() {
         if (ns < 0) continue;
         double base = -1;
         for (const Row& b : g_rows)
-            if (b.set == r.set && b.name.rfind("BM_distance_", 0) == 0) base = median(b.ns);
+            if (b.set == r.set && (b.name.rfind("BM_distance_", 0) == 0 || b.name.find("threads:1") != std::string::npos))
+                base = median(b.ns);  // the batch rows: the ratio to one thread
         std::printf("| %s (%zu) | %s | %s | %.3g× | %s |\n", r.set.c_str(), r.queries, r.label.c_str(), ns_text(ns).c_str(),
                     base > 0 ? ns / base : 0.0, r.quality.c_str());
     }
@@ -228,6 +232,25 @@ int main(int argc, char** argv) {
                               n, {}, false, quality(s, *p)});
         }
 #endif
+    }
+    // The batch form on the random set's boxes (their own cylinders differ: one cylinder, the first
+    // case's, for all), over 1 and 2 threads: how it scales.
+    static std::vector<OrientedBox<double>> batch_boxes;
+    static Cylinder<double> batch_cylinder = sets()[0].cases[0].cylinder;
+    for (const Case& c : sets()[0].cases)
+        if (c.kind == boxcyl::testing::BoxKind::oriented) batch_boxes.push_back(c.oriented);
+    for (const unsigned threads : {1u, 2u}) {
+        const std::string name = "BM_batch_distance_random/threads:" + std::to_string(threads);
+        benchmark::RegisterBenchmark(name.c_str(), [threads](benchmark::State& state) {
+            std::vector<Distance> out(batch_boxes.size());
+            for (auto _ : state)
+                batch::distance(batch_cylinder, std::span<const OrientedBox<double>>(batch_boxes), std::span<Distance>(out),
+                                batch::Options{threads});
+            benchmark::DoNotOptimize(out.data());
+            set_ns_per_query(state, batch_boxes.size());
+        })->UseRealTime();
+        g_rows.push_back({"batch", name, "boxcyl batch::distance, oriented boxes, " + std::to_string(threads) + " thread(s), wall time",
+                          batch_boxes.size(), {}, false, "—"});
     }
     SummaryReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
