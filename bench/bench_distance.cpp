@@ -249,7 +249,7 @@ int main(int argc, char** argv) {
             benchmark::DoNotOptimize(out.data());
             set_ns_per_query(state, batch_boxes.size());
         })->UseRealTime();
-        g_rows.push_back({"batch", name, "boxcyl batch::distance, oriented boxes, " + std::to_string(threads) + " thread(s), wall time",
+        g_rows.push_back({"batch", name + "/real_time", "boxcyl batch::distance, oriented boxes, " + std::to_string(threads) + " thread(s), wall time",
                           batch_boxes.size(), {}, false, "—"});
     }
     SummaryReporter reporter;
