@@ -281,7 +281,10 @@ std::string check_keys(const json& obj, const std::string& field, std::initializ
         if (known) continue;
         // A key is any JSON string: a long one is named by its start.
         std::string shown = key.size() > 64 ? key.substr(0, 64) + "..." : key;
-        std::string m = (field.empty() ? shown : field + "." + shown) + ": unknown key";
+        std::string m = field;
+        if (!m.empty()) m += '.';
+        m += shown;
+        m += ": unknown key";
         if (const std::string_view guess = likely_key(key, accepted); !guess.empty()) {
             m += "; did you mean \"" + std::string(guess) + "\"";
             if (guess == "height" && ascii_lower(key).find("half") != std::string::npos)
