@@ -2,19 +2,20 @@
 // answer is an enclosure [lower, upper] PROVED to hold the exact Euclidean distance between the closed
 // solids (each double the rational it denotes, the axis D/|D| exact), in every rounding mode, and
 // narrow: upper − lower ≤ 4 ulp(upper), subnormal results included (in practice one or two ulps). It is
-// [0, 0] exactly when they intersect. Every box kind; float inputs are widened exactly. With it come
-// two witness points, one on each solid, whose distance lies in the enclosure up to their rounding.
+// [0, 0] exactly when they intersect. Every box kind; float inputs are widened exactly. With it comes
+// a nearest pair, one point near each solid: approximate, not proved (distance_types.hpp says how near).
 // Invalid input throws std::invalid_argument naming the field (validate()); distance_unchecked()
 // skips that check. Needs the exact backend (boxcyl::exact).
 //
 // How (docs/distance.md has the argument):
 //   1. The exact intersection query: a hit is [0, 0].
-//   2. Certified bounds from an approximate closest pair (filtered/separation.hpp), refined by Newton's
+//   2. Both shapes scaled by a power of two, exactly, to lengths near 1.
+//   3. Certified bounds from an approximate closest pair (filtered/separation.hpp), refined by Newton's
 //      method and evaluated in double-double with proved error bounds
 //      (filtered/separation_refined.hpp): the upper bound is a box point's distance to the cylinder,
 //      the lower one the gap between two supporting planes. Each double-double enclosure is then
 //      rounded outward to the nearest doubles it proves.
-//   3. Whatever is still wider than 4 ulps (directed rounding modes, where the double-double stage
+//   4. Whatever is still wider than 4 doubles (directed rounding modes, where the double-double stage
 //      declines; distances the refinement does not pin down) is bisected over the doubles with the
 //      exact clearance query: within_distance(box, cyl, m) true makes m an upper bound, false a lower
 //      one. Each bisection step halves the count of doubles in between, so at most 64 steps remain.

@@ -81,7 +81,7 @@ Stats header_distance_within(const Cylinder<double>& c, const Boxes& b, double m
 
 #include "boxcyl/compiled.hpp"
 
-namespace boxcyl::batch::compiled {
+namespace boxcyl::batch::inline compiled {  // inline, as compiled.hpp declares it
 
 bool available(Kernel k) { return header_available(k); }
 

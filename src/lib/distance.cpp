@@ -4,7 +4,7 @@
 
 #include "boxcyl/compiled.hpp"
 
-namespace boxcyl::compiled {
+namespace boxcyl::inline compiled {  // inline, as compiled.hpp declares it
 
 namespace {
 // The templates by name (a plain call here would find the compiled functions themselves).

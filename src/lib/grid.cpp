@@ -33,7 +33,7 @@ std::vector<boxcyl::CellIndex> header_cells_within(const boxcyl::Grid& g, const 
 
 #include "boxcyl/compiled.hpp"
 
-namespace boxcyl::compiled {
+namespace boxcyl::inline compiled {  // inline, as compiled.hpp declares it
 
 void for_each_cell_erased(const Grid& g, const Cylinder<double>& c, CellCallback f, void* context,
                           GridStats* stats) {

@@ -4,7 +4,7 @@
 
 #include "boxcyl/compiled.hpp"
 
-namespace boxcyl::compiled {
+namespace boxcyl::inline compiled {  // inline, as compiled.hpp declares it
 
 #define BOXCYL_COMPILED_QUERY(Box, T)                                                                          \
     bool intersects(const Box<T>& box, const Cylinder<T>& cyl, const QueryOptions& opt) {                     \
