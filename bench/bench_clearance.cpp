@@ -28,6 +28,7 @@
 #include <vector>     // the sets
 
 #include "boxcyl/clearance.hpp"
+#include "summary.hpp"
 #include "support/cases.hpp"
 #ifdef BOXCYL_BENCH_PEERS
 #include "peers.hpp"
@@ -93,10 +94,7 @@ const std::vector<Query>& at_margin_set() {
     return s;
 }
 
-void set_ns_per_query(benchmark::State& state, std::size_t queries) {
-    state.counters["ns_per_query"] = benchmark::Counter(
-        static_cast<double>(queries) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-}
+using boxcyl::bench::set_ns_per_query;
 
 template <class F>
 void run(benchmark::State& state, const std::vector<Query>& set, F&& f) {
@@ -129,13 +127,11 @@ struct Row {
     long wrong = -1, false_pos = 0, false_neg = 0;  // against within_distance; -1: not the same question
     long small = 0, small_wrong = 0;  // queries below bench::kSmallSize, and the wrong answers among them
     std::size_t queries = 0;
-    std::vector<double> ns;  // ns_per_query of each repetition, or the median aggregate alone
-    bool median_aggregate = false;
 };
 std::vector<Row> g_rows;
 
 Row& add_row(std::string set, std::string name, std::string label, std::size_t queries) {
-    g_rows.push_back(Row{std::move(set), std::move(name), std::move(label), -1, 0, 0, 0, 0, queries, {}, false});
+    g_rows.push_back(Row{std::move(set), std::move(name), std::move(label), -1, 0, 0, 0, 0, queries});
     return g_rows.back();
 }
 
@@ -180,51 +176,18 @@ void add_peers(const std::string& set_name, const std::vector<Query>& set) {
 }
 #endif
 
-class SummaryReporter : public benchmark::ConsoleReporter {
-public:
-    void ReportRuns(const std::vector<Run>& runs) override {
-        ConsoleReporter::ReportRuns(runs);
-        for (const Run& run : runs) {
-            const auto c = run.counters.find("ns_per_query");
-            if (run.error_occurred || c == run.counters.end()) continue;
-            for (Row& r : g_rows) {
-                if (r.name != run.run_name.str() || r.median_aggregate) continue;
-                if (run.run_type == Run::RT_Aggregate && run.aggregate_name == "median") {
-                    r.ns = {c->second.value};
-                    r.median_aggregate = true;
-                } else if (run.run_type == Run::RT_Iteration) {
-                    r.ns.push_back(c->second.value);
-                }
-            }
-        }
-    }
-};
-
-double median(std::vector<double> v) {
-    if (v.empty()) return -1;
-    std::sort(v.begin(), v.end());
-    const std::size_t k = v.size() / 2;
-    return v.size() % 2 ? v[k] : (v[k - 1] + v[k]) / 2;
-}
-
-std::string ns_text(double ns) {
-    char b[32];
-    if (ns >= 1e6) std::snprintf(b, sizeof b, "%.2f ms", ns / 1e6);
-    else if (ns >= 1e4) std::snprintf(b, sizeof b, "%.1f µs", ns / 1e3);
-    else std::snprintf(b, sizeof b, "%.0f ns", ns);
-    return b;
-}
+boxcyl::bench::TimingReporter g_reporter;
 
 void print_summary() {
     std::printf("\n| set | query | time per query | ratio to within_distance | wrong vs within_distance "
                 "(false yes, false no) | wrong among the small queries |\n| --- | --- | ---: | ---: | ---: | ---: |\n");
     for (const Row& r : g_rows) {
-        const double ns = median(r.ns);
+        const double ns = g_reporter.median(r.name);
         if (ns < 0) continue;
         double base = -1;
         for (const Row& b : g_rows)
-            if (b.set == r.set && b.name.rfind("BM_within_", 0) == 0) base = median(b.ns);
-        std::printf("| %s (%zu) | %s | %s | ", r.set.c_str(), r.queries, r.label.c_str(), ns_text(ns).c_str());
+            if (b.set == r.set && b.name.rfind("BM_within_", 0) == 0) base = g_reporter.median(b.name);
+        std::printf("| %s (%zu) | %s | %s | ", r.set.c_str(), r.queries, r.label.c_str(), boxcyl::bench::ns_text(ns).c_str());
         if (base > 0) std::printf("%.3g× | ", ns / base);
         else std::printf("— | ");
         if (r.wrong < 0) std::printf("— | — |\n");
@@ -271,8 +234,7 @@ int main(int argc, char** argv) {
     add_peers("random", rs);
     add_peers("at_margin", as);
 #endif
-    SummaryReporter reporter;
-    benchmark::RunSpecifiedBenchmarks(&reporter);
+    benchmark::RunSpecifiedBenchmarks(&g_reporter);
     benchmark::Shutdown();
     print_summary();
     print_stage_shares("random", rs);

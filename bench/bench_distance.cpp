@@ -29,6 +29,7 @@
 
 #include "boxcyl/batch.hpp"
 #include "boxcyl/distance.hpp"
+#include "summary.hpp"
 #include "support/cases.hpp"
 #ifdef BOXCYL_BENCH_PEERS
 #include "peers.hpp"
@@ -81,55 +82,18 @@ std::vector<Set>& sets() {
     return s;
 }
 
-void set_ns_per_query(benchmark::State& state, std::size_t queries) {
-    state.counters["ns_per_query"] = benchmark::Counter(
-        static_cast<double>(queries) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-}
+using boxcyl::bench::set_ns_per_query;
 
 // ---- the summary ----
 
 struct Row {
     std::string set, name, label;
     std::size_t queries = 0;
-    std::vector<double> ns;
-    bool median_aggregate = false;
     std::string quality;  // the accuracy columns, computed before timing
 };
 std::vector<Row> g_rows;
 
-class SummaryReporter : public benchmark::ConsoleReporter {
-public:
-    void ReportRuns(const std::vector<Run>& runs) override {
-        ConsoleReporter::ReportRuns(runs);
-        for (const Run& run : runs) {
-            const auto c = run.counters.find("ns_per_query");
-            if (run.error_occurred || c == run.counters.end()) continue;
-            for (Row& r : g_rows) {
-                if (r.name != run.run_name.str() || r.median_aggregate) continue;
-                if (run.run_type == Run::RT_Aggregate && run.aggregate_name == "median") {
-                    r.ns = {c->second.value};
-                    r.median_aggregate = true;
-                } else if (run.run_type == Run::RT_Iteration) {
-                    r.ns.push_back(c->second.value);
-                }
-            }
-        }
-    }
-};
-
-double median(std::vector<double> v) {
-    if (v.empty()) return -1;
-    std::sort(v.begin(), v.end());
-    const std::size_t k = v.size() / 2;
-    return v.size() % 2 ? v[k] : (v[k - 1] + v[k]) / 2;
-}
-std::string ns_text(double ns) {
-    char b[32];
-    if (ns >= 1e6) std::snprintf(b, sizeof b, "%.2f ms", ns / 1e6);
-    else if (ns >= 1e4) std::snprintf(b, sizeof b, "%.1f µs", ns / 1e3);
-    else std::snprintf(b, sizeof b, "%.0f ns", ns);
-    return b;
-}
+boxcyl::bench::TimingReporter g_reporter;
 
 // boxcyl's own column: how wide its enclosures are, in doubles.
 std::string widths(const Set& s) {
@@ -177,13 +141,13 @@ std::string quality(const Set& s, const boxcyl::bench::PeerDistances& p) {
 void print_summary() {
     std::printf("\n| set | query | time per query | ratio to boxcyl::distance | accuracy |\n| --- | --- | ---: | ---: | --- |\n");
     for (const Row& r : g_rows) {
-        const double ns = median(r.ns);
+        const double ns = g_reporter.median(r.name);
         if (ns < 0) continue;
         double base = -1;
         for (const Row& b : g_rows)
             if (b.set == r.set && (b.name.rfind("BM_distance_", 0) == 0 || b.name.find("threads:1") != std::string::npos))
-                base = median(b.ns);  // the batch rows: the ratio to one thread
-        std::printf("| %s (%zu) | %s | %s | %.3g× | %s |\n", r.set.c_str(), r.queries, r.label.c_str(), ns_text(ns).c_str(),
+                base = g_reporter.median(b.name);  // the batch rows: the ratio to one thread
+        std::printf("| %s (%zu) | %s | %s | %.3g× | %s |\n", r.set.c_str(), r.queries, r.label.c_str(), boxcyl::bench::ns_text(ns).c_str(),
                     base > 0 ? ns / base : 0.0, r.quality.c_str());
     }
 }
@@ -203,7 +167,7 @@ int main(int argc, char** argv) {
             benchmark::DoNotOptimize(sum);
             set_ns_per_query(state, cases->size());
         });
-        g_rows.push_back({s.name, name, "boxcyl::distance (proved enclosure)", s.cases.size(), {}, false, widths(s)});
+        g_rows.push_back({s.name, name, "boxcyl::distance (proved enclosure)", s.cases.size(), widths(s)});
         name = "BM_intersects_" + s.name;
         benchmark::RegisterBenchmark(name.c_str(), [cases](benchmark::State& state) {
             long hits = 0;
@@ -212,7 +176,7 @@ int main(int argc, char** argv) {
             benchmark::DoNotOptimize(hits);
             set_ns_per_query(state, cases->size());
         });
-        g_rows.push_back({s.name, name, "boxcyl intersects(), exact (yes/no only)", s.cases.size(), {}, false, "—"});
+        g_rows.push_back({s.name, name, "boxcyl intersects(), exact (yes/no only)", s.cases.size(), "—"});
 #ifdef BOXCYL_BENCH_PEERS
         for (const boxcyl::bench::ClearancePeerInfo& info : boxcyl::bench::kClearancePeers) {
             g_peers.push_back(std::make_unique<boxcyl::bench::PeerDistances>(info.peer, s.cases));
@@ -229,7 +193,7 @@ int main(int argc, char** argv) {
             label = label.substr(0, label.find(" ≤ m"));  // "FCL distance() ≤ m, solver …" → the distance call
             g_rows.push_back({s.name, name, label + (info.peer == boxcyl::bench::ClearancePeer::fcl_libccd ? ", GST_LIBCCD"
                                                      : info.peer == boxcyl::bench::ClearancePeer::fcl_indep ? ", GST_INDEP" : ""),
-                              n, {}, false, quality(s, *p)});
+                              n, quality(s, *p)});
         }
 #endif
     }
@@ -250,10 +214,9 @@ int main(int argc, char** argv) {
             set_ns_per_query(state, batch_boxes.size());
         })->UseRealTime();
         g_rows.push_back({"batch", name + "/real_time", "boxcyl batch::distance, oriented boxes, " + std::to_string(threads) + " thread(s), wall time",
-                          batch_boxes.size(), {}, false, "—"});
+                          batch_boxes.size(), "—"});
     }
-    SummaryReporter reporter;
-    benchmark::RunSpecifiedBenchmarks(&reporter);
+    benchmark::RunSpecifiedBenchmarks(&g_reporter);
     benchmark::Shutdown();
     print_summary();
     return 0;

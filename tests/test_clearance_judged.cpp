@@ -24,6 +24,7 @@
 #include "boxcyl/clearance.hpp"
 #include "clearance/clearance_oracle.hpp"
 #include "clearance/exact_case.hpp"
+#include "clearance/lattice.hpp"
 #include "support/cases.hpp"
 #include "support/fp.hpp"  // RoundingMode
 
@@ -114,7 +115,7 @@ TEST(ClearanceJudged, FlipMarginsAreOneUlpApartAtTheDistance) {
 
 TEST(ClearanceJudged, IntegerLatticeAtHalfIntegerMarginsAndNeighbours) {
     std::mt19937_64 rng(0xc1ea0300);
-    auto integer = [&](int lo, int hi) { return static_cast<double>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
+    const Integers integer{rng};
     int disagreements = 0;
     long checked = 0;
     long exactly_at_margin = 0;
@@ -127,21 +128,7 @@ TEST(ClearanceJudged, IntegerLatticeAtHalfIntegerMarginsAndNeighbours) {
                                                      : Vec3<double>{integer(-2, 2), integer(-2, 2), integer(-2, 2)};
         c.cylinder = {{integer(-3, 3), integer(-3, 3), integer(-3, 3)}, axis, integer(0, 3), 2 * integer(0, 3)};
         if (c.cylinder.axis == Vec3<double>{0, 0, 0}) c.cylinder.axis = {0, 0, 1};
-        if (i % 2 == 0) {
-            c.kind = BoxKind::aligned;
-            for (int k = 0; k < 3; ++k) {
-                const double a = integer(-7, 7), b = integer(-7, 7);
-                c.aligned.min[k] = std::min(a, b);
-                c.aligned.max[k] = std::max(a, b);
-            }
-        } else {
-            // Integer axes of any length and angle (dependent ones too), as an oriented case's data is
-            // judged as the parallelepiped it spans; the query gets the parallelepiped itself.
-            c.kind = BoxKind::oriented;
-            c.oriented.center = {integer(-6, 6), integer(-6, 6), integer(-6, 6)};
-            for (auto& axis : c.oriented.axes) axis = {integer(-2, 2), integer(-2, 2), integer(-2, 2)};
-            c.oriented.extents = {integer(0, 2) / 2, integer(0, 2) / 2, integer(0, 2) / 2};
-        }
+        lattice_box(c, i, integer);
         const Parallelepiped<Rational> box = exact_box(c);
         const Cylinder<Rational> cyl = to_exact(c.cylinder);
         for (int k = 0; k <= 12; ++k) {

@@ -15,6 +15,7 @@
 #include "boxcyl/filtered/separation_refined.hpp"
 #include "clearance/clearance_oracle.hpp"
 #include "clearance/exact_case.hpp"
+#include "clearance/lattice.hpp"
 #include "support/cases.hpp"
 #include "support/fp.hpp"  // RoundingMode
 
@@ -73,26 +74,14 @@ TEST(SeparationJudged, RandomPairsEveryProfile) {
 
 TEST(SeparationJudged, IntegerLattice) {
     std::mt19937_64 rng(0x5e9a0300);
-    auto integer = [&](int lo, int hi) { return static_cast<double>(std::uniform_int_distribution<int>(lo, hi)(rng)); };
+    const Integers integer{rng};
     Tally t;
     for (int i = 0; i < 400; ++i) {
         Case c;
         c.cylinder = {{integer(-3, 3), integer(-3, 3), integer(-3, 3)},
                       {integer(-2, 2), integer(-2, 2), integer(-2, 2)}, integer(0, 3), 2 * integer(0, 3)};
         if (c.cylinder.axis == Vec3<double>{0, 0, 0}) c.cylinder.axis = {0, 0, 1};
-        if (i % 2 == 0) {
-            c.kind = BoxKind::aligned;
-            for (int k = 0; k < 3; ++k) {
-                const double a = integer(-7, 7), b = integer(-7, 7);
-                c.aligned.min[k] = std::min(a, b);
-                c.aligned.max[k] = std::max(a, b);
-            }
-        } else {
-            c.kind = BoxKind::oriented;  // integer axes of any length: judged as the parallelepiped they span
-            c.oriented.center = {integer(-6, 6), integer(-6, 6), integer(-6, 6)};
-            for (auto& axis : c.oriented.axes) axis = {integer(-2, 2), integer(-2, 2), integer(-2, 2)};
-            c.oriented.extents = {integer(0, 2) / 2, integer(0, 2) / 2, integer(0, 2) / 2};
-        }
+        lattice_box(c, i, integer);
         judge(c, -1, t);
         judge(c, integer(0, 12) / 2, t);
     }
