@@ -204,16 +204,19 @@ inline Vec3<double> box_point(const Approx& a, const Vec3<double>& x) {
     return a.k + x[0] * a.w[0] + x[1] * a.w[1] + x[2] * a.w[2];
 }
 // The box coordinates of the box point nearest to y: coordinate descent from x (a few sweeps).
+// The residual box_point(x) − y is updated by each coordinate's move rather than recomputed (a sum of
+// four vectors per coordinate); its rounding only perturbs the search, which proves nothing.
 inline Vec3<double> onto_box(const Approx& a, const Vec3<double>& y, Vec3<double> x, int sweeps) {
+    const std::array<double, 3> ww{dot(a.w[0], a.w[0]), dot(a.w[1], a.w[1]), dot(a.w[2], a.w[2])};
+    for (int i = 0; i < 3; ++i)
+        if (!(ww[i] > 0)) x[i] = 0;
+    Vec3<double> res = box_point(a, x) - y;
     for (int s = 0; s < sweeps; ++s)
         for (int i = 0; i < 3; ++i) {
-            const double ww = dot(a.w[i], a.w[i]);
-            if (!(ww > 0)) {
-                x[i] = 0;
-                continue;
-            }
-            const Vec3<double> res = box_point(a, x) - y;
-            x[i] = std::min(std::max(x[i] - dot(a.w[i], res) / ww, -a.e[i]), a.e[i]);
+            if (!(ww[i] > 0)) continue;
+            const double next = std::min(std::max(x[i] - dot(a.w[i], res) / ww[i], -a.e[i]), a.e[i]);
+            res = res + (next - x[i]) * a.w[i];
+            x[i] = next;
         }
     return clamp_coords(x, a.e);
 }

@@ -242,12 +242,11 @@ private:
     }
     static std::optional<std::pair<Box, Cylinder<double>>> moved(const Box& b, const Cylinder<double>& c, bool in_range) {
         std::pair<Box, Cylinder<double>> s{b, c};
-        if (in_range) {
-            if constexpr (std::is_same_v<Box, CanonicalBox<double>>) return std::nullopt;  // the box is the origin
-            else if (!translated_exactly(s.first, s.second)) return std::nullopt;
-        } else if (!rescaled_exactly(s.first, s.second, largest_length(b, c))) {
-            return std::nullopt;
-        }
+        bool exact = false;
+        if (!in_range) exact = rescaled_exactly(s.first, s.second, largest_length(b, c));
+        else if constexpr (!std::is_same_v<Box, CanonicalBox<double>>) exact = translated_exactly(s.first, s.second);
+        // (a canonical box is at the origin already: nothing to move)
+        if (!exact) return std::nullopt;
         return s;
     }
     std::optional<std::pair<Box, Cylinder<double>>> scaled_;
