@@ -3,7 +3,9 @@
 // of their margin always): the box point is refined by Newton's method on the box feature it lies on,
 // and both bounds are evaluated in double-double with proved error bounds (number/double_double.hpp:
 // about 2^-100 relative per operation), so that only distances within about 2^-90 of the margin, or
-// exactly at it, are left undecided.
+// exactly at it, are left undecided. Newton's steps run in double first (a tenth of the cost of one in
+// double-double) until they stop gaining; the bounds at that point often suffice, and only where they
+// do not do the steps go on in double-double.
 //
 // The refinement needs no proof: the point stays in the box by construction (c + Σ μi·hi with
 // |μi| ≤ 1), and a poor direction only loosens the lower bound. The bounds are those of
@@ -30,6 +32,7 @@
 #include <utility>    // std::swap
 #include <cmath>      // std::abs, std::ldexp, std::ilogb
 #include <optional>   // undecided
+#include <type_traits>  // std::is_same_v
 
 #include "boxcyl/filtered/rim.hpp"         // scaled_axis
 #include "boxcyl/filtered/separation.hpp"  // Bounds, Approximate
@@ -37,6 +40,7 @@
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
 #include "boxcyl/number/double_double.hpp"
+#include "boxcyl/number/traits.hpp"  // abs_value
 
 namespace boxcyl::filtered::separation {
 
@@ -51,11 +55,14 @@ inline D value(const D& x) { return {x.high(), x.low(), 0.0}; }
 inline DV value(const DV& v) { return {value(v[0]), value(v[1]), value(v[2])}; }
 inline double approx(const D& x) { return x.high() + x.low(); }
 
-// The box exactly: sums and products of two doubles are exact in double-double.
-struct Box {
-    DV center;
-    std::array<DV, 3> half;
+// The box and the cylinder in a number type N: double-double (the box exactly: sums and products of
+// two doubles are exact in it) for the bounds and the last Newton steps, double for the first ones.
+template <class N>
+struct BoxOf {
+    Vec3<N> center;
+    std::array<Vec3<N>, 3> half;
 };
+using Box = BoxOf<D>;
 inline Box exact_box(const Parallelepiped<double>& b) {
     Box box{lift(b.center), {}};
     for (int i = 0; i < 3; ++i)
@@ -81,10 +88,20 @@ inline Box exact_box(const AlignedBox<double>& b) {
     return box;
 }
 
-struct Cyl {
-    DV C, u;
-    D r, half_h;
+template <class N>
+struct CylOf {
+    Vec3<N> C, u;
+    N r, half_h;
 };
+using Cyl = CylOf<D>;
+
+// Their values rounded to double, for the search's first steps.
+inline double value(double x) { return x; }
+inline Vec3<double> value(const Vec3<double>& v) { return v; }
+inline double approx(double x) { return x; }
+inline Vec3<double> approx(const DV& v) { return {approx(v[0]), approx(v[1]), approx(v[2])}; }
+inline BoxOf<double> rounded(const Box& b) { return {approx(b.center), {approx(b.half[0]), approx(b.half[1]), approx(b.half[2])}}; }
+inline CylOf<double> rounded(const Cyl& k) { return {approx(k.C), approx(k.u), approx(k.r), approx(k.half_h)}; }
 
 // max(x, 0) enclosed: x itself when certainly positive, 0 when certainly not, else every value between.
 inline D positive_part(const D& x) {
@@ -123,9 +140,10 @@ inline D gap(const Box& box, const Cyl& k, const DV& n) {
 }
 
 // The box point for μ (values of |μi| ≤ 1).
-inline DV point(const Box& box, const std::array<D, 3>& mu) {
-    DV X = box.center;
-    for (int i = 0; i < 3; ++i) X = X + DV{mu[i] * box.half[i][0], mu[i] * box.half[i][1], mu[i] * box.half[i][2]};
+template <class N>
+Vec3<N> point(const BoxOf<N>& box, const std::array<N, 3>& mu) {
+    Vec3<N> X = box.center;
+    for (std::size_t i = 0; i < 3; ++i) X = X + Vec3<N>{mu[i] * box.half[i][0], mu[i] * box.half[i][1], mu[i] * box.half[i][2]};
     return X;
 }
 
@@ -139,6 +157,15 @@ inline double squared_distance(const Cyl& k, const DV& X) {
     const D pp = value(dot(Zxu, Zxu));
     const D rho = approx(pp) > 0 ? value(sqrt(pp)) : D(0.0);
     const double dr = std::max(0.0, approx(rho - k.r)), da = std::max(0.0, approx(enclosure_abs(t) - k.half_h));
+    return dr * dr + da * da;
+}
+// The same in double, for the first steps (noise where the distance is far below the coordinates: the
+// double-double steps that follow take over there).
+inline double squared_distance(const CylOf<double>& k, const Vec3<double>& X) {
+    const Vec3<double> Z = X - k.C;
+    const double t = dot(Z, k.u);
+    const Vec3<double> Zxu = cross(Z, k.u);
+    const double dr = std::max(0.0, std::sqrt(dot(Zxu, Zxu)) - k.r), da = std::max(0.0, std::abs(t) - k.half_h);
     return dr * dr + da * da;
 }
 
@@ -182,39 +209,47 @@ inline std::array<D, 3> foot(const algo::gjk::Box& b, const Vec3<double>& P) {
 // and the Hessian 2[∇ρ∇ρᵀ + (ρ − r)₊·∇²ρ] (where ρ > r) + 2uuᵀ (where |t| > h/2), with ∇ρ = P/ρ (P the
 // part of X − C across the axis) and ∇²ρ = (I − uuᵀ − ∇ρ∇ρᵀ)/ρ; the free coordinates see them through
 // the half axes. A step that leaves [−1, 1] is clamped, and that coordinate fixed.
-inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::array<bool, 3>& free, int steps) {
-    const DV u = value(k.u);
-    const D r = value(k.r), hh = value(k.half_h);
+template <class N>
+void refine(const BoxOf<N>& box, const CylOf<N>& k, std::array<N, 3>& mu, std::array<bool, 3>& free, int steps) {
+    using V = Vec3<N>;
+    using std::sqrt;
+    // μ's resolution in N (a step below it changes nothing), and a whole Newton step after which the
+    // next, about its square, would be below it.
+    constexpr bool in_double = std::is_same_v<N, double>;
+    constexpr double resolution = in_double ? 0x1p-52 : 0x1p-104;
+    constexpr double last_step = in_double ? 0x1p-26 : 0x1p-52;
+    const V u = value(k.u);
+    const N r = value(k.r), hh = value(k.half_h);
     std::array<bool, 3> movable{};  // a zero half axis leaves the point where it is
     for (std::size_t i = 0; i < 3; ++i) {
         movable[i] = approx(dot(box.half[i], box.half[i])) > 0;
         free[i] = free[i] && movable[i];
     }
     for (int step = 0; step < steps; ++step) {
-        const DV X = value(point(box, mu));
-        const DV Z = X - value(k.C);
-        const D t = value(dot(Z, u));
-        const DV P = value(Z - DV{t * u[0], t * u[1], t * u[2]});
+        const V X = value(point(box, mu));
+        const V Z = X - value(k.C);
+        const N t = value(dot(Z, u));
+        const V P = value(Z - V{t * u[0], t * u[1], t * u[2]});
         const double rho_d = std::sqrt(approx(dot(P, P)));
-        const D rho = rho_d > 0 ? value(sqrt(dot(P, P))) : D(0.0);
+        const N rho = rho_d > 0 ? value(sqrt(dot(P, P))) : N(0.0);
         const bool side = approx(rho - r) > 0 && rho_d > 0, cap = std::abs(approx(t)) > approx(hh);
         // Gradient and Hessian in X, seen through the half axes: each dot product once per step.
-        const DV grad_rho = side ? DV{P[0] / rho, P[1] / rho, P[2] / rho} : lift({0, 0, 0});
-        const D over_r = side ? rho - r : D(0.0);
-        const D over_h = cap ? enclosure_abs(t) - hh : D(0.0);
-        const D sgn = approx(t) < 0 ? D(-1.0) : D(1.0);
-        std::array<D, 3> gr{}, uu{}, grad{};  // ∇ρ·Aᵢ, u·Aᵢ, ∂g/∂μᵢ
+        const V grad_rho = side ? V{P[0] / rho, P[1] / rho, P[2] / rho} : V{N(0.0), N(0.0), N(0.0)};
+        const N over_r = side ? rho - r : N(0.0);
+        const N over_h = cap ? abs_value(t) - hh : N(0.0);
+        const N sgn = approx(t) < 0 ? N(-1.0) : N(1.0);
+        std::array<N, 3> gr{}, uu{}, grad{};  // ∇ρ·Aᵢ, u·Aᵢ, ∂g/∂μᵢ
         for (std::size_t i = 0; i < 3; ++i) {
             if (!movable[i]) continue;
-            gr[i] = side ? value(dot(grad_rho, box.half[i])) : D(0.0);
+            gr[i] = side ? value(dot(grad_rho, box.half[i])) : N(0.0);
             uu[i] = value(dot(u, box.half[i]));
-            grad[i] = value(D(2.0) * (over_r * gr[i] + over_h * sgn * uu[i]));
+            grad[i] = value(N(2.0) * (over_r * gr[i] + over_h * sgn * uu[i]));
         }
         auto hessian = [&](std::size_t i, std::size_t j) {
-            D h(0.0);
+            N h(0.0);
             if (side) h = gr[i] * gr[j] + over_r * (dot(box.half[i], box.half[j]) - uu[i] * uu[j] - gr[i] * gr[j]) / rho;
             if (cap) h = h + uu[i] * uu[j];
-            return value(D(2.0) * h);
+            return value(N(2.0) * h);
         };
         // A coordinate held at ±1 is released where g decreases into the box (the feature guessed
         // from the double search may be one too low: an edge where the nearest point is on a face).
@@ -239,35 +274,35 @@ inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::arra
         //     the side (every point of the contact region is nearest, and Newton's model has its minimum
         //     far away or points out of the box).
         const std::size_t i0 = idx[0], i1 = idx[nfree == 2 ? 1 : 0];
-        const D g_value = value(over_r * over_r + over_h * over_h);
-        const D g0 = grad[i0], g1 = nfree == 2 ? grad[i1] : D(0.0);
-        const D hg00 = hessian(i0, i0), hg01 = nfree == 2 ? hessian(i0, i1) : D(0.0), hg11 = nfree == 2 ? hessian(i1, i1) : D(0.0);
-        auto newton = [&](bool of_d, std::array<D, 2>& delta) {
+        const N g_value = value(over_r * over_r + over_h * over_h);
+        const N g0 = grad[i0], g1 = nfree == 2 ? grad[i1] : N(0.0);
+        const N hg00 = hessian(i0, i0), hg01 = nfree == 2 ? hessian(i0, i1) : N(0.0), hg11 = nfree == 2 ? hessian(i1, i1) : N(0.0);
+        auto newton = [&](bool of_d, std::array<N, 2>& delta) {
             if (of_d && !(approx(g_value) > 0)) return false;
-            const D two_g = D(2.0) * g_value;
-            const D h00 = of_d ? value(hg00 - g0 * g0 / two_g) : hg00;
+            const N two_g = N(2.0) * g_value;
+            const N h00 = of_d ? value(hg00 - g0 * g0 / two_g) : hg00;
             if (nfree == 1) {
                 if (!(approx(h00) > 0)) return false;
-                delta = {value(-g0 / h00), D(0.0)};
+                delta = {value(-g0 / h00), N(0.0)};
                 return approx(delta[0]) == approx(delta[0]);
             }
-            const D h01 = of_d ? value(hg01 - g0 * g1 / two_g) : hg01, h11 = of_d ? value(hg11 - g1 * g1 / two_g) : hg11;
-            const D det = h00 * h11 - h01 * h01;
+            const N h01 = of_d ? value(hg01 - g0 * g1 / two_g) : hg01, h11 = of_d ? value(hg11 - g1 * g1 / two_g) : hg11;
+            const N det = h00 * h11 - h01 * h01;
             if (!(approx(det) > 0 && approx(h00) > 0)) return false;
             delta = {value((h01 * g1 - h11 * g0) / det), value((h01 * g0 - h00 * g1) / det)};
             return approx(delta[0]) == approx(delta[0]) && approx(delta[1]) == approx(delta[1]);  // NaN: a quotient undecided
         };
-        auto gradient_line = [&](std::array<D, 2>& delta) {
-            const D gHg = g0 * g0 * hg00 + D(2.0) * g0 * g1 * hg01 + g1 * g1 * hg11;
+        auto gradient_line = [&](std::array<N, 2>& delta) {
+            const N gHg = g0 * g0 * hg00 + N(2.0) * g0 * g1 * hg01 + g1 * g1 * hg11;
             if (!(approx(gHg) > 0)) return false;
-            const D s = value(-(g0 * g0 + g1 * g1) / gHg);
+            const N s = value(-(g0 * g0 + g1 * g1) / gHg);
             delta = {value(s * g0), value(s * g1)};
             return approx(delta[0]) == approx(delta[0]) && approx(delta[1]) == approx(delta[1]);
         };
         const double g_now = squared_distance(k, X);
         bool taken = false, last = false;
         for (int candidate = 0; candidate < 3 && !taken; ++candidate) {
-            std::array<D, 2> delta{D(0.0), D(0.0)};
+            std::array<N, 2> delta{N(0.0), N(0.0)};
             if (!(candidate < 2 ? newton(candidate == 0, delta) : gradient_line(delta))) continue;
             // A step leaving the box is cut back to the first bound it crosses (clamping each coordinate
             // alone would leave the step's direction, and no halving of a far step would come back).
@@ -282,9 +317,9 @@ inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::arra
                 if (a < alpha) alpha = a, hit = j;
             }
             if (alpha < 1)
-                for (D& d : delta) d = value(d * D(alpha));
+                for (N& d : delta) d = value(d * N(alpha));
             // Converged: a whole step below double-double's resolution of μ changes nothing.
-            const bool tiny = std::abs(approx(delta[0])) <= 0x1p-104 && std::abs(approx(delta[1])) <= 0x1p-104;
+            const bool tiny = std::abs(approx(delta[0])) <= resolution && std::abs(approx(delta[1])) <= resolution;
             if (tiny && hit < 0) return;
             if (tiny && approx(mu[idx[static_cast<std::size_t>(hit)]]) == (approx(delta[static_cast<std::size_t>(hit)]) > 0 ? 1.0 : -1.0))
                 continue;  // already on that bound: the next candidate may move along it
@@ -292,15 +327,15 @@ inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::arra
             // a region's edge) but halved, a few times. g's rounding cannot see the last steps' gains:
             // only a clear rise rejects a step.
             for (int halving = 0; halving < 4 && !taken; ++halving) {
-                std::array<D, 3> next = mu;
+                std::array<N, 3> next = mu;
                 std::array<bool, 3> next_free = free;
                 for (int j = 0; j < nfree; ++j) {
                     const std::size_t i = idx[static_cast<std::size_t>(j)];
-                    D v = value(mu[i] + delta[static_cast<std::size_t>(j)]);
+                    N v = value(mu[i] + delta[static_cast<std::size_t>(j)]);
                     if (approx(v) != approx(v)) return;  // NaN (an underflowed quotient): keep the last point
-                    if (j == hit && halving == 0) v = D(approx(delta[static_cast<std::size_t>(j)]) > 0 ? 1.0 : -1.0);
-                    if (approx(v) >= 1) v = D(1.0), next_free[i] = false;
-                    else if (approx(v) <= -1) v = D(-1.0), next_free[i] = false;
+                    if (j == hit && halving == 0) v = N(approx(delta[static_cast<std::size_t>(j)]) > 0 ? 1.0 : -1.0);
+                    if (approx(v) >= 1) v = N(1.0), next_free[i] = false;
+                    else if (approx(v) <= -1) v = N(-1.0), next_free[i] = false;
                     next[i] = v;
                 }
                 if (squared_distance(k, value(point(box, next))) <= g_now * (1 + 0x1p-40)) {
@@ -310,9 +345,9 @@ inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::arra
                     // A whole Newton step this small: the next would move μ by about its square, below
                     // double-double's resolution (quadratic convergence).
                     last = candidate < 2 && alpha == 1 && halving == 0 &&
-                           std::max(std::abs(approx(delta[0])), std::abs(approx(delta[1]))) <= 0x1p-52;
+                           std::max(std::abs(approx(delta[0])), std::abs(approx(delta[1]))) <= last_step;
                 } else {
-                    for (D& d : delta) d = value(d * D(0.5));
+                    for (N& d : delta) d = value(d * N(0.5));
                 }
             }
         }
@@ -322,6 +357,20 @@ inline void refine(const Box& box, const Cyl& k, std::array<D, 3>& mu, std::arra
 
 }  // namespace refined
 
+
+namespace refined {
+// Whether enclosure a's lower end lies above b's, or its upper end below b's, to double-double
+// precision (the ends as doubles, lo() and hi(), would hide a gain below one ulp). Either choice keeps a
+// proved bound: the comparison only picks the tighter. A NaN never wins, and loses to any number.
+inline bool lower_end_above(const D& a, const D& b) {
+    if (b.high() != b.high()) return a.high() == a.high();
+    return (a.high() - b.high()) + ((a.low() - a.error()) - (b.low() - b.error())) > 0;
+}
+inline bool upper_end_below(const D& a, const D& b) {
+    if (b.high() != b.high()) return a.high() == a.high();
+    return (a.high() - b.high()) + ((a.low() + a.error()) - (b.low() + b.error())) < 0;
+}
+}  // namespace refined
 
 // The refined bounds as double-double enclosures: lower ≤ dist ≤ upper holds for every value each
 // encloses (a lower bound's enclosure may dip below 0: then it proves nothing).
@@ -415,7 +464,7 @@ inline void kinks(const refined::Box& box, const refined::Cyl& k, const std::arr
             at[i] = std::abs(sq) == 1 ? D(sq) : roots[q];
             const DV X = point(box, at);
             const D up = point_distance(k, X);
-            if (up.hi() < out.upper.hi()) out.upper = up, out.witness = value(X);
+            if (upper_end_below(up, out.upper)) out.upper = up, out.witness = value(X);
             // The normal cone at the crossing: the cap's normal sgn(t)·u and the radial direction.
             const DV Z = value(X - k.C);
             const D t = value(dot(Z, u));
@@ -429,7 +478,7 @@ inline void kinks(const refined::Box& box, const refined::Cyl& k, const std::arr
             for (const DV& nn : {value(-n_out), n_out}) {  // from the box towards the cylinder: either sign
                 if (!(approx(dot(nn, nn)) > 0)) continue;
                 const D g = gap(box, k, nn);
-                if (g.lo() > out.lower.lo()) out.lower = g;
+                if (lower_end_above(g, out.lower)) out.lower = g;
             }
         }
     }
@@ -477,7 +526,8 @@ inline std::optional<bool> decides(const RefinedBounds& r, double m) {
 // The refined bounds, from the double search `a` (separation.hpp's approximate()). With `decide_at`
 // ≥ 0, the further candidates (a foot, the kinks) are tried only while the bounds do not decide
 // dist ≤ decide_at, and with `enough_doubles` > 0 only while the bounds prove doubles farther apart than
-// that. `newton_steps` bounds the refinement (it ends sooner once converged).
+// that. `newton_steps` bounds the refinement's steps in double (in double-double, at most 4 follow); it ends
+// sooner once converged.
 template <class AnyBox>
 RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const Approximate& a, double decide_at = -1,
                              int newton_steps = 4, std::uint64_t enough_doubles = 0) {
@@ -496,29 +546,54 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
         free[i] = std::abs(m) < 1 - 0x1p-30;
         mu[i] = D(free[i] ? m : (m < 0 ? -1.0 : 1.0));
     }
-    refine(box, k, mu, free, newton_steps);
-    const DV X = point(box, mu);
-    RefinedBounds out{D(0.0), point_distance(k, X), true, value(X)};
-
-    // Y(X): the cylinder point nearest X, for the refined direction.
-    const DV Y = nearest_on_cylinder(k, X);
-    for (const DV& n : {value(Y - X), lift(a.direction)}) {
-        if (!(approx(dot(n, n)) > 0)) continue;
-        const D g = gap(box, k, n);
-        if (g.lo() > out.lower.lo()) out.lower = g;  // NaN never wins
-    }
+    RefinedBounds out{D(0.0), D(0.0), true, {}};
+    bool first = true;
     auto enough = [&] {
         return (decide_at >= 0 && refined::decides(out, decide_at)) ||
                (enough_doubles > 0 && refined::within_doubles(out, enough_doubles));
     };
+    auto lower = [&](const DV& n) {  // the gap along n, kept where better
+        if (!(approx(dot(n, n)) > 0)) return;
+        const D g = gap(box, k, n);
+        if (lower_end_above(g, out.lower)) out.lower = g;
+    };
+    // The bounds at the box point μ: its distance to the cylinder, and the gap along the direction to
+    // its nearest cylinder point (each kept where better).
+    auto bounds_at = [&](const std::array<D, 3>& m) {
+        const DV X = point(box, m);
+        const D up = point_distance(k, X);
+        if (first || upper_end_below(up, out.upper)) out.upper = up, out.witness = value(X);
+        first = false;
+        lower(value(nearest_on_cylinder(k, X) - X));
+        return enough();
+    };
+    // Newton's method in double first, where its steps are cheap and converge to double's resolution:
+    // its point's bounds suffice unless the distance is far below the shapes' coordinates. Then in
+    // double-double from where it ended, for the last bits: one or two steps where it converges
+    // quadratically, at most dd_steps (more only crawl along a nearly flat valley of the distance, a
+    // face nearly parallel to the axis, where the foot and the kinks below do better).
+    std::array<double, 3> mu_double{approx(mu[0]), approx(mu[1]), approx(mu[2])};
+    refine(rounded(box), rounded(k), mu_double, free, newton_steps);
+    mu = {D(mu_double[0]), D(mu_double[1]), D(mu_double[2])};
+    if (bounds_at(mu)) return out;
+    lower(lift(a.direction));  // the double search's best direction: exact for face, cap and side contacts
     if (enough()) return out;
+    const std::array<D, 3> before = mu;
+    constexpr int dd_steps = 4;
+    refine(box, k, mu, free, std::min(newton_steps, dd_steps));
+    auto moved = [&] {
+        for (std::size_t i = 0; i < 3; ++i)
+            if (mu[i].high() != before[i].high() || mu[i].low() != before[i].low()) return true;
+        return false;
+    };
+    if (moved() && bounds_at(mu)) return out;
     // A second box point where the bounds still differ in double: the foot of the cylinder's point
     // extreme along the best direction (where a face lies nearly parallel to a cap, Newton's model
     // sees no curvature, and that rim point's foot is the nearest box point).
     if (out.upper.hi() - out.lower.lo() > 0x1p-50 * out.upper.hi()) {
         const DV X2 = point(box, foot(a.box, algo::gjk::detail::support(algo::gjk::Cylinder{c.center, a.u, c.radius, 0.5 * c.height}, -a.direction)));
         const D upper2 = point_distance(k, X2);
-        if (upper2.hi() < out.upper.hi()) out.upper = upper2, out.witness = value(X2);
+        if (upper_end_below(upper2, out.upper)) out.upper = upper2, out.witness = value(X2);
     }
     if (enough()) return out;
     if (out.upper.hi() - out.lower.lo() > 0x1p-80 * out.upper.hi()) kinks(box, k, mu, out);
