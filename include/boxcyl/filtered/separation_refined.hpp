@@ -575,8 +575,18 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
     std::array<double, 3> mu_double{approx(mu[0]), approx(mu[1]), approx(mu[2])};
     refine(rounded(box), rounded(k), mu_double, free, newton_steps);
     mu = {D(mu_double[0]), D(mu_double[1]), D(mu_double[2])};
-    if (bounds_at(mu)) return out;
-    lower(lift(a.direction));  // the double search's best direction: exact for face, cap and side contacts
+    bounds_at(mu);
+    // The double search's best direction (a face normal, the axis, an edge crossed with the axis):
+    // exact for face, cap and side contacts, where the refined direction is only nearly so. Tried at
+    // once where its gap in double is about as large as the refined one, else only if needed.
+    bool searched = false;
+    auto search_direction = [&] {
+        if (!searched) lower(lift(a.direction));
+        searched = true;
+    };
+    if (a.lower >= approx(out.lower) * (1 - 0x1p-30)) search_direction();
+    if (enough()) return out;
+    search_direction();
     if (enough()) return out;
     const std::array<D, 3> before = mu;
     constexpr int dd_steps = 4;
