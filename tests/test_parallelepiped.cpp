@@ -352,6 +352,61 @@ TEST(ParallelepipedOracle, DependentAxesOnALatticeThreeExactMethodsAgree) {
     std::printf("dependent axes on a lattice: %d cases, %d queries touching exactly\n", cases, touching);
 }
 
+// Cylinders of radius 0 (segments), which the integer route answers by the axis tests alone where B is
+// solid or crossed at one point: small integer parallelepipeds (solid, flat, a segment) and segments
+// that end on a vertex, an edge point or a face point of B, or pass through one, with the height one ulp
+// shorter; then the same at extreme scales. The integer route, the oracle and exact §3 agree.
+TEST(ParallelepipedOracle, SegmentCylindersThreeExactMethodsAgree) {
+    std::mt19937_64 rng(5150);
+    std::uniform_int_distribution<int> small(-3, 3), ext(0, 2), flavour(0, 3), coord(0, 2), lambda(-2, 2),
+        size(1, 8), scale(-1000, 960), coin(0, 1);
+    int cases = 0, touching = 0;
+    for (int n = 0; n < 2400; ++n) {
+        auto v = [&] { return Vec3<double>{double(small(rng)), double(small(rng)), double(small(rng))}; };
+        P b{v(), {v(), v(), v()}, {double(1 + ext(rng)), double(ext(rng)), 1}};
+        switch (flavour(rng)) {
+            case 0: b.axes[2] = b.axes[0] + b.axes[1]; break;  // flat
+            case 1: b.axes[1] = 2.0 * b.axes[0], b.axes[2] = {0, 0, 0}; break;  // a segment
+            default: break;  // mostly solid
+        }
+        // A point of B: each coordinate −1, −½, 0, ½ or 1 of its extent (a vertex, an edge, a face point).
+        Vec3<double> on = b.center;
+        for (int i = 0; i < 3; ++i) on = on + (0.5 * lambda(rng) * b.extents[i]) * b.axes[i];
+        const int k = coord(rng);
+        const double sk = coin(rng) ? 1.0 : -1.0;
+        Vec3<double> axis{0, 0, 0};
+        axis[k] = sk;
+        const double height = size(rng);
+        C c{on, axis, 0, height};
+        if (n % 3 == 0) c.center[k] += sk * 0.5 * height;     // the segment ends on `on`
+        else if (n % 3 == 1) c.axis = v(), c.center = v();     // any segment
+        if (c.axis[0] == 0 && c.axis[1] == 0 && c.axis[2] == 0) c.axis = {1, 2, 2};
+        if (n >= 1800) {  // the same shapes at an extreme scale (exact: small integers)
+            const int e = scale(rng);
+            auto sc = [e](const Vec3<double>& x) { return Vec3<double>{std::ldexp(x[0], e), std::ldexp(x[1], e), std::ldexp(x[2], e)}; };
+            b.center = sc(b.center), c.center = sc(c.center);
+            for (auto& a : b.axes) a = sc(a);
+            c.height = std::ldexp(c.height, e);
+        }
+        if (!validate(b).ok() || !validate(c).ok()) continue;
+        const bool hit = oracle_answer(b, c);
+        bool touches = false;
+        for (const C& q : {c, C{c.center, c.axis, 0, below(c.height)}}) {
+            if (!(q.height >= 0)) continue;
+            const bool want = oracle_answer(b, q);
+            touches |= want != hit;
+            ++cases;
+            EXPECT_EQ(exact::integer::intersects_parallelepiped(b, q), want) << describe(b, q);
+            EXPECT_EQ(exact::intersects(exact::Method::hull, to_exact(b), to_exact(q)), want) << describe(b, q);
+            EXPECT_EQ(filtered::query(b, q).intersect, want) << describe(b, q);
+        }
+        touching += touches;
+    }
+    EXPECT_GT(cases, 4000);
+    EXPECT_GT(touching, 300);
+    std::printf("segment cylinders: %d cases, %d queries touching exactly\n", cases, touching);
+}
+
 TEST(ParallelepipedOracle, FlatHandCases) {
     // The unit square in z = 0 spanned by two parallel pairs: W0 = (1,0,0), W1 = (2,0,0), W2 = (0,1,0),
     // extents (0.25, 0.375, 1): x ∈ [−1, 1], y ∈ [−1, 1].

@@ -109,11 +109,16 @@ public:
         }
         if (above == 8 || below == 8) return false;
         // The axis segment meets B. A segment or point (rank ≤ 1) needs no such test: the union of its
-        // clipped edges is B ∩ slab, and each is tested whole.
+        // clipped edges is B ∩ slab, and each is tested whole. A cylinder of radius 0 is its axis
+        // segment, so where that test covers the whole segment (a solid B, or a flat one the axis
+        // crosses at one point) its answer is the answer, without the edges' wide values.
+        const bool segment = sgn(p_.R) == 0;
         if (sgn(det) != 0) {
             if (axis_meets_box(det)) return true;
-        } else if (const std::optional<Vec3<Z>> n = plane_normal(); n && axis_meets_flat_box(*n)) {
-            return true;
+            if (segment) return false;
+        } else if (const std::optional<Vec3<Z>> n = plane_normal()) {
+            if (axis_meets_flat_box(*n)) return true;
+            if (segment && sgn(dot(*n, p_.D)) != 0) return false;
         }
         for (int m = 0; m < 3; ++m)
             for (int s = 0; s < 8; ++s)

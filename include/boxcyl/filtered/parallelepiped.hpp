@@ -166,6 +166,7 @@ struct Candidates {
 struct Approx {
     Vec3<double> k, c, u;
     std::array<Vec3<double>, 3> w;
+    std::array<double, 3> step;  // 1/|Wᵢ|² (0 for a zero axis or one whose |Wᵢ|² overflows: that coordinate stays put)
     Vec3<double> e;
     double r, height, h;
 };
@@ -175,6 +176,10 @@ inline Approx approx(const Parallelepiped<double>& b, const Cylinder<double>& c)
     a.k = b.center;
     a.c = c.center;
     a.w = b.axes;
+    for (int i = 0; i < 3; ++i) {
+        const double ww = dot(a.w[i], a.w[i]);
+        a.step[i] = ww > 0 ? 1 / ww : 0.0;
+    }
     a.e = b.extents;
     double m = std::max({std::fabs(c.axis[0]), std::fabs(c.axis[1]), std::fabs(c.axis[2])});
     const int s = m > 0 ? -std::ilogb(m) : 0;
@@ -205,34 +210,35 @@ inline Vec3<double> box_point(const Approx& a, const Vec3<double>& x) {
 }
 // The box coordinates of the box point nearest to y: coordinate descent from x (a few sweeps).
 // The residual box_point(x) − y is updated by each coordinate's move rather than recomputed (a sum of
-// four vectors per coordinate); its rounding only perturbs the search, which proves nothing.
+// four vectors per coordinate), and each move multiplies by the axis's precomputed 1/|Wᵢ|² rather than
+// dividing in the loop's dependency chain; their rounding only perturbs the search, which proves nothing.
 inline Vec3<double> onto_box(const Approx& a, const Vec3<double>& y, Vec3<double> x, int sweeps) {
-    const std::array<double, 3> ww{dot(a.w[0], a.w[0]), dot(a.w[1], a.w[1]), dot(a.w[2], a.w[2])};
     for (int i = 0; i < 3; ++i)
-        if (!(ww[i] > 0)) x[i] = 0;
+        if (a.step[i] == 0) x[i] = 0;
     Vec3<double> res = box_point(a, x) - y;
     for (int s = 0; s < sweeps; ++s)
         for (int i = 0; i < 3; ++i) {
-            if (!(ww[i] > 0)) continue;
-            const double next = std::min(std::max(x[i] - dot(a.w[i], res) / ww[i], -a.e[i]), a.e[i]);
+            if (a.step[i] == 0) continue;
+            const double next = std::min(std::max(x[i] - dot(a.w[i], res) * a.step[i], -a.e[i]), a.e[i]);
             res = res + (next - x[i]) * a.w[i];
             x[i] = next;
         }
     return clamp_coords(x, a.e);
 }
-// The cylinder point nearest to y, as (t, ρ, m): X = C + t·u + ρ·m/|m| with m ⊥ u.
-inline Candidates::CylPoint onto_cylinder(const Approx& a, const Vec3<double>& y) {
+// The cylinder point nearest to y: its parameters (t, ρ, m), X = C + t·u + ρ·m/|m| with m ⊥ u, and
+// the point itself (from the same |m|).
+struct CylinderPoint {
+    Candidates::CylPoint q;
+    Vec3<double> x;
+};
+inline CylinderPoint onto_cylinder(const Approx& a, const Vec3<double>& y) {
     const Vec3<double> v = y - a.c;
     const double t = clamp_axial(dot(a.u, v), a);
     const Vec3<double> m = v - dot(a.u, v) * a.u;
     const double len = std::sqrt(dot(m, m));
     const double rho = std::min(len, a.r);
-    return {t, rho, m};
-}
-inline Vec3<double> cylinder_point(const Approx& a, const Candidates::CylPoint& q) {
-    const double len = std::sqrt(dot(q.m, q.m));
-    const double s = len > 0 ? q.rho / len : 0.0;
-    return a.c + q.t * a.u + s * q.m;
+    const double s = len > 0 ? rho / len : 0.0;
+    return {{t, rho, m}, a.c + t * a.u + s * m};
 }
 
 // The cheap, fixed candidates.
@@ -256,7 +262,9 @@ inline void fixed_candidates(const Approx& a, const Cylinder<double>& c, Candida
 // from the box centre: for overlapping solids the iterates approach a point of the shrunk
 // intersection, which lies inside both full solids with a margin (unshrunk, they would approach the
 // intersection's boundary, where no certificate has room); for disjoint ones, a nearest pair.
-// Candidates after steps 1, 2, 4, 8, ...
+// Candidates after steps 1, 2, 4, 8, ... and at a fixed point: a step that leaves x as it was (in
+// doubles) would leave it so for every later step, so the search stops there with the candidates the
+// later steps would have repeated.
 inline void searched_candidates(const Approx& full, double shrink, Candidates& cs, int steps = 16) {
     Approx a = full;
     // The cylinder shrunk by one depth along and across its axis (a factor would take a thick disk's
@@ -269,14 +277,16 @@ inline void searched_candidates(const Approx& full, double shrink, Candidates& c
     Vec3<double> x{0, 0, 0};
     for (int step = 1; step <= steps; ++step) {
         const Vec3<double> p = box_point(a, x);
-        const Candidates::CylPoint q = onto_cylinder(a, p);
-        const Vec3<double> y = cylinder_point(a, q);
-        x = onto_box(a, y, x, 3);
-        if ((step & (step - 1)) != 0) continue;
+        const auto [q, y] = onto_cylinder(a, p);
+        const Vec3<double> next = onto_box(a, y, x, 3);
+        const bool fixed = next == x;
+        x = next;
+        if ((step & (step - 1)) != 0 && !fixed) continue;
         const Vec3<double> pb = box_point(a, x);
         cs.box(clamp_coords(x, full.e));
         cs.cyl(q.t, q.rho, q.m);
         cs.dir(y - pb);
+        if (fixed) break;
     }
 }
 
