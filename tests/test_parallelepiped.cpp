@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdint>
+#include <initializer_list>
 #include <memory>
 #include <vector>
 #include <random>
@@ -302,6 +303,25 @@ TEST(ParallelepipedOracle, FlatSolidsAgreeWithExactHull) {
     }
 }
 
+// The integer route, exact §3 in Q(√d) and the default query each answer (b, q) as the oracle does, for
+// every q of `queries` with valid sizes (the first one's are); counts them in `cases`. Returns whether
+// some answer differs from the first one's: (b, queries[0]) touches exactly when the others are its
+// one-ulp misses.
+bool three_exact_methods_agree(const P& b, std::initializer_list<C> queries, int& cases) {
+    const bool hit = oracle_answer(b, *queries.begin());
+    bool touches = false;
+    for (const C& q : queries) {
+        if (!(q.radius >= 0) || !(q.height >= 0)) continue;
+        const bool want = oracle_answer(b, q);
+        touches |= want != hit;
+        ++cases;
+        EXPECT_EQ(exact::integer::intersects_parallelepiped(b, q), want) << describe(b, q);
+        EXPECT_EQ(exact::intersects(exact::Method::hull, to_exact(b), to_exact(q)), want) << describe(b, q);
+        EXPECT_EQ(filtered::query(b, q).intersect, want) << describe(b, q);
+    }
+    return touches;
+}
+
 // Dependent axes (a zonogon, a parallelogram, a segment, a point) with small integer coordinates, where
 // many queries touch exactly (axes along a coordinate half the time): the exact stage's integer route,
 // the oracle and exact §3 in Q(√d) (three independent exact methods) agree, on each case and with the
@@ -334,18 +354,8 @@ TEST(ParallelepipedOracle, DependentAxesOnALatticeThreeExactMethodsAgree) {
             if (coord(rng) < 3) c.center[(k + 1) % 3] += 1.5, c.center[(k + 2) % 3] -= 2, c.radius = 2.5;
         }
         if (!validate(b).ok() || !validate(c).ok()) continue;
-        bool touches = false;
-        const bool hit = oracle_answer(b, c);
-        for (const C& q : {c, C{c.center, c.axis, below(c.radius), c.height}, C{c.center, c.axis, c.radius, below(c.height)}}) {
-            if (!(q.radius >= 0) || !(q.height >= 0)) continue;
-            const bool want = oracle_answer(b, q);
-            touches |= want != hit;
-            ++cases;
-            EXPECT_EQ(exact::integer::intersects_parallelepiped(b, q), want) << describe(b, q);
-            EXPECT_EQ(exact::intersects(exact::Method::hull, to_exact(b), to_exact(q)), want) << describe(b, q);
-            EXPECT_EQ(filtered::query(b, q).intersect, want) << describe(b, q);
-        }
-        touching += touches;
+        touching += three_exact_methods_agree(
+            b, {c, C{c.center, c.axis, below(c.radius), c.height}, C{c.center, c.axis, c.radius, below(c.height)}}, cases);
     }
     EXPECT_GT(cases, 6000);
     EXPECT_GT(touching, 1000);
@@ -389,18 +399,7 @@ TEST(ParallelepipedOracle, SegmentCylindersThreeExactMethodsAgree) {
             c.height = std::ldexp(c.height, e);
         }
         if (!validate(b).ok() || !validate(c).ok()) continue;
-        const bool hit = oracle_answer(b, c);
-        bool touches = false;
-        for (const C& q : {c, C{c.center, c.axis, 0, below(c.height)}}) {
-            if (!(q.height >= 0)) continue;
-            const bool want = oracle_answer(b, q);
-            touches |= want != hit;
-            ++cases;
-            EXPECT_EQ(exact::integer::intersects_parallelepiped(b, q), want) << describe(b, q);
-            EXPECT_EQ(exact::intersects(exact::Method::hull, to_exact(b), to_exact(q)), want) << describe(b, q);
-            EXPECT_EQ(filtered::query(b, q).intersect, want) << describe(b, q);
-        }
-        touching += touches;
+        touching += three_exact_methods_agree(b, {c, C{c.center, c.axis, 0, below(c.height)}}, cases);
     }
     EXPECT_GT(cases, 4000);
     EXPECT_GT(touching, 300);
