@@ -6,6 +6,7 @@
 // it is.
 #include <gtest/gtest.h>
 
+#include <cfenv>      // rounding modes
 #include <cmath>      // std::nextafter, std::ldexp
 #include <cstdint>    // seeds
 #include <random>     // random margins
@@ -14,6 +15,7 @@
 
 #include "boxcyl/clearance.hpp"
 #include "support/cases.hpp"
+#include "support/fp.hpp"
 
 namespace boxcyl {
 namespace {
@@ -143,6 +145,50 @@ TEST(Clearance, RandomPairsMarginZeroAndMonotone) {
         }
     }
     EXPECT_GT(within_count, 100);
+}
+
+// The probes' stage 0 (one plain-double problem for the three probe cylinders, filtered/semi_static.hpp's
+// error bounds) on pairs of every generator profile, at margins from subnormal to 2^20 of the shapes
+// and at the approximate distance itself (probe cylinders within rounding of touching), in every
+// rounding mode: every verdict it gives is the exact intersection query's on that probe cylinder.
+TEST(Clearance, ProbesStageZeroAgreesWithTheExactProbes) {
+    constexpr std::uint64_t seed = 0xc1ea0002;
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int decided = 0;
+    for (const Profile profile :
+         {Profile::mixed, Profile::degenerate, Profile::uniform, Profile::georeferenced, Profile::magnitudes}) {
+        CaseGenerator gen(seed, profile);
+        for (int i = 0; i < 250; ++i) {
+            const Case c = gen.next();
+            with_box(c, [&](const auto& box, const Cylinder<double>& cyl) {
+                const double size = cyl.radius + cyl.height + 1e-300;
+                const double near = filtered::separation::bounds(box, cyl).upper;
+                for (const double m : {0x1p-1074, std::ldexp(unit(rng), -40) * size, unit(rng) * size,
+                                       std::ldexp(unit(rng), 20) * size, near}) {
+                    if (!(m > 0) || !std::isfinite(m)) continue;
+                    const detail::clearance::Grown g = detail::clearance::grown(cyl, m);
+                    const auto probes = detail::clearance::probes(g);
+                    for (const int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+                        std::array<std::optional<bool>, 3> verdicts;
+                        {
+                            const RoundingMode rounding(mode);
+                            verdicts = detail::clearance::stage0_verdicts<true>(box, g);
+                        }
+                        for (std::size_t k = 0; k < probes.size(); ++k) {
+                            if (!verdicts[k]) continue;
+                            ++decided;
+                            EXPECT_EQ(*verdicts[k], intersects(box, probes[k].cylinder))
+                                << describe(c) << "\nmargin " << hex(m) << ", probe " << k << ", rounding " << mode_name(mode);
+                        }
+                    }
+                }
+                return true;
+            });
+        }
+    }
+    EXPECT_GT(decided, 20000);
+
 }
 
 }  // namespace

@@ -16,7 +16,9 @@
 
 #include <algorithm>    // std::max
 #include <array>        // the probe table
-#include <cmath>        // std::nextafter, std::isfinite
+#include <bit>          // std::bit_cast: a sum's neighbours
+#include <cmath>        // std::isfinite
+#include <cstdint>      // std::uint64_t
 #include <limits>       // infinity
 #include <optional>     // the interval stage's "undecided"
 #include <stdexcept>    // std::invalid_argument
@@ -31,6 +33,7 @@
 #if defined(BOXCYL_HAS_EXACT)
 #include "boxcyl/exact/clearance.hpp"
 #include "boxcyl/exact/convert.hpp"
+#include "boxcyl/filtered/prepared.hpp"
 #include "boxcyl/filtered/rim.hpp"
 #include "boxcyl/filtered/separation.hpp"
 #include "boxcyl/filtered/separation_refined.hpp"
@@ -46,12 +49,14 @@ namespace detail::clearance {
 struct Bounds {
     double lo, hi;
 };
+// The neighbours of an inexact s > 0 are its bit pattern ∓ 1 (the pattern after DBL_MAX is +∞): no
+// libm call, which was a tenth of the query's time on random pairs.
 inline Bounds sum_bounds(double a, double b) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
     const double s = a + b;
-    if (!std::isfinite(s)) return {std::numeric_limits<double>::max(), inf};
+    if (!std::isfinite(s)) return {std::numeric_limits<double>::max(), std::numeric_limits<double>::infinity()};
     if (s - std::max(a, b) == std::min(a, b)) return {s, s};
-    return {std::nextafter(s, -inf), std::nextafter(s, inf)};
+    const auto bits = std::bit_cast<std::uint64_t>(s);  // s > 0: an exact sum 0 + 0 returned above
+    return {std::bit_cast<double>(bits - 1), std::bit_cast<double>(bits + 1)};
 }
 
 // The cylinders the probes ask, sharing the cylinder's centre and axis: `outer` holds the rounded
@@ -86,29 +91,71 @@ inline std::array<Probe, 3> probes(const Grown& g) {
 // One query on its way through the stages, with what earlier stages proved for later ones.
 template <class Box>
 struct Pair {
+    // A constructor, not an aggregate: aggregate initialisation cleared the whole Pair first (half a
+    // kilobyte, `rep stos`), a tenth of a query's time on random pairs.
+    Pair(const Box& b, const Cylinder<double>& c, double margin) : box(b), cyl(c), m(margin), g(grown(c, margin)) {}
+
     const Box& box;
     const Cylinder<double>& cyl;
     double m;
     Grown g;
-    filtered::separation::Approximate search{};  // the distance bounds' search, for the refined stage
+    // The distance bounds' search, for the refined stage (constructed there: it is most of a Pair).
+    std::optional<filtered::separation::Approximate> search;
     filtered::rim::Proved proved{};
+    std::array<std::optional<bool>, 3> stage0{};  // each probe's answer where stage 0 gave it
 };
 
 // A stage answers (true: within, false: not) or passes (nullopt) to the next.
 template <class Box>
 using Stage = std::optional<bool> (*)(Pair<Box>&);
 
-// Probe k of probes().
+// Stage 0 of the exact intersection query (filtered/semi_static.hpp) on the three probes at once: one
+// problem, computed for the outer cylinder — the largest, so its length scale bounds the other two —
+// with each probe's sizes set in turn (the reduction to the box's frame, most of stage 0's cost, is
+// shared). Each probe's verdict in probes() order (nullopt: undecided, or not asked: the outer one
+// left out, a query that stage 0 takes only rescaled, a parallelepiped); unless `all`, it stops at
+// the first probe answered with its deciding answer.
+template <bool all, class Box>
+std::array<std::optional<bool>, 3> stage0_verdicts(const Box& box, const Grown& g) {
+    std::array<std::optional<bool>, 3> verdicts{};
+#if !(defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT)
+    if constexpr (!std::is_same_v<Box, Parallelepiped<double>>) {  // a parallelepiped's query has no stage 0
+        const std::array<Probe, 3> ps = probes(g);
+        if (!ps[1].valid) return verdicts;
+        filtered::Prepared<Box> prep(box, ps[1].cylinder);
+        if (!prep.in_range || prep.rescaled()) return verdicts;
+        for (std::size_t k = 0; k < ps.size(); ++k) {
+            const Cylinder<double> c{prep.cyl.center, prep.cyl.axis, ps[k].cylinder.radius, ps[k].cylinder.height};
+            filtered::semi_static::set_sizes_of<Box>(prep.p, c.radius, c.height);
+            verdicts[k] = filtered::semi_static::decide(prep.p, prep.box, c);
+            if (!all && verdicts[k] == ps[k].decides_when) break;
+        }
+    }
+#endif
+    return verdicts;
+}
+// A probe that stage 0 answered with its deciding answer is the answer; one answered otherwise is
+// skipped below; one left undecided asks the whole query.
+template <class Box>
+std::optional<bool> probes_stage0(Pair<Box>& q) {
+    q.stage0 = stage0_verdicts<false>(q.box, q.g);
+    const std::array<Probe, 3> ps = probes(q.g);
+    for (std::size_t k = 0; k < ps.size(); ++k)
+        if (q.stage0[k] == ps[k].decides_when) return ps[k].decides_when;
+    return std::nullopt;
+}
+// Probe k of probes(), unless stage 0 answered it.
 template <class Box, std::size_t k>
 std::optional<bool> probe(Pair<Box>& q) {
     const Probe p = probes(q.g)[k];
-    if (p.valid && intersects_unchecked(q.box, p.cylinder) == p.decides_when) return p.decides_when;
+    if (q.stage0[k] || !p.valid) return std::nullopt;
+    if (intersects_unchecked(q.box, p.cylinder) == p.decides_when) return p.decides_when;
     return std::nullopt;
 }
 // Certified distance bounds from an approximate closest pair (filtered/separation.hpp).
 template <class Box>
 std::optional<bool> separation(Pair<Box>& q) {
-    const filtered::separation::Bounds b = filtered::separation::bounds(q.box, q.cyl, q.m, &q.search);
+    const filtered::separation::Bounds b = filtered::separation::bounds(q.box, q.cyl, q.m, &q.search.emplace());
     if (b.upper <= q.m) return true;
     if (b.lower > q.m) return false;
     return std::nullopt;
@@ -117,7 +164,8 @@ std::optional<bool> separation(Pair<Box>& q) {
 // pairs within rounding of the margin.
 template <class Box>
 std::optional<bool> refined_separation(Pair<Box>& q) {
-    return filtered::separation::refined_within(q.box, q.cyl, q.m, q.search);
+    if (!q.search) return std::nullopt;
+    return filtered::separation::refined_within(q.box, q.cyl, q.m, *q.search);
 }
 // Whether the box misses the exact fat and tall cylinders, proved by missing them with their sizes
 // rounded up.
@@ -148,21 +196,24 @@ std::optional<bool> exact_stage(Pair<Box>& q) {
                                     to_rational(q.m), known);
 }
 
-// The order is policy: on random pairs most are decided by one probe (the fat cylinder's hit or the
-// outer one's miss, one exact intersection query each); the distance bounds in double, dearer, decide
+// The order is policy: on random pairs most are decided by the probes' stage 0 (the fat cylinder's hit
+// or the outer one's miss, certified in plain double); the probes' own queries take what it leaves
+// undecided; the distance bounds in double, dearer, decide
 // nearly all of the rest; the refined bounds those within rounding of the margin; the rim tests and
 // the exact decision what is left: distances exactly at the margin, and every query in a directed
 // rounding mode that the earlier stages leave (docs/clearance.md gives the measured shares).
 template <class Box>
-inline constexpr std::array<Stage<Box>, 7> stages{&probe<Box, 0>, &probe<Box, 1>, &probe<Box, 2>, &separation<Box>,
-                                                  &refined_separation<Box>, &rim<Box>, &exact_stage<Box>};
-inline constexpr std::array<const char*, 7> stage_names{"fat probe",      "outer probe",   "tall probe", "distance bounds",
-                                                        "refined bounds", "rim intervals", "exact"};
+inline constexpr std::array<Stage<Box>, 8> stages{&probes_stage0<Box>, &probe<Box, 0>,       &probe<Box, 1>,
+                                                  &probe<Box, 2>,      &separation<Box>,     &refined_separation<Box>,
+                                                  &rim<Box>,           &exact_stage<Box>};
+inline constexpr std::array<const char*, 8> stage_names{"probes' stage 0", "fat probe",      "outer probe",
+                                                        "tall probe",      "distance bounds", "refined bounds",
+                                                        "rim intervals",   "exact"};
 
 // The index of the stage that answers, for the benchmark's per-stage shares (margin > 0).
 template <class Box>
 std::size_t answering_stage(const Box& box, const Cylinder<double>& cyl, double m) {
-    Pair<Box> q{box, cyl, m, grown(cyl, m)};
+    Pair<Box> q(box, cyl, m);
     for (std::size_t i = 0; i < stages<Box>.size(); ++i)
         if (stages<Box>[i](q)) return i;
     return stages<Box>.size();
@@ -171,7 +222,7 @@ std::size_t answering_stage(const Box& box, const Cylinder<double>& cyl, double 
 template <class Box>
 bool within(const Box& box, const Cylinder<double>& cyl, double m) {
     if (m == 0) return intersects_unchecked(box, cyl);
-    Pair<Box> q{box, cyl, m, grown(cyl, m)};
+    Pair<Box> q(box, cyl, m);
     for (const Stage<Box> stage : stages<Box>)
         if (const std::optional<bool> answer = stage(q)) return *answer;
     return false;  // not reached: the exact stage always answers

@@ -225,7 +225,10 @@ public:
           scaled_(in_range && !far_from_origin(p) ? std::nullopt : moved(b, c, in_range)),
           box(scaled_ ? scaled_->first : b),
           cyl(scaled_ ? scaled_->second : c) {
-        if (scaled_) in_range = semi_static::problem(box, cyl, p);
+        if (scaled_) {
+            rescaled_ = !in_range;  // out of range: scaled; in range: moved
+            in_range = semi_static::problem(box, cyl, p);
+        }
     }
     Prepared(const Prepared&) = delete;
     Prepared& operator=(const Prepared&) = delete;
@@ -250,8 +253,12 @@ private:
         return s;
     }
     std::optional<std::pair<Box, Cylinder<double>>> scaled_;
+    bool rescaled_ = false;
 
 public:
+    // Whether the lengths were scaled by a power of two (not only moved): the sizes in p are then not
+    // the cylinder's as given.
+    bool rescaled() const { return rescaled_; }
     // The query (scaled by an exact power of two when it was beyond stage 0's range).
     const Box& box;
     const Cylinder<double>& cyl;

@@ -508,6 +508,28 @@ inline void set_units(Problem& p, double l, double g) {
     p.g = g;
 }
 
+// The cylinder's sizes in the problem (γ: an oriented frame's widening, set before; 0 for the other
+// kinds, which take the sizes as they are): the outer cylinder grown by γ, the inner one shrunk by it.
+// The clearance query's stage 0 (clearance.hpp) sets the sizes of each of its probe cylinders on one
+// problem computed for the largest, whose L bounds them all.
+template <bool Rounded>
+BOXCYL_FORCE_INLINE inline void set_sizes(Problem& p, double radius, double height) {
+    const double h = height * 0.5;
+    if constexpr (Rounded) {
+        p.r_out = radius + p.gamma;
+        p.h_out = h + p.gamma;
+        p.has_inner = radius >= p.gamma && height >= 2 * p.gamma;
+        p.r_in = radius - p.gamma;
+        p.h_in = h - p.gamma;
+    } else {
+        p.r_out = p.r_in = radius;
+        p.h_out = p.h_in = h;
+        p.has_inner = true;
+    }
+    p.r = radius;
+    p.h = h;
+}
+
 // Canonical box: the box is canonical, the cylinder already in its frame: nothing rounds but the unit axis.
 BOXCYL_FORCE_INLINE inline bool problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
     const double l = 2 * std::max({largest(b.extents), largest(cyl.center), cyl.radius, cyl.height});
@@ -515,10 +537,8 @@ BOXCYL_FORCE_INLINE inline bool problem(const CanonicalBox<double>& b, const Cyl
     p.c = cyl.center;
     p.d = unit_axis(cyl.axis);
     p.e = b.extents;
-    p.r_out = p.r_in = p.r = cyl.radius;
-    p.h_out = p.h_in = p.h = cyl.height * 0.5;
+    set_sizes<false>(p, cyl.radius, cyl.height);
     p.e_in = p.e;
-    p.has_inner = true;
     // As ints combined by &: no branch to mispredict (and no clang -Wbitwise-instead-of-logical).
     const int in0 = std::fabs(p.c[0]) <= p.e[0], in1 = std::fabs(p.c[1]) <= p.e[1], in2 = std::fabs(p.c[2]) <= p.e[2];
     p.exact_inside = (in0 & in1 & in2) != 0;
@@ -542,10 +562,8 @@ BOXCYL_FORCE_INLINE inline bool problem(const AlignedBox<double>& b, const Cylin
         inside &= above & below;  // ints and &: no branch to mispredict
     }
     p.d = unit_axis(cyl.axis);
-    p.r_out = p.r_in = p.r = cyl.radius;
-    p.h_out = p.h_in = p.h = cyl.height * 0.5;
+    set_sizes<false>(p, cyl.radius, cyl.height);
     p.e_in = p.e;
-    p.has_inner = true;
     p.exact_inside = inside != 0;
     p.gamma = 0;
     p.u = p.d;
@@ -578,15 +596,8 @@ BOXCYL_FORCE_INLINE inline bool problem(const OrientedBox<double>& b, const Cyli
     p.e = b.extents;
     // γ ≥ g·|e|₁ as a double (the product rounded, then inflated by 8ε: ≥ the exact product).
     p.gamma = g * (b.extents[0] + b.extents[1] + b.extents[2]) * (1 + 0x1p-49);
-    const double h = cyl.height * 0.5;
-    p.r_out = cyl.radius + p.gamma;
-    p.h_out = h + p.gamma;
-    p.has_inner = cyl.radius >= p.gamma && cyl.height >= 2 * p.gamma;
+    set_sizes<true>(p, cyl.radius, cyl.height);
     p.exact_inside = false;
-    p.r_in = cyl.radius - p.gamma;
-    p.h_in = h - p.gamma;
-    p.r = cyl.radius;
-    p.h = h;
     for (int i = 0; i < 3; ++i) p.e_in[i] = b.extents[i] - p.gamma;
     p.k = {0, 0, 0};
     set_units(p, l, g);
@@ -621,6 +632,12 @@ template <>
 inline constexpr const Kappas& kappas_of<AlignedBox<double>> = aligned_kappas;
 template <>
 inline constexpr const Kappas& kappas_of<OrientedBox<double>> = oriented_kappas;
+
+// set_sizes for the box kind's problem (only an oriented frame widens the cylinder by γ).
+template <class Box>
+BOXCYL_FORCE_INLINE inline void set_sizes_of(Problem& p, double radius, double height) {
+    set_sizes<std::is_same_v<Box, OrientedBox<double>>>(p, radius, height);
+}
 
 // On a problem computed by problem() for the same box and cylinder (the query builds it once and hands
 // it on to the witness search). The tests pass other κ (zero: the computed values alone, unsound)
