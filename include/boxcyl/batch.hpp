@@ -68,6 +68,7 @@
 #error "boxcyl/batch.hpp answers exactly and needs the exact backend: link boxcyl::exact (GMP), or the compiled boxcyl::boxcyl"
 #endif
 
+#include <array>             // the probes' order
 #include <cstddef>           // std::size_t
 #include <cstdint>           // std::uint64_t
 #include <initializer_list>  // the kernels `automatic` tries
@@ -198,12 +199,21 @@ bool scalar_within(const Box& box, const Cylinder<double>& cyl, double m) {
     return boxcyl::within_distance_unchecked(box, cyl, m);
 }
 
-// The clearance query at margin m > 0: the probes of the scalar query (boxcyl/clearance.hpp), in its
-// order; one whose sizes overflow is left out.
+// The order of the scalar query's probes (boxcyl/clearance.hpp's probes(): fat, outer, tall) in the
+// batch: the outer cylinder's miss first. A batch is mostly boxes far from the cylinder (a voxel grid,
+// a block model around a drill hole: 96% of bench_batch's voxels miss the outer cylinder), which that
+// pass answers alone, where the fat cylinder's pass answers only the few inside and leaves every far
+// box to a second pass. (The scalar query's random pairs lie near the cylinder and mostly hit fat: it
+// asks fat first.)
+inline constexpr std::array<std::size_t, 3> kBatchProbeOrder{1, 0, 2};
+
+// The clearance query at margin m > 0: the probes of the scalar query in kBatchProbeOrder; one whose
+// sizes overflow is left out.
 inline Clearance clearance(const Cylinder<double>& cyl, double m) {
     Clearance q{cyl, m, {}, {}, 0, &scalar_within<AlignedBox<double>>, &scalar_within<OrientedBox<double>>};
-    for (const boxcyl::detail::clearance::Probe& p : boxcyl::detail::clearance::probes(boxcyl::detail::clearance::grown(cyl, m)))
-        if (p.valid) {
+    const auto probes = boxcyl::detail::clearance::probes(boxcyl::detail::clearance::grown(cyl, m));
+    for (const std::size_t k : kBatchProbeOrder)
+        if (const boxcyl::detail::clearance::Probe& p = probes[k]; p.valid) {
             q.probe[q.probes] = p.cylinder;
             q.decides_when[q.probes++] = p.decides_when;
         }

@@ -243,6 +243,47 @@ BOXCYL_FORCE_INLINE inline LaneBits to_bits(const LaneResult& r) {
     return {sum & 0xFFFF, sum >> 16};
 }
 
+struct BlockFilter {
+    std::uint64_t hit, open;
+};
+
+// A pass over the lanes `open` of the block at `begin`, gathered into full vectors: pass(idx, m) filters
+// the boxes idx[0, m), m ≤ lane_count. The lanes it decides leave `open`; its hits join `bits`.
+template <class Pass>
+BOXCYL_FORCE_INLINE inline void gathered_pass(std::size_t begin, std::uint64_t& bits, std::uint64_t& open, Pass&& pass) {
+    std::size_t idx[64], n = 0;
+    for (std::uint64_t o = open; o != 0; o &= o - 1) idx[n++] = begin + static_cast<std::size_t>(std::countr_zero(o));
+    for (std::size_t g = 0; g < n; g += lane_count) {
+        const std::size_t m = std::min(lane_count, n - g);
+        const LaneResult r = pass(idx + g, m);
+        for (std::size_t l = 0; l < m; ++l)
+            if (r.decided[l]) {
+                const std::uint64_t bit = std::uint64_t{1} << (idx[g + l] - begin);
+                open &= ~bit;
+                if (r.hit[l]) bits |= bit;
+            }
+    }
+}
+
+// The passes after the first (filter_block's): the lanes `open` gathered through the source's second
+// pass (aligned boxes: the whole filter), then through its hit search (oriented boxes), where it has
+// them.
+template <class Source>
+BlockFilter later_passes(const CylinderFilter& f, const Source& s, std::size_t begin, std::uint64_t bits,
+                         std::uint64_t open, Stats& st) {
+    if constexpr (requires(const std::size_t* p) { s.gathered(f, p, std::size_t{1}); }) {
+        if (open != 0) {
+            st.second_pass += static_cast<std::size_t>(std::popcount(open));
+            gathered_pass(begin, bits, open, [&](const std::size_t* idx, std::size_t m) { return s.gathered(f, idx, m); });
+        }
+    }
+    if constexpr (requires(const std::size_t* p) { s.searched(f, p, std::size_t{1}); }) {
+        if (open != 0)
+            gathered_pass(begin, bits, open, [&](const std::size_t* idx, std::size_t m) { return s.searched(f, idx, m); });
+    }
+    return {bits, open};
+}
+
 // The filter's answers for boxes [begin, begin + count), count ≤ 64, as bits 0..count−1: `hit` for the
 // lanes it proves to meet the cylinder, `open` for those it leaves undecided (the others it proves to
 // miss). The first pass runs over every vector of boxes without a branch per lane (aligned sources load
@@ -254,9 +295,6 @@ BOXCYL_FORCE_INLINE inline LaneBits to_bits(const LaneResult& r) {
 // aligned and oriented sources by a few vector operations on the loaded lanes (is_valid over the block
 // only when they cannot clear a vector), else by is_valid per box; the first invalid one throws
 // InvalidBox.
-struct BlockFilter {
-    std::uint64_t hit, open;
-};
 template <class Source>
 BlockFilter filter_block(const CylinderFilter& f, const Source& s, std::size_t begin, std::size_t count, bool check,
                          Stats& st) {
@@ -290,31 +328,24 @@ BlockFilter filter_block(const CylinderFilter& f, const Source& s, std::size_t b
     if (suspect)
         for (std::size_t i = begin; i < begin + count; ++i)
             if (!is_valid(s.box(i))) throw InvalidBox(i);
-    // A pass over the open lanes, gathered into full vectors: pass(idx, m) filters the boxes idx[0, m).
-    auto gathered_pass = [&](auto&& pass) {
-        std::size_t idx[64], n = 0;
-        for (std::uint64_t o = open; o != 0; o &= o - 1) idx[n++] = begin + static_cast<std::size_t>(std::countr_zero(o));
-        for (std::size_t g = 0; g < n; g += lane_count) {
-            const std::size_t m = std::min(lane_count, n - g);
-            const LaneResult r = pass(idx + g, m);
-            for (std::size_t l = 0; l < m; ++l)
-                if (r.decided[l]) {
-                    const std::uint64_t bit = std::uint64_t{1} << (idx[g + l] - begin);
-                    open &= ~bit;
-                    if (r.hit[l]) bits |= bit;
-                }
-        }
-    };
+    return later_passes(f, s, begin, bits, open, st);
+}
+
+// The filter on the lanes `lanes` of the block [begin, begin + count) only, for the clearance query's
+// later probes (the lanes the earlier ones left open: a few per block near the cylinder). A source
+// whose second pass is the whole filter (aligned boxes) runs just that on them, gathered into full
+// vectors; any other runs filter_block, whose answers for the other lanes are dropped. Bits outside
+// `lanes` are 0.
+template <class Source>
+BlockFilter filter_lanes(const CylinderFilter& f, const Source& s, std::size_t begin, std::size_t count, std::uint64_t lanes,
+                         Stats& st) {
     if constexpr (requires(const std::size_t* p) { s.gathered(f, p, std::size_t{1}); }) {
-        if (open != 0) {
-            st.second_pass += static_cast<std::size_t>(std::popcount(open));
-            gathered_pass([&](const std::size_t* idx, std::size_t m) { return s.gathered(f, idx, m); });
-        }
+        (void)count;
+        return later_passes(f, s, begin, 0, lanes, st);
+    } else {
+        const BlockFilter r = filter_block(f, s, begin, count, false, st);
+        return {r.hit & lanes, r.open & lanes};
     }
-    if constexpr (requires(const std::size_t* p) { s.searched(f, p, std::size_t{1}); }) {
-        if (open != 0) gathered_pass([&](const std::size_t* idx, std::size_t m) { return s.searched(f, idx, m); });
-    }
-    return {bits, open};
 }
 
 // What one call asks of every box, prepared once per batch: whether it meets the cylinder
@@ -377,8 +408,10 @@ std::uint64_t block_bits(const Within& w, const Source& s, std::size_t begin, st
     const Clearance& q = w.query;
     std::uint64_t bits = 0, open = count == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
     for (std::size_t k = 0; k < q.probes && open != 0; ++k) {
-        const BlockFilter r = filter_block(w.filter[k], s, begin, count, check, st);
-        check = false;  // the first pass checked every box of the block
+        // The first probe over the whole block (checking every box of it), the later ones over the
+        // lanes still open.
+        const BlockFilter r = k == 0 ? filter_block(w.filter[k], s, begin, count, check, st)
+                                     : filter_lanes(w.filter[k], s, begin, count, open, st);
         const std::uint64_t decided = open & ~r.open, says = decided & (q.decides_when[k] ? r.hit : ~r.hit);
         if (q.decides_when[k]) bits |= says;
         open &= ~says;

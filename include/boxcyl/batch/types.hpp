@@ -85,7 +85,8 @@ struct Stats {
 constexpr std::size_t mask_words(std::size_t n) { return (n + 63) / 64; }
 
 // The clearance query of one batch (boxcyl::batch::within_distance, margin > 0): the filter tries the
-// probe cylinders in order (boxcyl/clearance.hpp's detail::clearance::probes), and a lane it proves to
+// probe cylinders in order (boxcyl/clearance.hpp's detail::clearance::probes, in batch.hpp's
+// kBatchProbeOrder), and a lane it proves to
 // meet probe k exactly when decides_when[k] says is answered decides_when[k]; the lanes no probe
 // decides go to the scalar query within_distance_unchecked through `aligned` or `oriented`. Through
 // pointers, so that the AVX2 and AVX-512 kernels (src/batch/) call the includer's plain x86-64 copy and
