@@ -18,9 +18,10 @@
 
 #include <algorithm>  // std::min, std::max
 #include <array>      // vertices, edges
-#include <cmath>      // std::ldexp, std::ilogb, std::isfinite
+#include <cmath>      // std::ilogb, std::isfinite
 #include <optional>   // undecided
 
+#include "boxcyl/filtered/prepared.hpp"  // times_two_to
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
@@ -52,19 +53,34 @@ inline Vec3<double> scaled_axis(const Vec3<double>& D) {
     const int k = -std::ilogb(big);
     Vec3<double> s;
     for (int i = 0; i < 3; ++i) {
-        s[i] = std::ldexp(D[i], k);
-        if (std::ldexp(s[i], -k) != D[i]) return D;  // a component would lose bits
+        s[i] = times_two_to(D[i], k);  // bit steps, not libm's ldexp (a tenth of a rim-region query)
+        if (times_two_to(s[i], -k) != D[i]) return D;  // a component would lose bits
     }
     return s;
+}
+
+// Component i of u = d/|d| enclosed, d the axis as scaled_axis returns it and len enclosing |d|. d's
+// largest component is at least 1 (scaled to [1, 2), or left as given, which happens only to a largest
+// one of 2 or more, whose scaling down would lose a tiny component's bits), so |u_i| ≤ |d_i|. A component below 2^-900 (beside one of at
+// least 1) is enclosed by [0, 2^-900] with its sign instead of the quotient: the wider enclosure is as
+// sound, costs every bound that uses it an error of at most 2^-900 of the lengths it multiplies (far
+// below their roundings), and keeps the products with it out of the subnormal range, which x86 runs in
+// microcode (an axis like (1e-300, 0.6, 0.8), or a subnormal one: the distance bounds took twice as
+// long on such axes).
+inline Interval unit_component(const Vec3<double>& d, int i, const Interval& len) {
+    constexpr double tiny = 0x1p-900;
+    if (d[i] == 0 || std::abs(d[i]) >= tiny) return Interval(d[i]) / len;
+    return d[i] > 0 ? Interval(0, tiny) : Interval(-tiny, 0);
 }
 
 // The cylinder and margin in intervals: u = D/|D| enclosed. `valid` is false when the enclosure is not
 // finite (then nothing is proved with it).
 struct Rims {
     Rims(const Cylinder<double>& c, double m) : C(lift(c.center)), r(c.radius), half_h(I(c.height) * I(0.5)), m2(I(m) * I(m)) {
-        const V D = lift(scaled_axis(c.axis));
+        const Vec3<double> d = scaled_axis(c.axis);
+        const V D = lift(d);
         const I len = sqrt(dot(D, D));
-        u = {D[0] / len, D[1] / len, D[2] / len};
+        for (int i = 0; i < 3; ++i) u[i] = unit_component(d, i, len);
         for (int i = 0; i < 3; ++i) valid = valid && std::isfinite(u[i].lo()) && std::isfinite(u[i].hi());
     }
     V C, u;

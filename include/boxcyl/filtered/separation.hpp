@@ -61,13 +61,24 @@ struct Approximate {
     bool found = false;       // false: the search did not run (an axis whose enclosure is not finite)
 };
 
+// The search's axis: components below 2^-250 of the largest set to 0. The search needs no proof (what
+// it finds is proved below, on the exact axis's enclosure), and such a component — an axis like
+// (1e-300, 0.6, 0.8), or a subnormal one — made every product with it subnormal, which x86 runs in
+// microcode: the search took about 2.8 µs on such axes where it takes 1 µs on others.
+inline Vec3<double> without_tiny_components(Vec3<double> u) {
+    const double floor = 0x1p-250 * std::max(std::max(std::abs(u[0]), std::abs(u[1])), std::abs(u[2]));
+    for (int i = 0; i < 3; ++i)
+        if (std::abs(u[i]) < floor) u[i] = 0;
+    return u;
+}
+
 // `rel_gap`: GJK's convergence test (the double-double refinement that follows needs much less).
 inline Approximate approximate(const rim::Box& box, const rim::Rims& f, const Cylinder<double>& c, double decide_at,
                                double rel_gap = 0x1p-44) {
     using detail::mid;
     Approximate a;
     a.box = {mid(box.center), {mid(box.half[0]), mid(box.half[1]), mid(box.half[2])}};
-    a.u = mid(f.u);
+    a.u = without_tiny_components(mid(f.u));
     const Vec3<double>& u = a.u;
     a.closest = algo::gjk::closest(a.box, {c.center, u, c.radius, 0.5 * c.height}, decide_at, 48, rel_gap);
     a.p = algo::gjk::detail::box_point(a.box, a.closest.mu);
