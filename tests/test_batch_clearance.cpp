@@ -213,6 +213,22 @@ TEST_P(BatchClearance, RandomSetsAgreeWithScalar) {
     fo.print("random sets, oriented (float)");
 }
 
+// Batches of several blocks, the last one partial (613 boxes: nine full blocks and 37 boxes), so that
+// the later probes gather the open lanes of a group of blocks, and a group ends on a short block.
+TEST_P(BatchClearance, GroupsOfBlocksAgreeWithScalar) {
+    Count ca, co, cp;
+    std::mt19937_64 rng(0xC1EB);
+    for (long k = 0; k < scaled(6); ++k) {
+        const std::uint64_t seed = 0xBA7C6000 + static_cast<std::uint64_t>(k);
+        const BatchSet s = random_batch(seed, 9 * 64 + 37, k % 3 == 2 ? Profile::degenerate : Profile::mixed);
+        const double m = random_margin(rng, reach_of(s.cylinder));
+        check_set(s.cylinder, s.aligned, s.oriented, m, "groups, seed " + std::to_string(seed) + " margin " + hex(m), ca, co, cp);
+    }
+    ca.print("groups of blocks, aligned");
+    co.print("groups of blocks, oriented");
+    cp.print("groups of blocks, parallelepipeds");
+}
+
 // Margin 0 (and −0) is batch::intersects, answers and statistics alike.
 TEST_P(BatchClearance, MarginZeroIsIntersects) {
     for (std::uint64_t seed = 0xBA7C6000; seed < 0xBA7C6000 + 20; ++seed) {

@@ -247,41 +247,57 @@ struct BlockFilter {
     std::uint64_t hit, open;
 };
 
-// A pass over the lanes `open` of the block at `begin`, gathered into full vectors: pass(idx, m) filters
-// the boxes idx[0, m), m ≤ lane_count. The lanes it decides leave `open`; its hits join `bits`.
+// The most blocks whose open lanes one gathered pass takes together (group_bits below).
+inline constexpr std::size_t kGroupBlocks = 8;
+
+// A pass over the lanes `open[b]` of the blocks b = 0, 1, … at begin + 64·b, gathered into full
+// vectors: pass(idx, m) filters the boxes idx[0, m), m ≤ lane_count. The lanes it decides leave
+// `open`; its hits join `bits`.
 template <class Pass>
-BOXCYL_FORCE_INLINE inline void gathered_pass(std::size_t begin, std::uint64_t& bits, std::uint64_t& open, Pass&& pass) {
-    std::size_t idx[64], n = 0;
-    for (std::uint64_t o = open; o != 0; o &= o - 1) idx[n++] = begin + static_cast<std::size_t>(std::countr_zero(o));
+BOXCYL_FORCE_INLINE inline void gathered_pass(std::size_t begin, std::span<std::uint64_t> bits, std::span<std::uint64_t> open,
+                                              Pass&& pass) {
+    assert(open.size() <= kGroupBlocks && bits.size() == open.size());
+    std::size_t idx[64 * kGroupBlocks], n = 0;
+    for (std::size_t b = 0; b < open.size(); ++b)
+        for (std::uint64_t o = open[b]; o != 0; o &= o - 1) idx[n++] = begin + 64 * b + static_cast<std::size_t>(std::countr_zero(o));
     for (std::size_t g = 0; g < n; g += lane_count) {
         const std::size_t m = std::min(lane_count, n - g);
         const LaneResult r = pass(idx + g, m);
         for (std::size_t l = 0; l < m; ++l)
             if (r.decided[l]) {
-                const std::uint64_t bit = std::uint64_t{1} << (idx[g + l] - begin);
-                open &= ~bit;
-                if (r.hit[l]) bits |= bit;
+                const std::size_t at = idx[g + l] - begin;
+                const std::uint64_t bit = std::uint64_t{1} << (at % 64);
+                open[at / 64] &= ~bit;
+                if (r.hit[l]) bits[at / 64] |= bit;
             }
     }
 }
 
-// The passes after the first (filter_block's): the lanes `open` gathered through the source's second
-// pass (aligned boxes: the whole filter), then through its hit search (oriented boxes), where it has
-// them.
+// Whether the source's second pass is the whole filter on gathered lanes (aligned boxes).
 template <class Source>
-BlockFilter later_passes(const CylinderFilter& f, const Source& s, std::size_t begin, std::uint64_t bits,
-                         std::uint64_t open, Stats& st) {
-    if constexpr (requires(const std::size_t* p) { s.gathered(f, p, std::size_t{1}); }) {
-        if (open != 0) {
-            st.second_pass += static_cast<std::size_t>(std::popcount(open));
+inline constexpr bool gathers_whole_filter =
+    requires(const Source& s, const CylinderFilter& f, const std::size_t* p) { s.gathered(f, p, std::size_t{1}); };
+
+// The passes after the first (filter_block's) on the blocks at `begin` (as gathered_pass): the lanes
+// `open` gathered through the source's second pass (aligned boxes: the whole filter), then through its
+// hit search (oriented boxes), where it has them.
+template <class Source>
+void later_passes(const CylinderFilter& f, const Source& s, std::size_t begin, std::span<std::uint64_t> bits,
+                  std::span<std::uint64_t> open, Stats& st) {
+    auto any = [&] {
+        for (const std::uint64_t o : open)
+            if (o != 0) return true;
+        return false;
+    };
+    if constexpr (gathers_whole_filter<Source>) {
+        if (any()) {
+            for (const std::uint64_t o : open) st.second_pass += static_cast<std::size_t>(std::popcount(o));
             gathered_pass(begin, bits, open, [&](const std::size_t* idx, std::size_t m) { return s.gathered(f, idx, m); });
         }
     }
     if constexpr (requires(const std::size_t* p) { s.searched(f, p, std::size_t{1}); }) {
-        if (open != 0)
-            gathered_pass(begin, bits, open, [&](const std::size_t* idx, std::size_t m) { return s.searched(f, idx, m); });
+        if (any()) gathered_pass(begin, bits, open, [&](const std::size_t* idx, std::size_t m) { return s.searched(f, idx, m); });
     }
-    return {bits, open};
 }
 
 // The filter's answers for boxes [begin, begin + count), count ≤ 64, as bits 0..count−1: `hit` for the
@@ -328,24 +344,8 @@ BlockFilter filter_block(const CylinderFilter& f, const Source& s, std::size_t b
     if (suspect)
         for (std::size_t i = begin; i < begin + count; ++i)
             if (!is_valid(s.box(i))) throw InvalidBox(i);
-    return later_passes(f, s, begin, bits, open, st);
-}
-
-// The filter on the lanes `lanes` of the block [begin, begin + count) only, for the clearance query's
-// later probes (the lanes the earlier ones left open: a few per block near the cylinder). A source
-// whose second pass is the whole filter (aligned boxes) runs just that on them, gathered into full
-// vectors; any other runs filter_block, whose answers for the other lanes are dropped. Bits outside
-// `lanes` are 0.
-template <class Source>
-BlockFilter filter_lanes(const CylinderFilter& f, const Source& s, std::size_t begin, std::size_t count, std::uint64_t lanes,
-                         Stats& st) {
-    if constexpr (requires(const std::size_t* p) { s.gathered(f, p, std::size_t{1}); }) {
-        (void)count;
-        return later_passes(f, s, begin, 0, lanes, st);
-    } else {
-        const BlockFilter r = filter_block(f, s, begin, count, false, st);
-        return {r.hit & lanes, r.open & lanes};
-    }
+    later_passes(f, s, begin, std::span<std::uint64_t>(&bits, 1), std::span<std::uint64_t>(&open, 1), st);
+    return {bits, open};
 }
 
 // What one call asks of every box, prepared once per batch: whether it meets the cylinder
@@ -398,30 +398,49 @@ std::uint64_t block_bits(const Meets& q, const Source& s, std::size_t begin, std
 inline bool scalar_within(const Clearance& q, const AlignedBox<double>& b) { return q.aligned(b, q.cylinder, q.margin); }
 inline bool scalar_within(const Clearance& q, const OrientedBox<double>& b) { return q.oriented(b, q.cylinder, q.margin); }
 
-// The clearance form: the filter on each probe cylinder in turn, over the blocks that still have lanes
-// open (the first probe, holding the rounded cylinder, proves most far boxes out); a lane is answered
-// by the first probe that decides it the way that probe can answer, and the scalar clearance query
-// answers the lanes none decides.
+// The clearance form, on up to kGroupBlocks blocks at once: the first probe over every box of each
+// block (checking them), then each later probe over the lanes still open — for a source whose second
+// pass is the whole filter (aligned boxes), those of all the group's blocks gathered into full vectors
+// (near the cylinder a block keeps a few lanes open: a vector per block would run mostly empty), for
+// any other through filter_block per block, its answers for the other lanes dropped. A lane is
+// answered by the first probe that decides it the way that probe can answer; the scalar clearance
+// query answers the lanes none decides. `bits[b]` receives block b's answers.
 template <class Source>
-std::uint64_t block_bits(const Within& w, const Source& s, std::size_t begin, std::size_t count, bool check, Stats& st) {
-    assert_valid(s, begin, count, check);
+void group_bits(const Within& w, const Source& s, std::size_t begin, std::size_t n, std::size_t blocks, bool check,
+                Stats& st, std::uint64_t* bits) {
     const Clearance& q = w.query;
-    std::uint64_t bits = 0, open = count == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
-    for (std::size_t k = 0; k < q.probes && open != 0; ++k) {
-        // The first probe over the whole block (checking every box of it), the later ones over the
-        // lanes still open.
-        const BlockFilter r = k == 0 ? filter_block(w.filter[k], s, begin, count, check, st)
-                                     : filter_lanes(w.filter[k], s, begin, count, open, st);
-        const std::uint64_t decided = open & ~r.open, says = decided & (q.decides_when[k] ? r.hit : ~r.hit);
-        if (q.decides_when[k]) bits |= says;
-        open &= ~says;
+    std::uint64_t open[kGroupBlocks];
+    auto count_of = [&](std::size_t b) { return std::min<std::size_t>(64, n - (begin + 64 * b)); };
+    // Lanes of block b that probe k decides its deciding way (of those in `before`) leave `open`.
+    auto take = [&](std::size_t k, std::size_t b, std::uint64_t before, const BlockFilter& r) {
+        const std::uint64_t decided = before & ~r.open, says = decided & (q.decides_when[k] ? r.hit : ~r.hit);
+        if (q.decides_when[k]) bits[b] |= says;
+        open[b] &= ~says;
+    };
+    for (std::size_t b = 0; b < blocks; ++b) {
+        const std::size_t count = count_of(b), at = begin + 64 * b;
+        assert_valid(s, at, count, check);
+        bits[b] = 0;
+        open[b] = count == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
+        if (q.probes > 0) take(0, b, open[b], filter_block(w.filter[0], s, at, count, check, st));
     }
-    for (std::uint64_t o = open; o != 0; o &= o - 1) {
-        const std::size_t i = begin + static_cast<std::size_t>(std::countr_zero(o));
-        if (scalar_within(q, s.box(i))) bits |= std::uint64_t{1} << (i - begin);
-        ++st.exact_lanes;
+    for (std::size_t k = 1; k < q.probes; ++k) {
+        if constexpr (gathers_whole_filter<Source>) {
+            std::uint64_t hit[kGroupBlocks] = {}, left[kGroupBlocks];
+            std::copy(open, open + blocks, left);
+            later_passes(w.filter[k], s, begin, std::span<std::uint64_t>(hit, blocks), std::span<std::uint64_t>(left, blocks), st);
+            for (std::size_t b = 0; b < blocks; ++b) take(k, b, open[b], {hit[b], left[b]});
+        } else {
+            for (std::size_t b = 0; b < blocks; ++b)
+                if (open[b] != 0) take(k, b, open[b], filter_block(w.filter[k], s, begin + 64 * b, count_of(b), false, st));
+        }
     }
-    return bits;
+    for (std::size_t b = 0; b < blocks; ++b)
+        for (std::uint64_t o = open[b]; o != 0; o &= o - 1) {
+            const auto l = static_cast<std::size_t>(std::countr_zero(o));
+            if (scalar_within(q, s.box(begin + 64 * b + l))) bits[b] |= std::uint64_t{1} << l;
+            ++st.exact_lanes;
+        }
 }
 
 // Runs the blocks of query q (a cylinder or a Clearance) over the threads; emit(block, bits, count)
@@ -434,10 +453,20 @@ Stats run(const Query& query, const Source& s, std::size_t n, const Options& opt
     std::vector<Stats> per_thread(threads);
     split::for_each_range(blocks, threads, [&](std::size_t first, std::size_t last, unsigned t) {
         Stats x;
-        for (std::size_t blk = first; blk < last; ++blk) {
-            if (opt.stop.stop_requested()) throw Stopped();
-            const std::size_t begin = blk * 64, count = std::min<std::size_t>(64, n - begin);
-            emit(blk, block_bits(q, s, begin, count, opt.check_boxes, x), count);
+        if constexpr (std::is_same_v<std::remove_cvref_t<decltype(q)>, Within>) {
+            std::uint64_t bits[kGroupBlocks];
+            for (std::size_t blk = first; blk < last; blk += kGroupBlocks) {
+                if (opt.stop.stop_requested()) throw Stopped();
+                const std::size_t m = std::min(kGroupBlocks, last - blk);
+                group_bits(q, s, blk * 64, n, m, opt.check_boxes, x, bits);
+                for (std::size_t b = 0; b < m; ++b) emit(blk + b, bits[b], std::min<std::size_t>(64, n - (blk + b) * 64));
+            }
+        } else {
+            for (std::size_t blk = first; blk < last; ++blk) {
+                if (opt.stop.stop_requested()) throw Stopped();
+                const std::size_t begin = blk * 64, count = std::min<std::size_t>(64, n - begin);
+                emit(blk, block_bits(q, s, begin, count, opt.check_boxes, x), count);
+            }
         }
         per_thread[t] = x;
     });
