@@ -18,6 +18,7 @@
 #include "boxcyl/geometry/pose.hpp"
 #include "boxcyl/geometry/validate.hpp"
 #include "boxcyl/query.hpp"
+#include "boxcyl/signed_distance.hpp"
 #include "boxcyl/version.hpp"
 #else
 #include "boxcyl/compiled.hpp"

@@ -18,4 +18,16 @@ struct Distance {
     Vec3<double> on_box{}, on_cylinder{};
 };
 
+// lower ≤ sd(box, cylinder) ≤ upper, proved for the inputs as given, where sd is the distance when the
+// solids are apart and minus the penetration depth (the length of the shortest translation of the box
+// that separates them) when they overlap; 0 when they touch. Apart: the Distance's enclosure. Overlapping:
+// upper − lower ≤ 2⁻⁴³·L, L the largest of the box centre's offset from the cylinder's centre (each
+// coordinate), the components of the box's half axes, the radius and the half height.
+// normal: a unit vector from the box towards the cylinder (the box moves along −normal to separate);
+// on_box, on_cylinder: a witness pair, on_cylinder − on_box ≈ sd·normal (approximate, not proved).
+struct SignedDistance {
+    double lower = 0, upper = 0;
+    Vec3<double> normal{}, on_box{}, on_cylinder{};
+};
+
 }  // namespace boxcyl
