@@ -94,6 +94,26 @@ Distance distance_unchecked(const OrientedBox<float>& box, const Cylinder<float>
 Distance distance_unchecked(const CanonicalBox<float>& box, const Cylinder<float>& cyl);
 Distance distance_unchecked(const Parallelepiped<float>& box, const Cylinder<float>& cyl);
 
+// ---- Signed distance: apart, or how deep, proved (boxcyl/signed_distance.hpp). ----
+// An enclosure [lower, upper] of the distance, or of minus the penetration depth where the solids
+// overlap; a unit normal from the box towards the cylinder and a witness pair.
+SignedDistance signed_distance(const AlignedBox<double>& box, const Cylinder<double>& cyl);
+SignedDistance signed_distance(const OrientedBox<double>& box, const Cylinder<double>& cyl);
+SignedDistance signed_distance(const CanonicalBox<double>& box, const Cylinder<double>& cyl);
+SignedDistance signed_distance(const Parallelepiped<double>& box, const Cylinder<double>& cyl);
+SignedDistance signed_distance(const AlignedBox<float>& box, const Cylinder<float>& cyl);
+SignedDistance signed_distance(const OrientedBox<float>& box, const Cylinder<float>& cyl);
+SignedDistance signed_distance(const CanonicalBox<float>& box, const Cylinder<float>& cyl);
+SignedDistance signed_distance(const Parallelepiped<float>& box, const Cylinder<float>& cyl);
+SignedDistance signed_distance_unchecked(const AlignedBox<double>& box, const Cylinder<double>& cyl);
+SignedDistance signed_distance_unchecked(const OrientedBox<double>& box, const Cylinder<double>& cyl);
+SignedDistance signed_distance_unchecked(const CanonicalBox<double>& box, const Cylinder<double>& cyl);
+SignedDistance signed_distance_unchecked(const Parallelepiped<double>& box, const Cylinder<double>& cyl);
+SignedDistance signed_distance_unchecked(const AlignedBox<float>& box, const Cylinder<float>& cyl);
+SignedDistance signed_distance_unchecked(const OrientedBox<float>& box, const Cylinder<float>& cyl);
+SignedDistance signed_distance_unchecked(const CanonicalBox<float>& box, const Cylinder<float>& cyl);
+SignedDistance signed_distance_unchecked(const Parallelepiped<float>& box, const Cylinder<float>& cyl);
+
 // ---- The grid query (boxcyl/grid.hpp). ----
 // for_each_cell's compiled part: f(context, i, j, k) for every cell.
 using CellCallback = void (*)(void* context, std::int64_t i, std::int64_t j, std::int64_t k);

@@ -19,7 +19,8 @@ Batch forms take arrays and return a numpy bool array; see :func:`intersects_ali
 :func:`intersects_oriented` and :func:`intersects_parallelepiped`; :mod:`boxcyl.dask` answers
 chunked Dask arrays. :func:`grid_cells` lists the cells of a regular grid that a cylinder meets.
 :func:`distance` bounds how far apart a box and a cylinder are, proved (and
-:func:`distances_aligned` etc. over arrays).
+:func:`distances_aligned` etc. over arrays); :func:`signed_distance` also bounds how deep they
+overlap (and :func:`signed_distances_aligned` etc. over arrays).
 
 Input policy: numbers are real numbers, read as float64 (numpy integer and float arrays, Python
 ints and floats, and object arrays of real numbers such as ``Fraction`` or ``Decimal``, each
@@ -47,6 +48,8 @@ __all__ = [
     "Distances",
     "OrientedBox",
     "Parallelepiped",
+    "SignedDistance",
+    "SignedDistances",
     "distance",
     "distances_aligned",
     "distances_oriented",
@@ -56,6 +59,10 @@ __all__ = [
     "intersects_aligned",
     "intersects_oriented",
     "intersects_parallelepiped",
+    "signed_distance",
+    "signed_distances_aligned",
+    "signed_distances_oriented",
+    "signed_distances_parallelepiped",
     "__version__",
 ]
 
@@ -525,6 +532,56 @@ def distance(box, cylinder):
     return Distance(*_core.distance(box, cylinder))
 
 
+class SignedDistance(_typing.NamedTuple):
+    """How far apart a box and a cylinder are, or how deep they overlap (:func:`signed_distance`).
+
+    ``lower <= sd(box, cylinder) <= upper`` is proved for the float64 values of the shapes, where
+    ``sd`` is the distance when the solids are apart, minus the penetration depth (the length of the
+    shortest translation of the box that separates them) when they overlap, and 0 when they touch.
+    Apart, the bounds are :func:`distance`'s; overlapping, ``upper - lower`` is at most 2**-43 times
+    the largest of the box centre's offset from the cylinder's centre (each coordinate), the
+    components of the box's half axes, the radius and the half height. ``normal`` is a unit
+    vector from the box towards the cylinder (the box moves along ``-normal`` to separate);
+    ``on_box`` and ``on_cylinder`` a witness pair, ``on_cylinder - on_box`` about ``sd * normal``:
+    approximate, not proved."""
+
+    lower: float
+    upper: float
+    normal: _typing.Tuple[float, float, float]
+    on_box: _typing.Tuple[float, float, float]
+    on_cylinder: _typing.Tuple[float, float, float]
+
+
+def signed_distance(box, cylinder):
+    """The signed distance between the closed box and the closed cylinder, as proved bounds: the
+    distance when they are apart, minus the penetration depth when they overlap.
+
+    Parameters
+    ----------
+    box : AlignedBox, OrientedBox or Parallelepiped
+    cylinder : Cylinder
+
+    Returns
+    -------
+    SignedDistance
+        ``(lower, upper, normal, on_box, on_cylinder)``: ``lower <= signed distance <= upper``,
+        proved (apart: :func:`distance`'s bounds; overlapping: at most 2**-43 of the shapes' size
+        apart, as :class:`SignedDistance` says); ``normal`` a unit vector from the box towards the cylinder;
+        ``on_box`` and ``on_cylinder`` a witness pair (approximate). See :class:`SignedDistance`.
+
+    Raises
+    ------
+    ValueError
+        For arguments of the wrong kind (named).
+
+    There are no ``algorithm`` or ``arithmetic`` options: the bounds are certified whatever the
+    rounding. The query runs with the GIL released.
+    """
+    _check_shapes(box, cylinder,
+                  "signed_distances_aligned / signed_distances_oriented / signed_distances_parallelepiped")
+    return SignedDistance(*_core.signed_distance(box, cylinder))
+
+
 # ---- Batch arguments: float64 arrays of shape (M, *tail), M = N or 1, never copied when float64. ---
 
 def _field(name, value, tail):
@@ -814,6 +871,78 @@ def distances_parallelepiped(boxes, cylinders, *, threads=None):
     _check_lengths(box_arrays + cyl)
     return Distances(*_core._distances_parallelepiped(*box_arrays, box_single, *cyl, cylinder_single,
                                                      _threads(threads)))
+
+
+class SignedDistances(_typing.NamedTuple):
+    """The signed distances of a batch (:func:`signed_distances_aligned` etc.): float64 arrays,
+    element i as :func:`signed_distance` gives it for pair i — ``lower`` and ``upper`` of shape (N,),
+    ``normal``, ``on_box`` and ``on_cylinder`` of shape (N, 3)."""
+
+    lower: _np.ndarray
+    upper: _np.ndarray
+    normal: _np.ndarray
+    on_box: _np.ndarray
+    on_cylinder: _np.ndarray
+
+
+def signed_distances_aligned(boxes, cylinders, *, threads=None):
+    """The signed distance of each axis-aligned box to its cylinder, for arrays of them.
+
+    Parameters
+    ----------
+    boxes, cylinders :
+        As for :func:`intersects_aligned` (one box or one cylinder is used with every element).
+    threads : int or None, optional
+        How many threads answer (None or 0, the default: all cores; small batches use fewer).
+
+    Returns
+    -------
+    SignedDistances
+        ``(lower, upper, normal, on_box, on_cylinder)`` arrays of shapes (N,), (N,), (N, 3), (N, 3),
+        (N, 3); element i is :func:`signed_distance` of pair i, exactly.
+
+    Raises
+    ------
+    ValueError
+        For a wrong shape or kind of input, or the first invalid element, named
+        (``"boxes[3].min[1]: is NaN"``). No answer is returned unless every element is valid.
+    KeyboardInterrupt
+        Ctrl-C stops a running batch.
+
+    Each pair is answered by the scalar :func:`signed_distance` (no SIMD filter), on ``threads``
+    threads with the GIL released.
+    """
+    box_arrays, box_single = _aligned_boxes(boxes)
+    cyl, cylinder_single = _cylinders(cylinders)
+    _check_lengths(box_arrays + cyl)
+    return SignedDistances(*_core._signed_distances_aligned(*box_arrays, box_single, *cyl, cylinder_single,
+                                                            _threads(threads)))
+
+
+def signed_distances_oriented(boxes, cylinders, *, threads=None):
+    """The signed distance of each oriented box to its cylinder, for arrays of them.
+
+    ``boxes`` as for :func:`intersects_oriented`; ``cylinders``, ``threads``, the result and the
+    errors as for :func:`signed_distances_aligned`.
+    """
+    box_arrays, box_single = _frame_boxes(boxes)
+    cyl, cylinder_single = _cylinders(cylinders)
+    _check_lengths(box_arrays + cyl)
+    return SignedDistances(*_core._signed_distances_oriented(*box_arrays, box_single, *cyl, cylinder_single,
+                                                             _threads(threads)))
+
+
+def signed_distances_parallelepiped(boxes, cylinders, *, threads=None):
+    """The signed distance of each parallelepiped to its cylinder, for arrays of them.
+
+    ``boxes`` as for :func:`intersects_parallelepiped`; ``cylinders``, ``threads``, the result and
+    the errors as for :func:`signed_distances_aligned`.
+    """
+    box_arrays, box_single = _frame_boxes(boxes, _core.Parallelepiped)
+    cyl, cylinder_single = _cylinders(cylinders)
+    _check_lengths(box_arrays + cyl)
+    return SignedDistances(*_core._signed_distances_parallelepiped(*box_arrays, box_single, *cyl, cylinder_single,
+                                                                   _threads(threads)))
 
 
 # ---- The grid query. ---------------------------------------------------------------------------------

@@ -151,3 +151,25 @@ def distances_aligned(boxes: _AlignedBoxes, cylinders: _Cylinders, *, threads: O
 def distances_oriented(boxes: _OrientedBoxes, cylinders: _Cylinders, *, threads: Optional[int] = ...) -> Distances: ...
 def distances_parallelepiped(boxes: _Parallelepipeds, cylinders: _Cylinders, *,
                              threads: Optional[int] = ...) -> Distances: ...
+
+class SignedDistance(NamedTuple):
+    lower: float
+    upper: float
+    normal: _Vector3
+    on_box: _Vector3
+    on_cylinder: _Vector3
+
+class SignedDistances(NamedTuple):
+    lower: npt.NDArray[np.float64]
+    upper: npt.NDArray[np.float64]
+    normal: npt.NDArray[np.float64]
+    on_box: npt.NDArray[np.float64]
+    on_cylinder: npt.NDArray[np.float64]
+
+def signed_distance(box: Union[AlignedBox, OrientedBox, Parallelepiped], cylinder: Cylinder) -> SignedDistance: ...
+def signed_distances_aligned(boxes: _AlignedBoxes, cylinders: _Cylinders, *,
+                             threads: Optional[int] = ...) -> SignedDistances: ...
+def signed_distances_oriented(boxes: _OrientedBoxes, cylinders: _Cylinders, *,
+                              threads: Optional[int] = ...) -> SignedDistances: ...
+def signed_distances_parallelepiped(boxes: _Parallelepipeds, cylinders: _Cylinders, *,
+                                    threads: Optional[int] = ...) -> SignedDistances: ...

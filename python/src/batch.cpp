@@ -13,8 +13,8 @@
 // scalar clearance query) per element on those threads, each element checked by boxcyl::is_valid. An element that fails a check is named by boxcyl::validate
 // ("boxes[17].max[0]: is less than boxes[17].min[0]"), and the batch reports the first by index.
 // Every loop looks at the stop token (Ctrl-C): the batch API before each 64-box block, the others
-// before each element. The distances (distances()) are the scalar boxcyl::distance per element, on
-// those threads, each element checked as above.
+// before each element. The distances (distances()) are the scalar boxcyl::distance (or
+// boxcyl::signed_distance) per element, on those threads, each element checked as above.
 #if defined(__SSE2__)
 #include <emmintrin.h>  // the aligned boxes' gather, two at a time
 #include <xmmintrin.h>  // _mm_prefetch
@@ -309,6 +309,16 @@ std::string run(const Boxes& boxes, const CylinderFields& cylinders, const Batch
 // make a thread worth starting.
 constexpr Index kDistancePerThread = 64;
 
+// Element i's bounds and witness pair.
+void store(const DistanceBatch& b, Index i, double lower, double upper, const Vec& on_box, const Vec& on_cylinder) {
+    b.lower[i] = lower;
+    b.upper[i] = upper;
+    for (std::size_t k = 0; k < 3; ++k) {
+        b.on_box[3 * i + static_cast<Index>(k)] = on_box[k];
+        b.on_cylinder[3 * i + static_cast<Index>(k)] = on_cylinder[k];
+    }
+}
+
 template <class BoxAt>
 std::string distances_of(const BoxAt& box_at, const CylinderFields& cyl_at, const DistanceBatch& b,
                          const std::stop_token& stop) {
@@ -325,12 +335,13 @@ std::string distances_of(const BoxAt& box_at, const CylinderFields& cyl_at, cons
                 failure.record(2 * i + 1, boxcyl::validate(cyl, element_name("cylinder", "cylinders", false, i)).message());
                 return;
             }
-            const boxcyl::Distance d = boxcyl::distance_unchecked(box, cyl);
-            b.lower[i] = d.lower;
-            b.upper[i] = d.upper;
-            for (std::size_t k = 0; k < 3; ++k) {
-                b.on_box[3 * i + static_cast<Index>(k)] = d.on_box[k];
-                b.on_cylinder[3 * i + static_cast<Index>(k)] = d.on_cylinder[k];
+            if (b.normal != nullptr) {
+                const boxcyl::SignedDistance d = boxcyl::signed_distance_unchecked(box, cyl);
+                store(b, i, d.lower, d.upper, d.on_box, d.on_cylinder);
+                for (std::size_t k = 0; k < 3; ++k) b.normal[3 * i + static_cast<Index>(k)] = d.normal[k];
+            } else {
+                const boxcyl::Distance d = boxcyl::distance_unchecked(box, cyl);
+                store(b, i, d.lower, d.upper, d.on_box, d.on_cylinder);
             }
         }
     });

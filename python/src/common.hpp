@@ -151,7 +151,8 @@ std::string intersects(const FrameFields<Parallelepiped>& boxes, const CylinderF
                        const std::stop_token& stop);
 
 // One distance batch: n elements, answers into lower[i], upper[i] and rows i of on_box and on_cylinder
-// (C-contiguous (n, 3) arrays), as the scalar boxcyl::distance gives them.
+// (C-contiguous (n, 3) arrays), as the scalar boxcyl::distance gives them; with `normal`, the signed
+// distance's, as the scalar boxcyl::signed_distance gives them, its normals into rows i of `normal`.
 struct DistanceBatch {
     Index n = 0;
     bool box_single = false, cylinder_single = false;  // given once for all (broadcast)
@@ -160,13 +161,14 @@ struct DistanceBatch {
     double* upper = nullptr;
     double* on_box = nullptr;
     double* on_cylinder = nullptr;
+    double* normal = nullptr;  // given: the signed distance
 };
 
 // Whether the batch is short enough to run on the calling thread, uninterrupted.
 bool brief(const DistanceBatch& b);
-// The distances of the batch (the single box and cylinder already validated): the scalar query per
-// element, each element checked first. Returns the message naming the first invalid element by index,
-// or an empty string. Throws boxcyl::batch::Stopped once `stop` is requested.
+// The distances (or signed distances) of the batch (the single box and cylinder already validated):
+// the scalar query per element, each element checked first. Returns the message naming the first
+// invalid element by index, or an empty string. Throws boxcyl::batch::Stopped once `stop` is requested.
 std::string distances(const AlignedFields& boxes, const CylinderFields& cylinders, const DistanceBatch& b,
                       const std::stop_token& stop);
 std::string distances(const FrameFields<OrientedBox>& boxes, const CylinderFields& cylinders, const DistanceBatch& b,

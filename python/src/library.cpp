@@ -1,7 +1,7 @@
 // The library code the module calls, compiled here in one translation unit so that the exact query's
 // templates are instantiated once: the double-precision functions of boxcyl/compiled.hpp that the
 // binding files use (as src/lib defines them all for the compiled library boxcyl::boxcyl) — the scalar
-// queries, the distance, the batch API with its header kernel (intersects and within_distance), the
+// queries, the distance and the signed distance, the batch API with its header kernel (intersects and within_distance), the
 // grid query — and the scalar exact default that the AVX2 and AVX-512 kernels (src/batch) call
 // (src/batch/pipeline.cpp's explicit instantiations).
 #include "boxcyl/batch.hpp"
@@ -9,6 +9,7 @@
 #include "boxcyl/distance.hpp"
 #include "boxcyl/grid.hpp"
 #include "boxcyl/query.hpp"
+#include "boxcyl/signed_distance.hpp"
 
 // The calls into the templates come before boxcyl/compiled.hpp is included: after it, a call naming
 // boxcyl::batch::intersects or boxcyl::for_each_cell would also find the compiled declarations.
@@ -116,6 +117,26 @@ Distance distance(const OrientedBox<double>& box, const Cylinder<double>& cyl) {
 }
 Distance distance(const Parallelepiped<double>& box, const Cylinder<double>& cyl) {
     return boxcyl::distance<Parallelepiped<double>, double>(box, cyl);
+}
+
+// The signed distance's templates by name, as the distance's.
+SignedDistance signed_distance_unchecked(const AlignedBox<double>& box, const Cylinder<double>& cyl) {
+    return boxcyl::signed_distance_unchecked<AlignedBox<double>, double>(box, cyl);
+}
+SignedDistance signed_distance_unchecked(const OrientedBox<double>& box, const Cylinder<double>& cyl) {
+    return boxcyl::signed_distance_unchecked<OrientedBox<double>, double>(box, cyl);
+}
+SignedDistance signed_distance_unchecked(const Parallelepiped<double>& box, const Cylinder<double>& cyl) {
+    return boxcyl::signed_distance_unchecked<Parallelepiped<double>, double>(box, cyl);
+}
+SignedDistance signed_distance(const AlignedBox<double>& box, const Cylinder<double>& cyl) {
+    return boxcyl::signed_distance<AlignedBox<double>, double>(box, cyl);
+}
+SignedDistance signed_distance(const OrientedBox<double>& box, const Cylinder<double>& cyl) {
+    return boxcyl::signed_distance<OrientedBox<double>, double>(box, cyl);
+}
+SignedDistance signed_distance(const Parallelepiped<double>& box, const Cylinder<double>& cyl) {
+    return boxcyl::signed_distance<Parallelepiped<double>, double>(box, cyl);
 }
 
 void for_each_cell_erased(const Grid& g, const Cylinder<double>& c, CellCallback f, void* context, GridStats* stats) {

@@ -5,8 +5,9 @@
 // quaternions, transforms and end points), batch.cpp (the batch forms over float64 arrays), grid.cpp
 // (the grid query); common.hpp is what they share, library.cpp the library code they call
 // (boxcyl/compiled.hpp's double queries). This file is the module: its functions, each a thin layer
-// over those areas — the scalar query and distance, the named constructors, the arrays of the batch
-// forms and batch distances, the grid — with long work run interruptibly (bindings.hpp).
+// over those areas — the scalar query, distance and signed distance, the named constructors, the
+// arrays of the batch forms and batch distances, the grid — with long work run interruptibly
+// (bindings.hpp).
 #include <pybind11/numpy.h>  // input arrays, bool and int64 output arrays
 #include <pybind11/stl.h>    // std::array <-> Python sequences
 
@@ -51,6 +52,18 @@ py::tuple distance(const Box& box, const Cylinder& cyl) {
     return py::make_tuple(d.lower, d.upper, tuple(d.on_box), tuple(d.on_cylinder));
 }
 
+// (lower, upper, normal, on_box, on_cylinder); the package's signed_distance() names them.
+template <class Box>
+py::tuple signed_distance(const Box& box, const Cylinder& cyl) {
+    boxcyl::SignedDistance d;
+    {
+        py::gil_scoped_release release;
+        require_fp_environment();
+        d = boxcyl::signed_distance(box, cyl);
+    }
+    return py::make_tuple(d.lower, d.upper, tuple(d.normal), tuple(d.on_box), tuple(d.on_cylinder));
+}
+
 template <class Box>
 void def_intersects(py::module_& m) {
     m.def("intersects", &query<Box>, "box"_a, "cylinder"_a, "algorithm"_a = boxcyl::Algorithm::inequalities,
@@ -60,6 +73,9 @@ void def_intersects(py::module_& m) {
           "within_distance(box, cylinder, margin) -> bool (exact), with the GIL released.");
     m.def("distance", &distance<Box>, "box"_a, "cylinder"_a,
           "distance(box, cylinder) -> (lower, upper, on_box, on_cylinder), proved bounds, with the GIL released.");
+    m.def("signed_distance", &signed_distance<Box>, "box"_a, "cylinder"_a,
+          "signed_distance(box, cylinder) -> (lower, upper, normal, on_box, on_cylinder), proved bounds, with the "
+          "GIL released.");
 }
 
 // ---- The batch forms' arrays: float64, shape (M, *tail), M = N or 1; the package shapes them. ----
@@ -140,14 +156,16 @@ py::array_t<bool> intersects_frames(const py::array& box_center, const py::array
     return run_batch(boxes, cyls, n, box_single, cylinder_single, algorithm, arithmetic, threads, margin);
 }
 
-// ---- The batch distances: (lower, upper, on_box, on_cylinder) arrays of shapes (N,), (N,), (N, 3), (N, 3). ----
+// ---- The batch distances: (lower, upper, on_box, on_cylinder) arrays of shapes (N,), (N,), (N, 3), (N, 3); ----
+// ---- signed (Signed = true): (lower, upper, normal, on_box, on_cylinder), normal of shape (N, 3). ----
 
-template <class Boxes>
+template <bool Signed, class Boxes>
 py::tuple run_distances(const Boxes& boxes, const CylinderFields& cylinders, Index n, bool box_single,
                         bool cylinder_single, unsigned threads) {
     if (box_single) validated(boxes(0), "box");
     if (cylinder_single) validated(cylinders(0), "cylinder");
     py::array_t<double> lower(n), upper(n), on_box({n, Index{3}}), on_cylinder({n, Index{3}});
+    py::array_t<double> normal({Signed ? n : Index{0}, Index{3}});
     const DistanceBatch b{n,
                           box_single,
                           cylinder_single,
@@ -155,23 +173,28 @@ py::tuple run_distances(const Boxes& boxes, const CylinderFields& cylinders, Ind
                           lower.mutable_data(),
                           upper.mutable_data(),
                           on_box.mutable_data(),
-                          on_cylinder.mutable_data()};
+                          on_cylinder.mutable_data(),
+                          Signed ? normal.mutable_data() : nullptr};
     std::string failure;
     run_interruptibly(brief(b), [&](const std::stop_token& stop) { failure = distances(boxes, cylinders, b, stop); });
     if (!failure.empty()) throw py::value_error(failure);
-    return py::make_tuple(lower, upper, on_box, on_cylinder);
+    if constexpr (Signed)
+        return py::make_tuple(lower, upper, normal, on_box, on_cylinder);
+    else
+        return py::make_tuple(lower, upper, on_box, on_cylinder);
 }
 
+template <bool Signed>
 py::tuple distances_aligned(const py::array& min, const py::array& max, bool box_single, const py::array& center,
                             const py::array& axis, const py::array& radius, const py::array& height,
                             bool cylinder_single, unsigned threads) {
     const AlignedFields boxes{field(min, "min", {3}), field(max, "max", {3})};
     const CylinderFields cyls = cylinder_fields(center, axis, radius, height);
     const Index n = batch_length({&boxes.min, &boxes.max, &cyls.center, &cyls.axis, &cyls.radius, &cyls.height});
-    return run_distances(boxes, cyls, n, box_single, cylinder_single, threads);
+    return run_distances<Signed>(boxes, cyls, n, box_single, cylinder_single, threads);
 }
 
-template <class Box>
+template <bool Signed, class Box>
 py::tuple distances_frames(const py::array& box_center, const py::array& axes, const py::array& extents,
                            bool box_single, const py::array& center, const py::array& axis, const py::array& radius,
                            const py::array& height, bool cylinder_single, unsigned threads) {
@@ -180,7 +203,7 @@ py::tuple distances_frames(const py::array& box_center, const py::array& axes, c
     const CylinderFields cyls = cylinder_fields(center, axis, radius, height);
     const Index n = batch_length(
         {&boxes.center, &boxes.axes, &boxes.extents, &cyls.center, &cyls.axis, &cyls.radius, &cyls.height});
-    return run_distances(boxes, cyls, n, box_single, cylinder_single, threads);
+    return run_distances<Signed>(boxes, cyls, n, box_single, cylinder_single, threads);
 }
 
 // ---- The grid query: an (M, 3) int64 array of cell indices. ----
@@ -233,13 +256,19 @@ PYBIND11_MODULE(_core, m) {
           "box_single"_a, "center"_a, "axis"_a, "radius"_a, "height"_a, "cylinder_single"_a, "algorithm"_a,
           "arithmetic"_a, "threads"_a, "margin"_a);
 
-    // The batch distances: the package's distances_aligned etc. shape the arguments.
-    m.def("_distances_aligned", &distances_aligned, "min"_a, "max"_a, "box_single"_a, "center"_a, "axis"_a,
+    // The batch distances and signed distances: the package's distances_aligned etc. shape the arguments.
+    m.def("_distances_aligned", &distances_aligned<false>, "min"_a, "max"_a, "box_single"_a, "center"_a, "axis"_a,
           "radius"_a, "height"_a, "cylinder_single"_a, "threads"_a);
-    m.def("_distances_oriented", &distances_frames<OrientedBox>, "box_center"_a, "axes"_a, "extents"_a,
+    m.def("_distances_oriented", &distances_frames<false, OrientedBox>, "box_center"_a, "axes"_a, "extents"_a,
           "box_single"_a, "center"_a, "axis"_a, "radius"_a, "height"_a, "cylinder_single"_a, "threads"_a);
-    m.def("_distances_parallelepiped", &distances_frames<Parallelepiped>, "box_center"_a, "axes"_a, "extents"_a,
+    m.def("_distances_parallelepiped", &distances_frames<false, Parallelepiped>, "box_center"_a, "axes"_a,
+          "extents"_a, "box_single"_a, "center"_a, "axis"_a, "radius"_a, "height"_a, "cylinder_single"_a, "threads"_a);
+    m.def("_signed_distances_aligned", &distances_aligned<true>, "min"_a, "max"_a, "box_single"_a, "center"_a,
+          "axis"_a, "radius"_a, "height"_a, "cylinder_single"_a, "threads"_a);
+    m.def("_signed_distances_oriented", &distances_frames<true, OrientedBox>, "box_center"_a, "axes"_a, "extents"_a,
           "box_single"_a, "center"_a, "axis"_a, "radius"_a, "height"_a, "cylinder_single"_a, "threads"_a);
+    m.def("_signed_distances_parallelepiped", &distances_frames<true, Parallelepiped>, "box_center"_a, "axes"_a,
+          "extents"_a, "box_single"_a, "center"_a, "axis"_a, "radius"_a, "height"_a, "cylinder_single"_a, "threads"_a);
 
     m.def("_grid_cells", &cells_of, "origin"_a, "cell_size"_a, "counts"_a, "cylinder"_a, "margin"_a, "max_cells"_a,
           "The cells (i, j, k) of the grid within `margin` of the cylinder (0: that it meets), sorted; "

@@ -51,6 +51,12 @@ GOOD = textwrap.dedent("""
     bounds: npt.NDArray[np.float64] = gaps.lower
     gaps = boxcyl.distances_oriented([obox], [cyl])
     gaps = boxcyl.distances_parallelepiped((np.zeros((4, 3)), np.zeros((4, 3, 3)), np.ones((4, 3))), rod, threads=None)
+    depth: boxcyl.SignedDistance = boxcyl.signed_distance(obox, rod)
+    lo = depth.lower + depth.upper + depth.normal[0] + depth.on_box[1] + depth.on_cylinder[2]
+    depths: boxcyl.SignedDistances = boxcyl.signed_distances_aligned([box], cyl, threads=1)
+    bounds = depths.normal
+    depths = boxcyl.signed_distances_oriented((np.zeros((4, 3)), np.tile(np.eye(3), (4, 1, 1)), np.ones((4, 3))), rod)
+    depths = boxcyl.signed_distances_parallelepiped([pbox], cyl, threads=None)
     print(boxcyl.__version__, boxcyl.Algorithm.oracle.name, hash(cyl))
 """)
 

@@ -1,7 +1,8 @@
 // A consumer of the compiled library boxcyl::boxcyl: the double and float queries (scalar for the three
-// box kinds, batch, grid) from the light header <boxcyl/boxcyl.hpp>. Exits non-zero, saying why, when an
-// answer is wrong. Also compiles against the header-only templates (-DBOXCYL_HEADER_ONLY
-// -DBOXCYL_HAS_EXACT, with GMP), which is how scripts/compile-time.sh compares the two.
+// box kinds, distance and signed distance, batch, grid) from the light header <boxcyl/boxcyl.hpp>.
+// Exits non-zero, saying why, when an answer is wrong. Also compiles against the header-only templates
+// (-DBOXCYL_HEADER_ONLY -DBOXCYL_HAS_EXACT, with GMP), which is how scripts/compile-time.sh compares
+// the two.
 #include <cmath>    // std::nextafter
 #include <cstdint>  // std::uint64_t
 #include <cstdio>   // std::printf
@@ -53,6 +54,14 @@ void scalar(const char* type) {
     const boxcyl::Distance d = boxcyl::distance(aligned, far);
     check(d.lower <= 1 && d.upper >= 1 && d.upper - d.lower <= 4 * std::nextafter(1.0, 2.0) - 4, "distance encloses 1");
     check(d.on_box[0] == 1 && boxcyl::distance(oriented, touching).upper == 0, "distance witnesses and touching");
+    // The signed distance: apart, the distance's bounds; a cylinder over x in [0.5, 4.5] overlaps by 0.5
+    // (its bounds at most 2^-40 times the largest length, 2.5, apart).
+    const boxcyl::Cylinder<T> deep{{T(2.5), 0, 0}, {0, 0, 5}, 2, 1};
+    const boxcyl::SignedDistance s = boxcyl::signed_distance(aligned, deep);
+    check(s.lower <= -0.5 && s.upper >= -0.5 && s.upper - s.lower <= 0x1p-38 && s.normal[0] > 0.999,
+          "signed distance encloses -0.5");
+    const boxcyl::SignedDistance apart_sd = boxcyl::signed_distance(canonical, far);
+    check(apart_sd.lower == d.lower && apart_sd.upper == d.upper, "signed distance apart is the distance");
 }
 
 // Three aligned boxes: touching, apart by one ulp, overlapping; as arrays, as rows and as oriented boxes.

@@ -1,5 +1,6 @@
 // See distance.hpp. The lines are read by jsonl_query (parse_distance_line) and answered through
-// query_call (run_distance_query); this file writes the answers and holds the subcommand.
+// query_call (run_distance_query, run_signed_distance_query); this file writes the answers and holds
+// the subcommand.
 #include "distance.hpp"
 
 #include <array>         // to_chars' buffer
@@ -33,6 +34,9 @@ SEMANTICS
   The Euclidean distance between the closed solids (0 when they touch or overlap), for the
   numbers as read (each the nearest double to the text). Every answer is certified, so there
   is no --algorithm or --arithmetic to choose (given, they are refused).
+  With --signed, the signed distance: the distance when the solids are apart, minus the
+  penetration depth (the length of the shortest translation of the box that separates
+  them) when they overlap, 0 when they touch.
 
 OUTPUT
   Exactly one JSON line per input line, in input order:
@@ -45,6 +49,14 @@ OUTPUT
   a nearest pair, one point near each solid: approximate, not proved (for solids that meet,
   near a common point). Every number is written in the shortest form that reads back as the
   same double (1, 0.1, 5e-324). Bad lines, long lines and memory as for `boxcyl intersect`.
+  With --signed each answer has a "normal" too:
+    {"id": ID, "lower": L, "upper": U, "normal": [x, y, z], "on_box": [x, y, z],
+     "on_cylinder": [x, y, z]}
+  L <= signed distance <= U is proved: apart, the bounds above; overlapping, U - L is at
+  most 2^-43 times the shapes' size (the largest of the box centre's offset from the
+  cylinder's centre, the half axes' components, the radius and the half height). normal is a unit vector from the box towards the cylinder (the box moves along
+  -normal to separate); on_box and on_cylinder are a witness pair, on_cylinder - on_box
+  about the signed distance times normal (approximate, not proved).
 
 EXAMPLE
   echo '{"box":{"min":[0,0,0],"max":[1,1,1]},"cylinder":{"center":[3,0.5,0.5],"axis":[0,0,1],"radius":1,"height":1}}' | boxcyl distance
@@ -71,11 +83,12 @@ void append_point(std::string& s, const Vec3<double>& p) {
     s += ']';
 }
 
-LineAnswer answer_distance_line_unguarded(std::string_view text, std::size_t line_number) {
+LineAnswer answer_distance_line_unguarded(std::string_view text, std::size_t line_number, bool signed_distance) {
     const ParsedLine p = parse_distance_line(text, line_number);
     if (!p.query) return {format_error(p.id, p.error), false};
     const std::string where = "line " + std::to_string(line_number) + ": ";
     try {
+        if (signed_distance) return {format_signed_distance(p.id, run_signed_distance_query(*p.query)), true};
         return {format_distance(p.id, run_distance_query(*p.query)), true};
     } catch (const std::bad_alloc&) {
         return {format_error(p.id, where + "out of memory answering the line"), false};
@@ -102,9 +115,26 @@ std::string format_distance(const std::string& id, const Distance& d) {
     return s;
 }
 
-LineAnswer answer_distance_line(std::string_view text, std::size_t line_number) {
+std::string format_signed_distance(const std::string& id, const SignedDistance& d) {
+    std::string s = "{";
+    if (!id.empty()) s += "\"id\": " + id + ", ";
+    s += "\"lower\": ";
+    append_number(s, d.lower);
+    s += ", \"upper\": ";
+    append_number(s, d.upper);
+    s += ", \"normal\": ";
+    append_point(s, d.normal);
+    s += ", \"on_box\": ";
+    append_point(s, d.on_box);
+    s += ", \"on_cylinder\": ";
+    append_point(s, d.on_cylinder);
+    s += '}';
+    return s;
+}
+
+LineAnswer answer_distance_line(std::string_view text, std::size_t line_number, bool signed_distance) {
     try {
-        return answer_distance_line_unguarded(text, line_number);
+        return answer_distance_line_unguarded(text, line_number, signed_distance);
     } catch (const std::bad_alloc&) {
         return {format_error({}, "line " + std::to_string(line_number) + ": out of memory answering the line"), false};
     } catch (const std::exception& e) {
@@ -113,17 +143,22 @@ LineAnswer answer_distance_line(std::string_view text, std::size_t line_number) 
 }
 
 StreamCounts process_distance_stream(std::istream& in, std::ostream& out, const DistanceOptions& opt) {
-    return answer_lines(in, out, opt.max_line_bytes, opt.threads,
-                        [](std::string_view line, std::size_t n) { return answer_distance_line(line, n); });
+    return answer_lines(in, out, opt.max_line_bytes, opt.threads, [&opt](std::string_view line, std::size_t n) {
+        return answer_distance_line(line, n, opt.signed_distance);
+    });
 }
 
 void add_distance_command(CLI::App& app, DistanceCommand& cmd) {
     cmd.app = app.add_subcommand(
-        "distance", "Answer one query per input line: how far apart are the box and the cylinder (proved bounds)?");
+        "distance", "Answer one query per input line: how far apart are the box and the cylinder (proved bounds; "
+                    "--signed: or how deep they overlap)?");
     cmd.app->footer(std::string(distance_help) + "\n" + exit_status_help);
     cmd.app->add_option("--threads", cmd.options.threads,
                         "Threads answering lines (default 1; 0: one per core); the output is the same, in input order")
         ->check(CLI::Range(0u, 1024u));
+    cmd.app->add_flag("--signed", cmd.options.signed_distance,
+                      "The signed distance: minus the penetration depth where the solids overlap; each answer "
+                      "has a \"normal\" too");
     cmd.app->add_option("file", cmd.file, "JSON Lines input; '-' or none: standard input");
     add_max_line_bytes_option(*cmd.app, cmd.options.max_line_bytes);
     // Accepted only to be refused with a reason (run_distance): intersect's users will try them.

@@ -86,6 +86,8 @@ bool needs_hull_for_frame(const Query& q, const QueryOptions& opt);
 // boxcyl::distance for the query's box and cylinder (`boxcyl distance`; the margin is not looked at).
 // Needs the exact backend: without it, throws std::invalid_argument saying so.
 Distance run_distance_query(const Query& q);
+// boxcyl::signed_distance for the same (`boxcyl distance --signed`), under the same conditions.
+SignedDistance run_signed_distance_query(const Query& q);
 
 // Output lines, without the newline. `id` is JSON text or empty (no "id" key).
 std::string format_answer(const std::string& id, bool intersect);

@@ -2,7 +2,7 @@
 // not depend on which algorithms exist).
 #include <array>    // box axes
 #include <cmath>    // std::fabs
-#include <stdexcept>  // a margin or a distance without the exact backend
+#include <stdexcept>  // a margin or a (signed) distance without the exact backend
 #include <variant>  // std::visit over the box kinds
 
 #if defined(BOXCYL_CLI_EXACT)
@@ -74,6 +74,15 @@ Distance run_distance_query(const Query& q) {
 #else
     (void)q;
     throw std::invalid_argument("distance: needs the exact backend (this boxcyl was built without GMP/FLINT)");
+#endif
+}
+
+SignedDistance run_signed_distance_query(const Query& q) {
+#if defined(BOXCYL_CLI_EXACT)
+    return std::visit([&](const auto& box) { return boxcyl::signed_distance(box, q.cylinder); }, q.box);
+#else
+    (void)q;
+    throw std::invalid_argument("signed distance: needs the exact backend (this boxcyl was built without GMP/FLINT)");
 #endif
 }
 

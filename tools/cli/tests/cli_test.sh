@@ -936,6 +936,55 @@ distance_basic)
         done
     fi
     ;;
+distance_signed)
+    # boxcyl distance --signed: the same lines; apart, the distance's line with a "normal" too; overlapping,
+    # minus the penetration depth, at most 2^-43 times the shapes' size wide; bad lines as
+    # without it; without --signed no normal.
+    box='"box": {"min": [0, 0, 0], "max": [1, 1, 1]}'
+    printf '%s\n' \
+      '{"id": "deep", "box": {"min": [-1, -1, -1], "max": [1, 1, 1]}, "cylinder": {"center": [1.5, 0, 0], "axis": [0, 0, 1], "radius": 1, "height": 10}}' \
+      "{\"id\": \"one\", $box, \"cylinder\": {\"center\": [3, 0.5, 0.5], \"axis\": [0, 0, 1], \"radius\": 1, \"height\": 1}}" \
+      "{\"id\": \"bad\", $box, \"cylinder\": {\"center\": [2, 0.5, 0.5], \"axis\": [0, 0, 0], \"radius\": 1, \"height\": 1}}" \
+      "{\"id\": \"m\", $box, \"cylinder\": {\"center\": [2, 0.5, 0.5], \"axis\": [0, 0, 1], \"radius\": 1, \"height\": 1}, \"margin\": 1}" \
+      >"$work/in"
+    run 1 distance "$work/in"
+    mv "$work/out" "$work/unsigned"
+    grep -q '"normal"' "$work/unsigned" && fail "a normal without --signed: $(cat "$work/unsigned")"
+    run 1 distance --signed "$work/in"
+    [[ $(wc -l <"$work/out") == 4 ]] || fail "expected 4 output lines, got $(wc -l <"$work/out")"
+    [[ -s $work/err ]] && fail "stderr not empty: $(head -c 300 "$work/err")"
+    sed -n 1p "$work/out" |
+        grep -q '^{"id": "deep", "lower": [0-9.e+-]*, "upper": [0-9.e+-]*, "normal": \[.*\], "on_box": \[.*\], "on_cylinder": \[.*\]}$' ||
+        fail "line 1 is not a signed distance line: $(sed -n 1p "$work/out")"
+    # Overlapping by 0.5 along x: lower <= -0.5 <= upper, at most 5 * 2^-43 apart (the half height is 5);
+    # the normal (1, 0, 0).
+    sed -n 1p "$work/out" | awk -F'[:,] *' '{ lo = $4 + 0; hi = $6 + 0; exit !(lo <= -0.5 && hi >= -0.5 && hi - lo <= 5 * 2 ^ -43) }' ||
+        fail "line 1: not a tight enclosure of -0.5: $(sed -n 1p "$work/out")"
+    sed -n 1p "$work/out" | grep -o '"normal": \[[^]]*\]' |
+        awk -F'[][,] *' '{ x = $2 + 0; y = $3 + 0; z = $4 + 0; exit !(x > 1 - 1e-9 && x < 1 + 1e-9 && y * y + z * z < 1e-18) }' ||
+        fail "line 1: the normal is not (1, 0, 0): $(sed -n 1p "$work/out")"
+    # Apart, bad lines and a margin: the distance's lines, a normal added to the answers.
+    sed -n 2p "$work/out" | grep -q '^{"id": "one", "lower": [0-9.e+-]*, "upper": [0-9.e+-]*, "normal": \[1, ' ||
+        fail "line 2: $(sed -n 2p "$work/out")"
+    sed 's/, "normal": \[[^]]*\]//' "$work/out" | tail -n 3 >"$work/stripped"
+    tail -n 3 "$work/unsigned" >"$work/want"
+    same_bytes "$work/stripped" "$work/want"
+    # Threads, standard input and the help.
+    for t in 2 0; do
+        mv "$work/out" "$work/serial"
+        run 1 distance --signed --threads $t "$work/in"
+        same_bytes "$work/out" "$work/serial"
+    done
+    cp "$work/in" "$work/stdin"
+    run 1 distance --signed
+    same_bytes "$work/out" "$work/serial"
+    rm "$work/stdin"
+    run 2 distance --signed --arithmetic float "$work/in"
+    run 0 distance --help
+    for phrase in "--signed" '"normal"' "penetration depth" "2^-43"; do
+        contains "$work/out" "$phrase"
+    done
+    ;;
 distance_threads)
     # --threads N: byte for byte the single-threaded output and exit status, in input order, from a
     # file and from a pipe (several blocks of lines, bad lines among them).

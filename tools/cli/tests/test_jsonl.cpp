@@ -1064,5 +1064,121 @@ TEST(JsonlDistance, ThreadedOutputIsByteIdenticalToSerialInInputOrder) {
     }
 }
 
+// --- `boxcyl distance --signed`: the same lines, the signed distance with a normal ---
+
+// The box [-1, 1]^3 and a tall cylinder of radius 1 whose axis is x = 1.5: they overlap by 0.5 along x.
+// The shapes' size L is the half height, 5: the bounds are at most 5·2^-43 apart.
+const std::string kDeep = R"({"id": "deep", "box": {"min": [-1, -1, -1], "max": [1, 1, 1]}, )"
+                          R"("cylinder": {"center": [1.5, 0, 0], "axis": [0, 0, 1], "radius": 1, "height": 10}})";
+
+// The line without its "normal" key: what `boxcyl distance` writes for a pair that is apart.
+std::string without_normal(std::string text) {
+    const std::size_t at = text.find(R"(, "normal": [)");
+    if (at != std::string::npos) text.erase(at, text.find(']', at) + 1 - at);
+    return text;
+}
+
+TEST(JsonlDistance, SignedOverlapIsMinusTheDepth) {
+    const LineAnswer a = answer_distance_line(kDeep, 1, true);
+    ASSERT_TRUE(a.good) << a.text;
+    EXPECT_EQ(a.text.rfind(R"({"id": "deep", "lower": )", 0), 0u) << a.text;
+    const nlohmann::json j = nlohmann::json::parse(a.text);
+    ASSERT_EQ(j.size(), 6u) << a.text;  // id, lower, upper, normal, on_box, on_cylinder
+    const double lower = j.at("lower").get<double>(), upper = j.at("upper").get<double>();
+    EXPECT_LE(lower, -0.5) << a.text;
+    EXPECT_GE(upper, -0.5) << a.text;
+    EXPECT_LE(upper - lower, 5 * 0x1p-43) << a.text;  // L: the half height
+    const auto normal = j.at("normal").get<std::vector<double>>();
+    const auto on_box = j.at("on_box").get<std::vector<double>>();
+    const auto on_cylinder = j.at("on_cylinder").get<std::vector<double>>();
+    ASSERT_EQ(normal.size(), 3u);
+    ASSERT_EQ(on_box.size(), 3u);
+    ASSERT_EQ(on_cylinder.size(), 3u);
+    EXPECT_NEAR(normal[0], 1.0, 1e-9) << a.text;
+    EXPECT_NEAR(normal[1], 0.0, 1e-9) << a.text;
+    EXPECT_NEAR(normal[2], 0.0, 1e-9) << a.text;
+    for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(on_cylinder[k] - on_box[k], -0.5 * normal[k], 1e-9) << a.text;
+    // Without --signed the same line is 0 apart.
+    EXPECT_EQ(answer_distance_line(kDeep, 1).text.rfind(R"({"id": "deep", "lower": 0, "upper": 0, "on_box": [)", 0), 0u);
+}
+
+TEST(JsonlDistance, SignedApartIsTheDistanceWithANormal) {
+    const std::string line = R"({"id": "one", "box": {"min": [0, 0, 0], "max": [1, 1, 1]}, )"
+                             R"("cylinder": {"center": [3, 0.5, 0.5], "axis": [0, 0, 1], "radius": 1, "height": 1}})";
+    const LineAnswer a = answer_distance_line(line, 1, true);
+    ASSERT_TRUE(a.good) << a.text;
+    EXPECT_EQ(without_normal(a.text), answer_distance_line(line, 1).text);
+    const auto normal = nlohmann::json::parse(a.text).at("normal").get<std::vector<double>>();
+    ASSERT_EQ(normal.size(), 3u);
+    EXPECT_NEAR(normal[0], 1.0, 1e-12) << a.text;
+    EXPECT_NEAR(std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]), 1.0, 1e-12);
+}
+
+TEST(JsonlDistance, SignedTextAndNumbersThatRoundTrip) {
+    SignedDistance d;
+    d.lower = -0.5000000000000001;
+    d.upper = -0.5;
+    d.normal = {1, 0, -0.0};
+    d.on_box = {1, 5e-324, 1.7976931348623157e308};
+    d.on_cylinder = {0.5, -2.5, 1e23};
+    EXPECT_EQ(format_signed_distance("7", d),
+              R"({"id": 7, "lower": -0.5000000000000001, "upper": -0.5, "normal": [1, 0, -0], "on_box": [1, 5e-324, )"
+              R"(1.7976931348623157e+308], "on_cylinder": [0.5, -2.5, 1e+23]})");
+    d.upper = std::numeric_limits<double>::infinity();
+    EXPECT_TRUE(nlohmann::json::parse(format_signed_distance("", d)).at("upper").is_null());
+}
+
+TEST(JsonlDistance, SignedBadLinesAreReportedAsWithoutIt) {
+    const std::string with_margin = "{\"id\": 2, " + kBox + ", " + kCyl + ", \"margin\": 1}";
+    for (const std::string& line :
+         {std::string(), std::string("nope"), R"({"id": 5, )" + kBox + "}",
+          R"({"id": 3, )" + kBox + R"(, "cylinder": {"center": [0, 0, 0], "axis": [0, 0, 0], "radius": 1, "height": 1}})",
+          with_margin}) {
+        const LineAnswer a = answer_distance_line(line, 9, true);
+        EXPECT_FALSE(a.good) << line;
+        EXPECT_EQ(a.text, answer_distance_line(line, 9).text) << line;
+    }
+}
+
+TEST(JsonlDistance, SignedStreamIsByteIdenticalOnThreads) {
+    std::string input;
+    for (int i = 1; i <= 60; ++i) {
+        // The cylinder's x slides from deep inside the box to beyond its face x = 1, with bad lines among them.
+        const double x = 0.25 * static_cast<double>(i % 12);
+        input += R"({"id": )";
+        input += std::to_string(i);
+        input += ", ";
+        input += kBox;
+        if (i % 17 == 0) {
+            input += "}";  // no cylinder
+        } else {
+            input += R"(, "cylinder": {"center": [)";
+            input += std::to_string(x);
+            input += R"(, 0.5, 0.5], "axis": [0, 1, 1], "radius": 0.5, "height": 1}})";
+        }
+        input += '\n';
+    }
+    DistanceOptions opt;
+    opt.signed_distance = true;
+    std::istringstream in1(input);
+    std::ostringstream out1;
+    const StreamCounts c1 = process_distance_stream(in1, out1, opt);
+    const std::vector<std::string> lines = lines_of(out1.str());
+    ASSERT_EQ(lines.size(), 60u);
+    EXPECT_EQ(c1.bad, 3u);
+    for (const std::string& line : lines)
+        EXPECT_TRUE(line.find(R"("normal": [)") != std::string::npos || line.find(R"("error": )") != std::string::npos)
+            << line;
+    for (const unsigned threads : {2u, 3u}) {
+        std::istringstream in(input);
+        std::ostringstream out;
+        opt.threads = threads;
+        const StreamCounts c = process_distance_stream(in, out, opt);
+        EXPECT_EQ(c.lines, c1.lines);
+        EXPECT_EQ(c.bad, c1.bad);
+        EXPECT_TRUE(out.str() == out1.str()) << threads << " threads: output differs";
+    }
+}
+
 }  // namespace
 }  // namespace boxcyl::cli
