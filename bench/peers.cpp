@@ -15,6 +15,7 @@
 #include <array>      // 3×3 matrices
 #include <cmath>      // std::sqrt, std::copysign, std::ilogb, std::scalbn, std::fabs
 #include <cstdarg>    // va_list (ODE's message handlers)
+#include <cstdio>     // std::fflush before fork()
 #include <mutex>      // std::call_once
 #include <optional>   // Bullet's distance, when it has one
 #include <stdexcept>  // std::logic_error, std::runtime_error
@@ -33,6 +34,10 @@
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 
 #include <ode/ode.h>
+
+#include <fcntl.h>     // open: /dev/null for a child's stderr
+#include <sys/wait.h>  // waitpid
+#include <unistd.h>    // fork, _exit, alarm
 
 #ifndef BT_USE_DOUBLE_PRECISION
 #error "Bullet must be the double-precision build (Debian: bullet-float64), as the inputs are doubles"
@@ -409,9 +414,34 @@ bool PeerQueries::failed(std::size_t i) const { return impl_->failed(i); }
 struct PeerDistances::Impl {
     virtual ~Impl() = default;
     virtual std::optional<double> distance(std::size_t i) const = 0;
+    virtual bool failed(std::size_t) const { return false; }
 };
 
 namespace {
+
+// Which of queries 0 … n−1 end the process, each tried once (untimed) in a child process: Debian's libfcl
+// keeps its assertions, and an assertion in FCL's EPA calls abort(), which no handler can turn into an
+// exception as ODE's can. The child's stderr goes to /dev/null (no assertion message in the output); a
+// child that runs a minute is stopped and its query counts as failed too.
+template <class Query>
+std::vector<char> ending_the_process(std::size_t n, const Query& query) {
+    std::vector<char> failed(n, 0);
+    std::fflush(nullptr);  // nothing buffered is written twice
+    for (std::size_t i = 0; i < n; ++i) {
+        const pid_t pid = fork();
+        if (pid < 0) throw std::runtime_error("fork() failed");
+        if (pid == 0) {
+            if (const int null = open("/dev/null", O_WRONLY); null >= 0) dup2(null, STDERR_FILENO);
+            alarm(60);
+            query(i);
+            _exit(0);
+        }
+        int status = 0;
+        if (waitpid(pid, &status, 0) != pid) throw std::runtime_error("waitpid() failed");
+        failed[i] = !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    }
+    return failed;
+}
 
 class FclDistances final : public PeerDistances::Impl {
 public:
@@ -426,22 +456,65 @@ private:
     fcl::DistanceRequestd request_;
 };
 
+// The signed distance: fcl::distance with enable_signed_distance. GST_LIBCCD computes it in the
+// distance call. GST_INDEP computes the distance, and where it is negative (shapes in contact: −1) the
+// depth afterwards by collide() with contacts, the deepest contact's penetration_depth; but FCL 0.7's
+// GST_INDEP gives its contacts minus EPA's depth (gjk_solver_indep-inl.h: depth = −epa.depth), so no
+// contact is deep enough and distance() fails its assertion (Debian's libfcl keeps them: abort()) on every
+// overlapping pair. For GST_INDEP this makes the same two calls, unsigned distance then collide() with one
+// contact, and reads the depth as the magnitude of the contact's penetration_depth (none: no contact).
+class FclSignedDistances final : public PeerDistances::Impl {
+public:
+    FclSignedDistances(const std::vector<Case>& cases, fcl::GJKSolverType solver) : s_(cases) {
+        request_.gjk_solver_type = solver;  // defaults otherwise: no nearest points, distance_tolerance 1e-6
+        request_.enable_signed_distance = solver == fcl::GST_LIBCCD;
+        contact_request_.gjk_solver_type = solver;
+        contact_request_.enable_contact = true;  // num_max_contacts 1, as distance() asks
+        failed_ = ending_the_process(cases.size(), [this](std::size_t i) { query(i); });
+    }
+    // None for a query that aborts (left out of the timed passes).
+    std::optional<double> distance(std::size_t i) const override { return failed_[i] ? std::nullopt : query(i); }
+    bool failed(std::size_t i) const override { return failed_[i]; }
+
+private:
+    std::optional<double> query(std::size_t i) const {
+        fcl::DistanceResultd result;
+        const double d = fcl::distance(&s_.boxes[i], s_.box_tf[i], &s_.cylinders[i], s_.cylinder_tf[i], request_, result);
+        if (request_.enable_signed_distance || d >= 0) return d;
+        fcl::CollisionResultd contacts;
+        fcl::collide(&s_.boxes[i], s_.box_tf[i], &s_.cylinders[i], s_.cylinder_tf[i], contact_request_, contacts);
+        if (contacts.numContacts() == 0) return std::nullopt;
+        return -std::fabs(contacts.getContact(0).penetration_depth);
+    }
+
+    FclShapes s_;
+    fcl::DistanceRequestd request_;
+    fcl::CollisionRequestd contact_request_;
+    std::vector<char> failed_;
+};
+
+// btGjkPairDetector's distance (signed already: EPA's depth, negated, where the shapes overlap), or
+// btGjkEpaSolver2's Distance (separated shapes only) or SignedDistance (Distance, then Penetration
+// where that fails: results.distance is minus EPA's depth).
 class BulletDistances final : public PeerDistances::Impl {
 public:
-    BulletDistances(const std::vector<Case>& cases, bool epa2) : s_(cases), epa2_(epa2) {}
+    enum class Call { gjk, epa2_distance, epa2_signed_distance };
+    BulletDistances(const std::vector<Case>& cases, Call call) : s_(cases), call_(call) {}
     std::optional<double> distance(std::size_t i) const override {
-        if (!epa2_) return s_.gjk_distance(i);
+        if (call_ == Call::gjk) return s_.gjk_distance(i);
         btGjkEpaSolver2::sResults r;
         const btTransform& a = s_.inputs[i].m_transformA;
         const btTransform& b = s_.inputs[i].m_transformB;
-        if (!btGjkEpaSolver2::Distance(s_.boxes[i].get(), a, s_.cylinders[i].get(), b, b.getOrigin() - a.getOrigin(), r))
+        const btVector3 guess = b.getOrigin() - a.getOrigin();
+        if (call_ == Call::epa2_distance ? !btGjkEpaSolver2::Distance(s_.boxes[i].get(), a, s_.cylinders[i].get(), b, guess, r)
+                                         : !btGjkEpaSolver2::SignedDistance(s_.boxes[i].get(), a, s_.cylinders[i].get(), b, guess, r))
             return std::nullopt;
         return r.distance;
     }
 
 private:
     BulletShapes s_;
-    bool epa2_;
+    Call call_;
 };
 
 }  // namespace
@@ -450,16 +523,28 @@ PeerDistances::PeerDistances(ClearancePeer peer, const std::vector<Case>& cases)
     switch (peer) {
         case ClearancePeer::fcl_libccd: impl_ = std::make_unique<FclDistances>(cases, fcl::GST_LIBCCD); break;
         case ClearancePeer::fcl_indep: impl_ = std::make_unique<FclDistances>(cases, fcl::GST_INDEP); break;
-        case ClearancePeer::bullet_gjk: impl_ = std::make_unique<BulletDistances>(cases, false); break;
-        case ClearancePeer::bullet_gjkepa2: impl_ = std::make_unique<BulletDistances>(cases, true); break;
+        case ClearancePeer::bullet_gjk: impl_ = std::make_unique<BulletDistances>(cases, BulletDistances::Call::gjk); break;
+        case ClearancePeer::bullet_gjkepa2: impl_ = std::make_unique<BulletDistances>(cases, BulletDistances::Call::epa2_distance); break;
+    }
+    if (!impl_) throw std::logic_error("unknown peer library");
+}
+PeerDistances::PeerDistances(SignedPeer peer, const std::vector<Case>& cases) {
+    switch (peer) {
+        case SignedPeer::fcl_libccd: impl_ = std::make_unique<FclSignedDistances>(cases, fcl::GST_LIBCCD); break;
+        case SignedPeer::fcl_indep: impl_ = std::make_unique<FclSignedDistances>(cases, fcl::GST_INDEP); break;
+        case SignedPeer::bullet_gjk: impl_ = std::make_unique<BulletDistances>(cases, BulletDistances::Call::gjk); break;
+        case SignedPeer::bullet_gjkepa2:
+            impl_ = std::make_unique<BulletDistances>(cases, BulletDistances::Call::epa2_signed_distance);
+            break;
     }
     if (!impl_) throw std::logic_error("unknown peer library");
 }
 PeerDistances::~PeerDistances() = default;
 std::optional<double> PeerDistances::distance(std::size_t i) const { return impl_->distance(i); }
+bool PeerDistances::failed(std::size_t i) const { return impl_->failed(i); }
 double PeerDistances::pass(std::size_t n) const {
     double sum = 0;
-    for (std::size_t i = 0; i < n; ++i) sum += impl_->distance(i).value_or(0.0);
+    for (std::size_t i = 0; i < n; ++i) sum += impl_->distance(i).value_or(0.0);  // a failed query: none, at once
     return sum;
 }
 

@@ -1,7 +1,8 @@
 // The same box–cylinder queries through peer collision libraries: FCL's GJK, Bullet's GJK
 // pair detector and ODE's dCollide, from Debian's packages. Built only with -DBOXCYL_BENCH_PEERS=ON
-// (bench/CMakeLists.txt); bench_query.cpp times them beside boxcyl's queries in the same run, and
-// bench_clearance.cpp the clearance question (within a distance m?) beside within_distance.
+// (bench/CMakeLists.txt); bench_query.cpp times them beside boxcyl's queries in the same run,
+// bench_clearance.cpp the clearance question (within a distance m?) beside within_distance, and
+// bench_distance.cpp their distances and signed distances beside distance and signed_distance.
 //
 // Each library gets the queries converted once, untimed, into its own shapes and transforms (so the
 // timed loop is the library's narrow-phase call alone, which favours the peers: boxcyl's times
@@ -92,18 +93,43 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+// The signed distance (the distance, or minus the penetration depth where the solids overlap) as each
+// library computes it (bench_distance.cpp's overlapping sets): FCL's distance() with
+// enable_signed_distance (GST_LIBCCD; GST_INDEP's aborts on overlapping shapes, so its two steps, the
+// distance and collide()'s contact depth, by hand: peers.cpp), btGjkPairDetector's distance (EPA's
+// depth, negated, where they overlap) and btGjkEpaSolver2::SignedDistance.
+enum class SignedPeer { fcl_libccd, fcl_indep, bullet_gjk, bullet_gjkepa2 };
+
+struct SignedPeerInfo {
+    SignedPeer peer;
+    const char* key;
+    const char* label;
+};
+
+inline constexpr SignedPeerInfo kSignedPeers[] = {
+    {SignedPeer::fcl_libccd, "fcl_signed_distance_libccd", "FCL distance(), enable_signed_distance, GST_LIBCCD (FCL's default)"},
+    {SignedPeer::fcl_indep, "fcl_signed_distance_indep", "FCL distance() then collide()'s contact depth, GST_INDEP"},
+    {SignedPeer::bullet_gjk, "bullet_gjk_signed_distance", "Bullet btGjkPairDetector (GJK + EPA, margins 0)"},
+    {SignedPeer::bullet_gjkepa2, "bullet_gjkepa2_signed_distance", "Bullet btGjkEpaSolver2::SignedDistance (margins 0)"},
+};
+
 // The distance itself as each clearance peer computes it (bench_distance.cpp): FCL's distance() (its
 // defaults: distance_tolerance 1e-6, no nearest points), btGjkPairDetector's and btGjkEpaSolver2's.
 // None when the library gives none (Bullet's GJK gave up; btGjkEpaSolver2 says "not separated").
+// Or the signed distance as each signed peer computes it: none when Bullet's GJK or EPA gave up, FCL
+// gave no contact, or the query ends the process (FCL's assertions: tried once, untimed, in a child process).
 class PeerDistances {
 public:
     PeerDistances(ClearancePeer peer, const std::vector<boxcyl::testing::Case>& cases);
+    PeerDistances(SignedPeer peer, const std::vector<boxcyl::testing::Case>& cases);
     ~PeerDistances();
     PeerDistances(const PeerDistances&) = delete;
     PeerDistances& operator=(const PeerDistances&) = delete;
 
     std::optional<double> distance(std::size_t i) const;
-    // Distances 0 … n−1 in order (the timed pass); returns their sum.
+    // Whether query i ends the process (none, and left out of the timed passes).
+    bool failed(std::size_t i) const;
+    // Distances 0 … n−1 in order (the timed pass), except failed ones; returns their sum.
     double pass(std::size_t n) const;
 
     struct Impl;
