@@ -208,6 +208,19 @@ void print_summary() {
     }
 }
 
+// The exact intersects() on a set's pairs: the yes/no question's cost, for scale.
+void add_intersects_row(const std::string& set, const std::vector<Case>* cases) {
+    const std::string name = "BM_intersects_" + set;
+    benchmark::RegisterBenchmark(name.c_str(), [cases](benchmark::State& state) {
+        long hits = 0;
+        for (auto _ : state)
+            for (const Case& c : *cases) hits += touching(c);
+        benchmark::DoNotOptimize(hits);
+        set_ns_per_query(state, cases->size());
+    });
+    g_rows.push_back({set, name, "boxcyl intersects(), exact (yes/no only)", cases->size(), "—"});
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -224,15 +237,7 @@ int main(int argc, char** argv) {
             set_ns_per_query(state, cases->size());
         });
         g_rows.push_back({s.name, name, "boxcyl::distance (proved enclosure)", s.cases.size(), widths(s)});
-        name = "BM_intersects_" + s.name;
-        benchmark::RegisterBenchmark(name.c_str(), [cases](benchmark::State& state) {
-            long hits = 0;
-            for (auto _ : state)
-                for (const Case& c : *cases) hits += touching(c);
-            benchmark::DoNotOptimize(hits);
-            set_ns_per_query(state, cases->size());
-        });
-        g_rows.push_back({s.name, name, "boxcyl intersects(), exact (yes/no only)", s.cases.size(), "—"});
+        add_intersects_row(s.name, cases);
 #ifdef BOXCYL_BENCH_PEERS
         for (const boxcyl::bench::ClearancePeerInfo& info : boxcyl::bench::kClearancePeers) {
             g_peers.push_back(std::make_unique<boxcyl::bench::PeerDistances>(info.peer, s.cases));
@@ -264,15 +269,7 @@ int main(int argc, char** argv) {
             set_ns_per_query(state, cases->size());
         });
         g_rows.push_back({s.name, name, "boxcyl::signed_distance (proved enclosure)", s.cases.size(), widths(s)});
-        name = "BM_intersects_" + s.name;
-        benchmark::RegisterBenchmark(name.c_str(), [cases](benchmark::State& state) {
-            long hits = 0;
-            for (auto _ : state)
-                for (const Case& c : *cases) hits += touching(c);
-            benchmark::DoNotOptimize(hits);
-            set_ns_per_query(state, cases->size());
-        });
-        g_rows.push_back({s.name, name, "boxcyl intersects(), exact (yes/no only)", s.cases.size(), "—"});
+        add_intersects_row(s.name, cases);
 #ifdef BOXCYL_BENCH_PEERS
         for (const boxcyl::bench::SignedPeerInfo& info : boxcyl::bench::kSignedPeers) {
             g_peers.push_back(std::make_unique<boxcyl::bench::PeerDistances>(info.peer, s.cases));
