@@ -80,7 +80,7 @@ inline OrientedBox<double> moved(const CanonicalBox<double>& b, const Vec3<doubl
 }
 
 // A witness pair for overlapping shapes (scaled to lengths near 1): the box moved along −n by the depth
-// and 2⁻²⁰ of the shapes' size more, the distance's nearest pair of the then separate shapes
+// and 2⁻¹² of the shapes' size more, the distance's nearest pair of the then separate shapes
 // (distance.hpp's refinement), the box point moved back. The box point is then on the box's feature
 // that supports it along n, the cylinder point on the cylinder's along −n, and their difference about
 // −depth·n.
@@ -89,7 +89,7 @@ void witnesses(const Box& box, const Cylinder<double>& cyl, const Vec3<double>& 
                Vec3<double>& on_cylinder) {
     distance::Magnitude size;
     size(box), size(cyl);
-    const double step = depth + std::ldexp(1.0, size.e - 20);
+    const double step = depth + std::ldexp(1.0, size.e - 12);
     const Distance d = distance::refined(moved(box, -step * n), cyl, false);
     on_box = d.on_box + step * n;
     on_cylinder = d.on_cylinder;

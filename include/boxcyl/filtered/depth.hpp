@@ -108,13 +108,28 @@ S support(const Problem& p, const Vec3<S>& v) {
 
 // An arc of a circle: the directions of the vectors from + s·step, s ∈ [0, 1] (the shorter arc
 // between two directions less than a half turn apart).
+// Along it every linear form of v is affine in s, and v × u too: their values at the ends (from·w) and
+// slopes (step·w) are formed once per arc, so that each point costs a product and a sum per form.
 struct Arc {
+    Arc(const Problem& p, const V& from_, const V& to) : from(from_), step(to - from_), F(cross(from, p.u)), G(cross(step, p.u)) {
+        for (std::size_t i = 0; i < 3; ++i) at0[i] = dot(from, p.h[i]), slope[i] = dot(step, p.h[i]);
+        at0[3] = dot(from, p.u), slope[3] = dot(step, p.u);
+        at0[4] = dot(from, p.z), slope[4] = dot(step, p.z);
+    }
     V from, step;
+    std::array<I, 5> at0, slope;  // v·hᵢ (i < 3), v·u, v·z at s = 0, and their slopes
+    V F, G;                       // v × u = F + s·G
 };
-inline Vec3<Dual> along(const Arc& arc, double s) {
-    Vec3<Dual> v;
-    for (int i = 0; i < 3; ++i) v[i] = Dual{arc.from[i] + I(s) * arc.step[i], arc.step[i]};
-    return v;
+
+// H(v(s)) and its slope along the arc.
+inline Dual support_along(const Problem& p, const Arc& arc, double s) {
+    const I t(s);
+    auto form = [&](std::size_t i) { return Dual{arc.at0[i] + t * arc.slope[i], arc.slope[i]}; };
+    Dual H = form(4);
+    for (std::size_t i = 0; i < 3; ++i) H = H + magnitude(form(i));
+    H = H + times(magnitude(form(3)), p.k);
+    auto component = [&](int i) { return Dual{arc.F[i] + t * arc.G[i], arc.G[i]}; };
+    return H + times(norm(component(0), component(1), component(2)), p.r);
 }
 
 inline Vec3<double> mid(const V& v) {
@@ -135,7 +150,7 @@ inline void add_arcs(const Problem& p, const Vec3<double>& x, std::vector<Arc>& 
     const V X = rim::lift(x);
     const V a = cross(X, rim::lift(e));
     const V b = cross(X, a);
-    arcs.push_back({a, b - a}), arcs.push_back({b, -a - b}), arcs.push_back({-a, a - b}), arcs.push_back({-b, a + b});
+    arcs.emplace_back(p, a, b), arcs.emplace_back(p, b, -a), arcs.emplace_back(p, -a, -b), arcs.emplace_back(p, -b, a);
     for (const V& w : p.h) {
         const V c = cross(X, w);
         kinks.push_back(c), kinks.push_back(-c);
@@ -239,10 +254,11 @@ inline Bounds bounds(const Problem& p, const std::vector<Vec3<double>>& circles,
     }
 
     auto end_at = [&](const Arc& arc, double s) {
-        const Vec3<Dual> v = along(arc, s);
-        const Dual H = support(p, v);
-        const I len = norm(v[0].v, v[1].v, v[2].v);
-        try_upper(H.v / len, mid({v[0].v, v[1].v, v[2].v}));
+        const I t(s);
+        const V v{arc.from[0] + t * arc.step[0], arc.from[1] + t * arc.step[1], arc.from[2] + t * arc.step[2]};
+        const Dual H = support_along(p, arc, s);
+        const I len = norm(v[0], v[1], v[2]);
+        try_upper(H.v / len, mid(v));
         return End{s, H.v, H.d, len};
     };
     struct Piece {
