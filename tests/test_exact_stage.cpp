@@ -695,17 +695,18 @@ TEST(ExactStage, SmallStackSkipsTheSeriesRuns) {
 }
 
 // A rounded rotation whose exact test runs every clipped edge and face cut (a miss) with values beyond
-// 16 limbs: the parallelepiped route's deepest path, in 64 limbs with room for them, else in 16 limbs
+// 16 limbs: a unit box beside the side of a cylinder of radius 2^349, so that the lengths span about
+// 400 bits. The parallelepiped route's deepest path, in 64 limbs with room for them, else in 16 limbs
 // and then mpz_class.
 struct DeepestParallelepiped {
-    Parallelepiped<double> box{{-0x1.63bb0836f09f2p-2, -0x1.08ac48622c85ap-1, 0x1.4156348727058p-1},
-                               {Vec3<double>{-0x1.c214454064453p-1, -0x1.e82687d9c8ecbp-2, 0x0p+0},
-                                Vec3<double>{0x1.d43307b714838p-2, -0x1.afaf1bdf1110bp-1, 0x1.21c2a0d704dfp-2},
-                                Vec3<double>{-0x1.14434fa0f2b5cp-3, 0x1.fd6f1050dedcep-3, 0x1.eb12f69133e86p-1}},
-                               {0x1.75994f30cdfd3p+0, 0x1.af153d1c696e6p-2, 0x1.6f3418dbd203fp-1}};
-    Cylinder<double> cyl{{-0x1.20e20e788d53ap-1, -0x1.def0dc2426b9fp+0, -0x1.436b1b9236969p-1},
-                         {-0x1.1dd515fb0e78p-6, -0x1.b4bb7c9ed40f8p-3, 0x1.eec059dbdd21p-1}, 0x1.ffd7dbc2a8e66p-2,
-                         0x1.9b3480e2e90bbp+0};
+    Parallelepiped<double> box{{-0x1.7b0efe198ce7p-1, 0x1.80925c54491ep-2, 0x1.2d07bb2d46a5cp-1},
+                               {Vec3<double>{0x1.3a10894ca2c2fp-2, -0x1.a2c07a541df08p-1, -0x1.f28656101c4cdp-2},
+                                Vec3<double>{-0x1.b2966037eb342p-6, 0x1.02058f46bb397p-1, -0x1.ba05e4e4d181ep-1},
+                                Vec3<double>{0x1.e722894857c3cp-1, 0x1.1c5d16682cd0ep-2, 0x1.101d77df0e8f8p-3}},
+                               {0x1.1f2c64cd04434p-1, 0x1.cac931a548d05p-1, 0x1.25991cad8911p-3}};
+    Cylinder<double> cyl{{0x1.2126ed61b5bf7p+348, 0x1.62afbc8df6c17p+348, 0x1.c9a8b00501c8ep+347},
+                         {0x1.b2b457f4e83acp-1, -0x1.bc8b46be234f4p-2, -0x1.998d608812b6ap-2}, 0x1.ffa38ce052955p+348,
+                         0x1p+351};
     bool answer = true, fixed_answered = false;
 
     static void* run(void* self) {

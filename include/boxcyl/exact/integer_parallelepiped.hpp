@@ -120,6 +120,11 @@ public:
             if (axis_meets_flat_box(*n)) return true;
             if (segment && sgn(dot(*n, p_.D)) != 0) return false;
         }
+        // The ends of the clipped edges and the face cuts' end points are box vertices in the slab and
+        // crossings of box edges with t = ±H: tested once each, below, so that the edges and the cuts
+        // need test only their interiors.
+        for (int s = 0; s < 8; ++s)
+            if (side_of(T_[s]) == 0 && point_within(V_[s])) return true;
         for (int m = 0; m < 3; ++m)
             for (int s = 0; s < 8; ++s)
                 if (!(s >> m & 1) && clipped_edge_within(s, s | (1 << m))) return true;
@@ -133,9 +138,10 @@ public:
     }
 
 private:
+    // A crossing of a box edge with t = σH: its position relative to C times den.
     struct Point {
-        Vec3<Q> num;  // the point (relative to C) times den
-        Z den;        // > 0
+        Vec3<Q> num;
+        Z den;  // > 0
     };
 
     // +1 beyond t = H, −1 beyond t = −H, 0 in the slab (T = √d·t).
@@ -144,30 +150,26 @@ private:
         if (ring_.sign(T, p_.H) < 0) return -1;
         return 0;
     }
-    Point vertex(int s) const {
-        return {{Q{V_[s][0], Z(0)}, Q{V_[s][1], Z(0)}, Q{V_[s][2], Z(0)}}, Z(1)};
+    // Within R of the axis line: |D × Y|² ≤ R²·d for a point Y relative to C.
+    bool point_within(const Vec3<Z>& Y) const {
+        const Vec3<Z> q = cross(p_.D, Y);
+        return sgn(Z(dot(q, q) - Z(p_.R * p_.R) * ring_.d())) <= 0;
     }
-    // Where the edge s → s' (T_s ≠ T_s') crosses t = σH: V_s + λ(V_s' − V_s), λ = (σH√d − T_s)/(T_s' − T_s).
+    // Where the edge s → s' (T_s ≠ T_s') crosses t = σH: V_s + λ·δ with δ = V_s' − V_s and
+    // λ = (σH√d − T_s)/Δ, Δ = T_s' − T_s. Times Δ that is V_s·T_s' − T_s·V_s' + σH·δ·√d: no quotient, and
+    // values of about 2L + M bits for lengths of L bits and an axis of M.
     Point crossing(int s, int s1, int sigma) const {
         Z delta = T_[s1] - T_[s];
-        Q lambda_num{Z(-T_[s]), sigma > 0 ? p_.H : Z(-p_.H)};
-        if (sgn(delta) < 0) delta = -delta, lambda_num = -lambda_num;
+        const Z h = sigma > 0 ? p_.H : Z(-p_.H);
         Point x;
+        for (int j = 0; j < 3; ++j)
+            x.num[j] = Q{Z(V_[s][j] * T_[s1] - T_[s] * V_[s1][j]), Z(h * Z(V_[s1][j] - V_[s][j]))};
+        if (sgn(delta) < 0) delta = -delta, x.num = Vec3<Q>{-x.num[0], -x.num[1], -x.num[2]};
         x.den = delta;
-        for (int j = 0; j < 3; ++j) {
-            const Z step = V_[s1][j] - V_[s][j];
-            x.num[j] = Q{Z(V_[s][j] * delta), Z(0)} + step * lambda_num;
-        }
         return x;
     }
-    bool within(const Point& x, const Point& y) const {
-        Vec3<Q> y0, y1;
-        for (int j = 0; j < 3; ++j) {
-            y0[j] = y.den * x.num[j];
-            y1[j] = x.den * y.num[j];
-        }
-        const Z den = x.den * y.den;
-        return segment_within(ring_, p_.D, y0, y1, Z(den * den * Z(p_.R * p_.R)));
+    bool point_within(const Point& x) const {
+        return ring_.sign(ring_.norm2(cross(p_.D, x.num)) - Q{Z(Z(p_.R * p_.R) * ring_.d() * Z(x.den * x.den)), Z(0)}) <= 0;
     }
 
     // Cramer's rule: λ_m·det = n_m·(X − K), n_m = a_j × a_k, X = C + t·D/√d, |t| ≤ H. With s = sgn(det),
@@ -239,25 +241,64 @@ private:
         return true;
     }
 
-    // The box edge s → s' clipped to the slab.
+    // The box edge s → s' clipped to the slab [λ0, λ1] ⊂ [0, 1]: its ends (vertices in the slab, tested in
+    // run(), or crossings of t = ±H), and its interior where the edge line comes nearest the axis line
+    // strictly between them. With A = D × V_s and B = D × δ, |D × (V_s + λδ)|² is least at
+    // λ* = −A·B/|B|², where it is d·(D·(V_s × δ))²/|B|² (|A × B| = √d·|D·(V_s × δ)|). Every value stays
+    // within about 4L + 4M bits, and the signs in Z[√d] within 3L + 3M before their squares: a segment
+    // between two clipped ends as quotient points would take about 12L + 12M.
     bool clipped_edge_within(int s, int s1) const {
         const int a = side_of(T_[s]), b = side_of(T_[s1]);
         if (a != 0 && a == b) return false;
-        const Point x = a == 0 ? vertex(s) : crossing(s, s1, a);
-        const Point y = b == 0 ? vertex(s1) : crossing(s, s1, b);
-        return within(x, y);
+        if (a != 0 && point_within(crossing(s, s1, a))) return true;
+        if (b != 0 && point_within(crossing(s, s1, b))) return true;
+        const Vec3<Z> delta = V_[s1] - V_[s];
+        const Vec3<Z> B = cross(p_.D, delta);
+        const Z BB = dot(B, B);
+        if (sgn(BB) == 0) return false;  // parallel to the axis: the distance is the ends'
+        const Z AB = dot(cross(p_.D, V_[s]), B);
+        const Z Delta = T_[s1] - T_[s];
+        const int sd = sgn(Delta);
+        const Z abs_delta = sd < 0 ? Z(-Delta) : Delta;
+        // λ* > λ0: −A·B > 0 at a vertex; at a crossing, −A·B·|Δ| > (σH√d − T_s)·sgn(Δ)·|B|².
+        if (a == 0) {
+            if (!(sgn(AB) < 0)) return false;
+        } else {
+            Z lhs = Z(T_[s] * BB) * Z(sd) - AB * abs_delta;
+            Z root = Z(p_.H * BB) * Z(-a * sd);
+            if (!(ring_.sign(lhs, root) > 0)) return false;
+        }
+        // λ* < λ1: −A·B < |B|² at a vertex; at a crossing, −A·B·|Δ| < (σH√d − T_s)·sgn(Δ)·|B|².
+        if (b == 0) {
+            if (!(sgn(Z(AB + BB)) > 0)) return false;
+        } else {
+            Z lhs = AB * abs_delta - Z(T_[s] * BB) * Z(sd);
+            Z root = Z(p_.H * BB) * Z(b * sd);
+            if (!(ring_.sign(lhs, root) > 0)) return false;
+        }
+        const Z n = dot(p_.D, cross(V_[s], V_[s1]));  // V_s × δ = V_s × V_s'
+        return sgn(Z(n * n - Z(p_.R * p_.R) * BB)) <= 0;
     }
 
-    // The face λ_m = ±1 cut by the plane t = σH: its points on the face's boundary (vertices on the
-    // plane, crossings of the four edges), every pair of them a segment of the cut.
+    // The face λ_m = ±1 cut by the plane t = σH: a chord of the cap's plane, whose end points (vertices
+    // on the plane, crossings of the face's edges) run() and the clipped edges test. What is left is
+    // its interior: whether the cap's centre P = C + σH·D/√d has its foot on the chord's line strictly
+    // between two of those points, and lies within R of that line. The line is the face's plane
+    // (normal ν = a_j × a_k, through G_f = G ± a_m) within the cap's plane; P's distance to it is
+    // |σH·(ν·D) − √d·(ν·G_f)| / |ν × D|.
     bool face_cut_within(int m, bool plus, int sigma) const {
         const int j = (m + 1) % 3, k = (m + 2) % 3;
+        const Vec3<Z> nu = cross(p_.a[j], p_.a[k]);
+        const Vec3<Z> nuD = cross(nu, p_.D);
+        const Z nuD2 = dot(nuD, nuD);
+        // ν × D = 0: a face parallel to the cap's plane (in it, or not cutting it) or a degenerate face
+        // (a segment or a point), whose cut is at most its end points.
+        if (sgn(nuD2) == 0) return false;
         const int base = plus ? (1 << m) : 0;
         const std::array<int, 4> corner{base, base | (1 << j), base | (1 << j) | (1 << k), base | (1 << k)};
         const Z tau_b = sigma > 0 ? Z(-p_.H) : p_.H;  // T − σH√d = T + tau_b·√d
         std::array<int, 4> sign{};
-        for (int c = 0; c < 4; ++c) sign[static_cast<std::size_t>(c)] = ring_.sign(T_[corner[static_cast<std::size_t>(c)]], tau_b);
-        if (sign[0] == 0 && sign[1] == 0 && sign[2] == 0 && sign[3] == 0) return false;  // in the plane: box edges cover it
+        for (std::size_t c = 0; c < 4; ++c) sign[c] = ring_.sign(T_[corner[c]], tau_b);
         std::array<Point, 4> pts;
         int n = 0;
         for (std::size_t c = 0; c < 4; ++c) {
@@ -265,11 +306,29 @@ private:
             if (sign[c] == 0) pts[static_cast<std::size_t>(n++)] = vertex(corner[c]);
             else if (sign[c] * sign[c1] < 0) pts[static_cast<std::size_t>(n++)] = crossing(corner[c], corner[c1], sigma);
         }
-        if (n == 1) return within(pts[0], pts[0]);
+        if (n < 2) return false;
+        // The distance to the line first: one test for the face, where a foot test is one per pair.
+        const Vec3<Z> Gf = plus ? Vec3<Z>(p_.G + p_.a[m]) : Vec3<Z>(p_.G - p_.a[m]);
+        const Z u = Z(sigma > 0 ? p_.H : Z(-p_.H)) * dot(nu, p_.D);
+        const Z v = dot(nu, Gf);
+        // (u − v√d)² ≤ R²·|ν × D|²
+        const Z alpha = Z(u * u) + Z(Z(v * v) * ring_.d()) - Z(Z(p_.R * p_.R) * nuD2);
+        if (!(ring_.sign(alpha, Z(Z(-2) * Z(u * v))) <= 0)) return false;
         for (int x = 0; x < n; ++x)
             for (int y = x + 1; y < n; ++y)
-                if (within(pts[static_cast<std::size_t>(x)], pts[static_cast<std::size_t>(y)])) return true;
+                if (foot_between(pts[static_cast<std::size_t>(x)], pts[static_cast<std::size_t>(y)])) return true;
         return false;
+    }
+    // Two points Y0, Y1 of the cap's plane (relative to C): P's foot on their line lies strictly between
+    // them. P − C is along D, which is normal to Y1 − Y0, so (P − Y0)·(Y1 − Y0) = Y0·(Y0 − Y1): the tests
+    // are Y0·(Y0 − Y1) > 0 and Y1·(Y1 − Y0) > 0, with W = den1·num0 − den0·num1 for the difference.
+    bool foot_between(const Point& x, const Point& y) const {
+        Vec3<Q> W;
+        for (int j = 0; j < 3; ++j) W[j] = y.den * x.num[j] - x.den * y.num[j];
+        return ring_.sign(ring_.dot(x.num, W)) > 0 && ring_.sign(ring_.dot(y.num, W)) < 0;
+    }
+    Point vertex(int s) const {
+        return {{Q{V_[s][0], Z(0)}, Q{V_[s][1], Z(0)}, Q{V_[s][2], Z(0)}}, Z(1)};
     }
 
     const ParallelepipedProblem<Z>& p_;
@@ -286,13 +345,13 @@ bool run_turned(const Parallelepiped<double>& b, const Cylinder<double>& c) {
 
 }  // namespace detail
 
-// The widest values here are far wider than §4's: a clipped end point is a quotient, and the interior
-// test squares a number of Z[√d] built from two of them — about 24·L + 28·M bits for lengths below 2^L
-// and axis components below 2^M, where §4 needs 4·L + 8·M. Rounded rotations (L ≈ 110, M ≈ 53)
-// outgrow 16 limbs on a third of random queries; 64 limbs hold nearly all of them, and cost what 16
-// do where 16 suffice (FixedInt's arithmetic runs on the limbs in use). On random rounded rotations
-// (bench_exact_stage's "turned" set) that is about 15 µs per query, against 36 µs for 16 limbs with
-// mpz_class on overflow and 38 µs for mpz_class alone.
+// The widest values here are wider than §4's: about 6·L + 4·M bits for lengths below 2^L and axis
+// components below 2^M (the face cuts' tests; twice that where a sign in Z[√d] must square them), where
+// §4 needs 4·L + 8·M. Random rounded rotations
+// (L ≈ 110, M ≈ 53) fit in 16 limbs; 64 hold lengths that span about 600 bits (a unit box beside a
+// cylinder of 2^349), and cost what 16 do where 16 suffice (FixedInt's arithmetic runs on the limbs in
+// use). On random rounded rotations (bench_exact_stage's "turned" set) that is about 10 µs per query,
+// against 24 µs in mpz_class alone.
 inline constexpr int kParallelepipedLimbs = 64;
 using Wide = FixedInt<kParallelepipedLimbs>;
 // The 64-limb run keeps its values on the stack (test ExactStage.ParallelepipedStack prints how much);
