@@ -81,6 +81,12 @@ BOXCYL_FORCE_INLINE inline Result run(const Box& box, const Cylinder<double>& cy
     (void)stats;
     return {*exact::answer(box, cyl), true};
 #else
+    // A parallelepiped whose axes are a signed permutation of the unit vectors is that oriented box,
+    // whose schedule starts from an exact frame.
+    if constexpr (std::is_same_v<Box, Parallelepiped<double>>) {
+        if (signed_permutation(box.axes)) [[unlikely]]
+            return run(OrientedBox<double>{box.center, box.axes, box.extents}, cyl, stats);
+    }
     Prepared<Box> q(box, cyl);
     RowId by = RowId::exact;
     const Verdict v = walk(q, stats, by);

@@ -26,7 +26,13 @@ enum class Tier {
     full,    // every route: always answers
 };
 
+template <class Box>
+std::optional<bool> answer(const Box& b, const Cylinder<double>& c, Tier tier = Tier::full);
+
+// A parallelepiped whose axes are a signed permutation of the unit vectors is that oriented box, and the
+// canonical route answers it with narrower values (and in powers of ε for inputs of two scales).
 inline std::optional<bool> answer(const Parallelepiped<double>& b, const Cylinder<double>& c, Tier tier = Tier::full) {
+    if (signed_permutation(b.axes)) return answer(OrientedBox<double>{b.center, b.axes, b.extents}, c, tier);
     switch (tier) {
         case Tier::fixed: return integer::parallelepiped_small(b, c);
         case Tier::series: return std::nullopt;
@@ -37,7 +43,7 @@ inline std::optional<bool> answer(const Parallelepiped<double>& b, const Cylinde
 
 // Aligned, canonical and oriented boxes.
 template <class Box>
-std::optional<bool> answer(const Box& b, const Cylinder<double>& c, Tier tier = Tier::full) {
+std::optional<bool> answer(const Box& b, const Cylinder<double>& c, Tier tier) {
     if constexpr (std::is_same_v<Box, OrientedBox<double>>) {
         if (!signed_permutation(b.axes)) return answer(Parallelepiped<double>{b.center, b.axes, b.extents}, c, tier);
     }
