@@ -3,6 +3,7 @@
 //   boxcyl::batch::intersects(cylinder, boxes, out[, Options{threads}]) -> Stats
 //   boxcyl::batch::within_distance(cylinder, boxes, margin, out[, Options]) -> Stats
 //   boxcyl::batch::distance(cylinder, boxes, out[, Options]) -> Stats        (batch/distance.hpp)
+//   boxcyl::batch::signed_distance(cylinder, boxes, out[, Options]) -> Stats (batch/distance.hpp)
 //
 // within_distance answers the clearance query dist(box, cylinder) ≤ margin (boxcyl/clearance.hpp) for
 // every box, bit for bit as the scalar within_distance(box, cylinder, margin); the same layouts,

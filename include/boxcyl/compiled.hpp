@@ -265,9 +265,30 @@ Stats distance_within(const Cylinder<double>& cyl, std::span<const Parallelepipe
 Stats distance(const Cylinder<double>& cyl, std::span<const Parallelepiped<float>> boxes, std::span<Distance> out, const Options& opt = {});
 Stats distance_within(const Cylinder<double>& cyl, std::span<const Parallelepiped<float>> boxes, double margin, std::span<Distance> out,
                       const Options& opt = {});
+// ---- Signed distance (boxcyl/batch/distance.hpp): one boxcyl::SignedDistance per box, over the threads. ----
+Stats signed_distance(const Cylinder<double>& cyl, const AlignedBoxes<double>& boxes, std::span<SignedDistance> out,
+                      const Options& opt = {});
+Stats signed_distance(const Cylinder<double>& cyl, const AlignedBoxes<float>& boxes, std::span<SignedDistance> out,
+                      const Options& opt = {});
+Stats signed_distance(const Cylinder<double>& cyl, std::span<const AlignedBox<double>> boxes, std::span<SignedDistance> out,
+                      const Options& opt = {});
+Stats signed_distance(const Cylinder<double>& cyl, std::span<const AlignedBox<float>> boxes, std::span<SignedDistance> out,
+                      const Options& opt = {});
+Stats signed_distance(const Cylinder<double>& cyl, std::span<const OrientedBox<double>> boxes, std::span<SignedDistance> out,
+                      const Options& opt = {});
+Stats signed_distance(const Cylinder<double>& cyl, std::span<const OrientedBox<float>> boxes, std::span<SignedDistance> out,
+                      const Options& opt = {});
+Stats signed_distance(const Cylinder<double>& cyl, std::span<const Parallelepiped<double>> boxes,
+                      std::span<SignedDistance> out, const Options& opt = {});
+Stats signed_distance(const Cylinder<double>& cyl, std::span<const Parallelepiped<float>> boxes, std::span<SignedDistance> out,
+                      const Options& opt = {});
 template <class Boxes>
 Stats distance(const Cylinder<float>& cyl, const Boxes& boxes, std::span<Distance> out, const Options& opt = {}) {
     return distance(widened(cyl), boxes, out, opt);
+}
+template <class Boxes>
+Stats signed_distance(const Cylinder<float>& cyl, const Boxes& boxes, std::span<SignedDistance> out, const Options& opt = {}) {
+    return signed_distance(widened(cyl), boxes, out, opt);
 }
 template <class Boxes>
 Stats distance_within(const Cylinder<float>& cyl, const Boxes& boxes, double margin, std::span<Distance> out,

@@ -77,6 +77,12 @@ Stats header_distance_within(const Cylinder<double>& c, const Boxes& b, double m
     return boxcyl::batch::distance_within(c, b, m, out, o);
 }
 
+template <class Boxes>
+Stats header_signed_distance(const Cylinder<double>& c, const Boxes& b, std::span<boxcyl::SignedDistance> out,
+                             const Options& o) {
+    return boxcyl::batch::signed_distance(c, b, out, o);
+}
+
 }  // namespace
 
 #include "boxcyl/compiled.hpp"
@@ -232,6 +238,31 @@ Stats distance(const Cylinder<double>& c, std::span<const Parallelepiped<float>>
 }
 Stats distance_within(const Cylinder<double>& c, std::span<const Parallelepiped<float>> b, double m, std::span<Distance> out, const Options& o) {
     return header_distance_within(c, b, m, out, o);
+}
+
+Stats signed_distance(const Cylinder<double>& c, const AlignedBoxes<double>& b, std::span<SignedDistance> out, const Options& o) {
+    return header_signed_distance(c, b, out, o);
+}
+Stats signed_distance(const Cylinder<double>& c, const AlignedBoxes<float>& b, std::span<SignedDistance> out, const Options& o) {
+    return header_signed_distance(c, b, out, o);
+}
+Stats signed_distance(const Cylinder<double>& c, std::span<const AlignedBox<double>> b, std::span<SignedDistance> out, const Options& o) {
+    return header_signed_distance(c, b, out, o);
+}
+Stats signed_distance(const Cylinder<double>& c, std::span<const AlignedBox<float>> b, std::span<SignedDistance> out, const Options& o) {
+    return header_signed_distance(c, b, out, o);
+}
+Stats signed_distance(const Cylinder<double>& c, std::span<const OrientedBox<double>> b, std::span<SignedDistance> out, const Options& o) {
+    return header_signed_distance(c, b, out, o);
+}
+Stats signed_distance(const Cylinder<double>& c, std::span<const OrientedBox<float>> b, std::span<SignedDistance> out, const Options& o) {
+    return header_signed_distance(c, b, out, o);
+}
+Stats signed_distance(const Cylinder<double>& c, std::span<const Parallelepiped<double>> b, std::span<SignedDistance> out, const Options& o) {
+    return header_signed_distance(c, b, out, o);
+}
+Stats signed_distance(const Cylinder<double>& c, std::span<const Parallelepiped<float>> b, std::span<SignedDistance> out, const Options& o) {
+    return header_signed_distance(c, b, out, o);
 }
 
 }  // namespace boxcyl::batch::compiled

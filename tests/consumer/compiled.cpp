@@ -81,6 +81,11 @@ void batch() {
     std::vector<boxcyl::Distance> dist(3);
     boxcyl::batch::distance(cyl, boxes, std::span<boxcyl::Distance>(dist));
     check(dist[0].upper == 0 && dist[1].lower > 0 && dist[2].upper == 0, "batch::distance of aligned boxes");
+    // The third box overlaps the cylinder by 1 along x (its depth), the second is apart.
+    std::vector<boxcyl::SignedDistance> sd(3);
+    boxcyl::batch::signed_distance(cyl, boxes, std::span<boxcyl::SignedDistance>(sd), {/*threads*/ 2});
+    check(sd[1].lower == dist[1].lower && sd[1].upper == dist[1].upper && sd[2].lower <= -1 && -1 <= sd[2].upper,
+          "batch::signed_distance of aligned boxes");
     std::vector<boxcyl::AlignedBox<T>> rows;
     for (std::size_t i = 0; i < 3; ++i) rows.push_back({{min_x[i], min_y[i], min_z[i]}, {max_x[i], max_y[i], max_z[i]}});
     mask.assign(mask.size(), 0);
