@@ -335,10 +335,21 @@ Point2 in_plane(const Explanation& e, const Vec3<double>& x) {
 // vertices take): a dot on each solid (ringed in the solid's colour) and the segment between them.
 // For intersecting solids (upper = 0) the witnesses are near one common point, and only it is drawn:
 // a segment of rounding length would show nothing, and the point says where the solids meet.
+// Where the solids overlap and the signed distance is given, the depth pair is drawn the same way: the
+// deepest point of each solid along the separating direction, and the segment between them.
+//
+// The pair drawn: the depth pair where there is one, else the nearest pair.
+std::optional<std::pair<Vec3<double>, Vec3<double>>> marked_pair(const Explanation& e) {
+    if (e.depth) return std::pair{e.depth->on_box, e.depth->on_cylinder};
+    if (e.nearest) return std::pair{e.nearest->on_box, e.nearest->on_cylinder};
+    return std::nullopt;
+}
+
 template <class To2>
 void nearest_marks(Svg& svg, const Explanation& e, const std::string& id, const To2& to2) {
-    if (!e.nearest) return;
-    const auto a = to2(e.nearest->on_box), b = to2(e.nearest->on_cylinder);
+    const auto pair = marked_pair(e);
+    if (!pair) return;
+    const auto a = to2(pair->first), b = to2(pair->second);
     // Witnesses whose pixels overflow (coordinates near the double range) have no place to be drawn.
     for (double v : {a.first, a.second, b.first, b.second})
         if (!std::isfinite(v)) return;
@@ -347,7 +358,7 @@ void nearest_marks(Svg& svg, const Explanation& e, const std::string& id, const 
                    "fill=\"" + std::string(purple) + "\" stroke=\"" + ring + "\" stroke-width=\"1.2\"");
     };
     svg.raw("<g id=\"" + id + "\" class=\"nearest\">\n");
-    if (e.nearest->upper == 0) {
+    if (e.nearest->upper == 0 && !e.depth) {
         mark(a, "#fff");
     } else {
         svg.line(a.first, a.second, b.first, b.second, "stroke=\"" + std::string(purple) + "\" stroke-width=\"1.5\"");
@@ -357,8 +368,13 @@ void nearest_marks(Svg& svg, const Explanation& e, const std::string& id, const 
     svg.raw("</g>\n");
 }
 
-// The one label of the nearest pair, with every digit the bounds need (they are a few ulps apart).
-std::string nearest_text(const Distance& d) {
+// The one label of the nearest (or depth) pair, with every digit the bounds need (they are a few ulps
+// apart).
+std::string nearest_text(const Explanation& e) {
+    const Distance& d = *e.nearest;
+    if (e.depth)
+        return "Overlapping: penetration depth in [" + num_exact(-e.depth->upper) + ", " + num_exact(-e.depth->lower) +
+               "] (boxcyl::signed_distance, proved); purple marks the deepest points.";
     if (d.upper == 0)
         return "Nearest points, distance 0: the solids intersect; purple marks a common point (boxcyl::distance).";
     if (!std::isfinite(d.upper))
@@ -379,8 +395,8 @@ void main_panel(Svg& svg, const Explanation& e, const Rect& r) {
     for (const Point2& p : e.polygon) ext.add(p.x, p.y);
     if (ext.width() == 0 && ext.height() == 0)
         for (const Point2& p : e.box_shadow) ext.add(p.x, p.y);
-    if (e.nearest)  // the nearest pair in sight (the box's may lie beyond the slab)
-        for (const Vec3<double>& w : {e.nearest->on_box, e.nearest->on_cylinder}) {
+    if (const auto pair = marked_pair(e))  // the marked pair in sight (the box's may lie beyond the slab)
+        for (const Vec3<double>& w : {pair->first, pair->second}) {
             const Point2 p = in_plane(e, w);
             ext.add(p.x, p.y);
         }
@@ -601,8 +617,8 @@ void ortho_views(Svg& svg, const Explanation& e, const std::array<Rect, 3>& rect
     for (std::size_t k = 0; k < views.size(); ++k) {
         const View& v = views[k];
         for (const auto& p : e.box_vertices) ext[k].add(p[v.a], p[v.b]);
-        if (e.nearest)
-            for (const Vec3<double>& w : {e.nearest->on_box, e.nearest->on_cylinder}) ext[k].add(w[v.a], w[v.b]);
+        if (const auto pair = marked_pair(e))
+            for (const Vec3<double>& w : {pair->first, pair->second}) ext[k].add(w[v.a], w[v.b]);
         for (const auto* rim : {&near_a, &near_b})
             for (const auto& p : *rim) {
                 ext[k].add(p[v.a] - margin, p[v.b] - margin);
@@ -721,7 +737,9 @@ void legend(Svg& svg, const Rect& r, const Explanation& e) {
                   "\" stroke=\"" + purple + "\" stroke-width=\"1.5\"/>\n<circle cx=\"" + px(x + 3) + "\" cy=\"" +
                   px(y - 4) + "\" r=\"3.5\" fill=\"" + purple + "\" stroke=\"" + blue_line + ring + "<circle cx=\"" +
                   px(x + 21) + "\" cy=\"" + px(y - 4) + "\" r=\"3.5\" fill=\"" + purple + "\" stroke=\"" + orange_line + ring,
-              {"nearest points of the box and the cylinder", "(boxcyl::distance), and the segment joining them"});
+              {e.depth ? "deepest points of the box and the cylinder along" : "nearest points of the box and the cylinder",
+               e.depth ? "the separating direction (boxcyl::signed_distance)"
+                       : "(boxcyl::distance), and the segment joining them"});
     }
     svg.raw("</g>\n");
 }
@@ -804,7 +822,7 @@ std::string render(const Explanation& e, const std::string& label, const std::ve
         ty += 16;
     }
     if (e.nearest) {  // smaller where the bounds need many digits, so that it stays left of the legend
-        const std::string t = nearest_text(*e.nearest);
+        const std::string t = nearest_text(e);
         const double size = std::min(12.0, 12 * 600 / text_width(t, 12, false));
         svg.text(24, ty, t, "font-size=\"" + px(size) + "\" fill=\"" + std::string(purple) + "\"");
     }
@@ -874,7 +892,9 @@ void add_explain_command(CLI::App& app, ExplainCommand& cmd) {
         "With a \"margin\": M key the verdict is whether the box is within distance M of the cylinder\n"
         "(exact, as `intersect` answers it), and the cylinder grown by M is drawn dashed.\n\n"
         "The nearest points boxcyl::distance gives (as `boxcyl distance` answers) are marked in every view,\n"
-        "with the segment between them, and the distance's proved bounds are written under the picture.\n\n"
+        "with the segment between them, and the distance's proved bounds are written under the picture.\n"
+        "Where the solids overlap, the deepest points boxcyl::signed_distance gives (as `boxcyl distance\n"
+        "--signed` answers) are marked instead, with the proved bounds of the penetration depth.\n\n"
         "With --line N only the first N lines of the input are read.\n\n"
         "EXIT STATUS\n"
         "  0  the picture was written\n"
@@ -986,6 +1006,8 @@ int run_explain(const ExplainCommand& cmd, std::istream& in, std::ostream& out, 
     if (q.margin) e = explain::with_margin(e, *q.margin, run_query(q, QueryOptions{}));
     // The nearest pair, as `boxcyl distance` answers it; not computed for a picture that cannot show it.
     if (e.drawable) e = explain::with_nearest(e, run_distance_query(q));
+    // Where they overlap, how deep, as `boxcyl distance --signed` answers it.
+    if (e.nearest && e.nearest->upper == 0) e = explain::with_depth(e, run_signed_distance_query(q));
     const std::string svg = render(e, p.id, input_lines(q));
 
     if (!cmd.output.empty()) return write_file(cmd.output, svg, err);

@@ -16,7 +16,9 @@
 // explains whether the box meets the cylinder itself, and the picture adds the cylinder grown by m.
 //
 // With the distance question's answer (boxcyl::distance) the picture also marks its nearest pair: the
-// proved bounds of the distance and the two approximate witness points, one on each solid.
+// proved bounds of the distance and the two approximate witness points, one on each solid. Where the
+// solids overlap, the signed distance's answer (boxcyl::signed_distance) marks how deep instead: the
+// proved bounds of the penetration depth and the deepest point of each solid along its normal.
 #pragma once
 
 #include <algorithm>  // std::min, std::max
@@ -38,6 +40,7 @@
 #include "boxcyl/clearance.hpp"  // the exact verdict with a margin
 #include "boxcyl/distance.hpp"   // the nearest pair
 #include "boxcyl/query.hpp"      // the exact verdict
+#include "boxcyl/signed_distance.hpp"  // the depth pair
 #endif
 
 namespace boxcyl::explain {
@@ -99,6 +102,9 @@ struct Explanation {
     // The distance question's answer, when given (with_nearest) and the picture is drawable: the proved
     // enclosure [lower, upper] of the distance (both 0 when the solids intersect) and the nearest pair.
     std::optional<Distance> nearest;
+    // Where the solids overlap (nearest's upper is 0), the signed distance's answer when given
+    // (with_depth): minus the penetration depth's proved enclosure, the normal and the deepest pair.
+    std::optional<SignedDistance> depth;
 
     // The picture's verdict: within the margin when one is given, else intersects.
     bool verdict() const { return margin ? exact_within : exact_intersects; }
@@ -275,6 +281,14 @@ inline Explanation with_nearest(Explanation e, const Distance& d) {
     return e;
 }
 
+// The depth pair on top of a picture with its nearest pair: `sd` must be boxcyl::signed_distance(box,
+// cyl) for the picture's inputs. Kept only where the solids overlap (sd.upper < 0): touching solids
+// have no depth to show, and apart the nearest pair is the same answer.
+inline Explanation with_depth(Explanation e, const SignedDistance& sd) {
+    if (e.nearest && sd.upper < 0) e.depth = sd;
+    return e;
+}
+
 #if defined(BOXCYL_HAS_EXACT)
 // The same with the exact verdict of the default query.
 template <class Box>
@@ -288,11 +302,14 @@ Explanation compute_within(const Box& box, const Cylinder<double>& cyl, double m
     return with_margin(compute(box, cyl), margin, boxcyl::within_distance(box, cyl, margin));
 }
 
-// The picture with the nearest pair: the exact verdict and boxcyl::distance computed.
+// The picture with the nearest pair: the exact verdict and boxcyl::distance computed, and where the
+// solids overlap boxcyl::signed_distance's depth pair.
 template <class Box>
 Explanation compute_nearest(const Box& box, const Cylinder<double>& cyl) {
-    const Explanation e = compute(box, cyl);
-    return e.drawable ? with_nearest(e, boxcyl::distance(box, cyl)) : e;
+    Explanation e = compute(box, cyl);
+    if (!e.drawable) return e;
+    e = with_nearest(e, boxcyl::distance(box, cyl));
+    return e.nearest->upper == 0 ? with_depth(e, boxcyl::signed_distance(box, cyl)) : e;
 }
 #endif
 

@@ -390,6 +390,41 @@ TEST(ExplainSvg, NearestPairOfIntersectingSolidsIsOneCommonPoint) {
     }
 }
 
+// Overlapping solids: the cylinder's side reaches 0.25 into the face x = 1 (its axis at x = 1.25, radius
+// 0.5), and that is the penetration depth. The depth pair is drawn instead of a common point: the box's
+// deepest point at x = 1, the cylinder's at x = 0.75, joined; the text gives the depth's bounds.
+TEST(ExplainSvg, OverlappingSolidsShowTheDepthPair) {
+    const Cylinder<double> c{{1.25, 0.5, 0.5}, {0, 0, 1}, 0.5, 1};
+    const Explanation e = explain::compute_nearest(unit_box(), c);
+    ASSERT_TRUE(e.nearest);
+    EXPECT_EQ(e.nearest->upper, 0.0);
+    ASSERT_TRUE(e.depth);
+    const SignedDistance sd = boxcyl::signed_distance(unit_box(), c);
+    EXPECT_EQ(e.depth->lower, sd.lower);
+    EXPECT_EQ(e.depth->upper, sd.upper);
+    EXPECT_LE(sd.lower, -0.25);
+    EXPECT_GE(sd.upper, -0.25);
+    EXPECT_NEAR(e.depth->on_box[0], 1, 1e-9);
+    EXPECT_NEAR(e.depth->on_cylinder[0], 0.75, 1e-9);
+    const std::string svg = cli::render_svg(e, "");
+    const std::string text = ">Overlapping: penetration depth in [" + round_trip(-sd.upper) + ", " +
+                             round_trip(-sd.lower) + "] (boxcyl::signed_distance, proved)";
+    EXPECT_NE(svg.find(text), std::string::npos) << text;
+    EXPECT_EQ(svg.find("distance 0: the solids intersect"), std::string::npos);
+    EXPECT_NE(svg.find("deepest points of the box and the cylinder"), std::string::npos);  // the legend
+    // Seen along the axis and from the top, the segment runs left from the box's point to the cylinder's.
+    for (const char* id : {"<g id=\"nearest\"", "<g id=\"view-top-nearest\"", "<g id=\"view-front-nearest\""}) {
+        const std::string g = group(svg, id);
+        ASSERT_FALSE(g.empty()) << id;
+        EXPECT_GT(attribute(g, "<line", "x1"), attribute(g, "<line", "x2")) << id;
+        EXPECT_EQ(std::count(g.begin(), g.end(), '<') - 1, 3) << id;  // a line and two circles
+    }
+    // Touching solids have no depth: the common point only (the test above).
+    EXPECT_FALSE(explain::with_depth(explain::compute_nearest(unit_box(), Cylinder<double>{{1.5, 0.5, 0.5}, {0, 0, 1}, 0.5, 1}),
+                                     boxcyl::signed_distance(unit_box(), Cylinder<double>{{1.5, 0.5, 0.5}, {0, 0, 1}, 0.5, 1}))
+                     .depth);
+}
+
 // No distance asked (compute) or a picture that shows nothing: no nearest pair.
 TEST(ExplainSvg, NearestPairOnlyWhenAskedAndDrawable) {
     const Cylinder<double> c{{3, 0.5, 0.5}, {0, 0, 1}, 1, 1};
