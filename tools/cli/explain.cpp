@@ -331,13 +331,6 @@ Point2 in_plane(const Explanation& e, const Vec3<double>& x) {
     return {dot(e.e1, d), dot(e.e2, d)};
 }
 
-// The nearest pair in one view, `to2` the view's mapping of world points to pixels (the one its box
-// vertices take): a dot on each solid (ringed in the solid's colour) and the segment between them.
-// For intersecting solids (upper = 0) the witnesses are near one common point, and only it is drawn:
-// a segment of rounding length would show nothing, and the point says where the solids meet.
-// Where the solids overlap and the signed distance is given, the depth pair is drawn the same way: the
-// deepest point of each solid along the separating direction, and the segment between them.
-//
 // The pair drawn: the depth pair where there is one, else the nearest pair.
 std::optional<std::pair<Vec3<double>, Vec3<double>>> marked_pair(const Explanation& e) {
     if (e.depth) return std::pair{e.depth->on_box, e.depth->on_cylinder};
@@ -345,6 +338,12 @@ std::optional<std::pair<Vec3<double>, Vec3<double>>> marked_pair(const Explanati
     return std::nullopt;
 }
 
+// The nearest pair in one view, `to2` the view's mapping of world points to pixels (the one its box
+// vertices take): a dot on each solid (ringed in the solid's colour) and the segment between them.
+// For intersecting solids (upper = 0) the witnesses are near one common point, and only it is drawn:
+// a segment of rounding length would show nothing, and the point says where the solids meet. Where they
+// overlap and the signed distance is given, the depth pair is drawn instead, as a pair apart is: the
+// deepest point of each solid along the separating direction, and the segment between them.
 template <class To2>
 void nearest_marks(Svg& svg, const Explanation& e, const std::string& id, const To2& to2) {
     const auto pair = marked_pair(e);
