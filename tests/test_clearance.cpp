@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cfenv>      // rounding modes
+#include <gmpxx.h>     // the shoulders' sizes, exactly
 #include <cmath>      // std::nextafter, std::ldexp
 #include <cstdint>    // seeds
 #include <random>     // random margins
@@ -147,6 +148,52 @@ TEST(Clearance, RandomPairsMarginZeroAndMonotone) {
     EXPECT_GT(within_count, 100);
 }
 
+// Every shoulder lies inside the rounded cylinder: max(r' − r, 0)² + max((h' − h)/2, 0)² ≤ m², exactly
+// (rationals), for margins and sizes from subnormal to huge, in every rounding mode.
+TEST(Clearance, ShouldersLieInTheRoundedCylinder) {
+    const double values[] = {0.0, 0x1p-1074, 0x1.8p-1060, 1e-300, 0.1, 0.7, 1.0, 3.0, 1e10, 0x1.fffffffffffffp1000, 1e308};
+    int checked = 0;
+    for (const int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO})
+        for (const double r : values)
+            for (const double h : values)
+                for (const double m : values) {
+                    if (m == 0) continue;
+                    const Cylinder<double> cyl{{0, 0, 0}, {0, 0, 1}, r, h};
+                    detail::clearance::Grown g{};
+                    std::array<Cylinder<double>, detail::clearance::kShoulders.size()> shoulders;
+                    {
+                        const RoundingMode rounding(mode);
+                        g = detail::clearance::grown(cyl, m);
+                        for (std::size_t k = 0; k < shoulders.size(); ++k) shoulders[k] = detail::clearance::shoulder(g, k);
+                    }
+                    for (std::size_t k = 0; k < shoulders.size(); ++k) {
+                        const Cylinder<double>& s = shoulders[k];
+                        // The sizes' excess over the cylinder's (a size below it adds nothing to the distance).
+                        mpq_class dr = mpq_class(s.radius) - r, dh = (mpq_class(s.height) - h) / 2;
+                        dr = dr > 0 ? dr : mpq_class(0), dh = dh > 0 ? dh : mpq_class(0);
+                        EXPECT_TRUE(s.radius >= 0 && s.height >= 0 && dr * dr + dh * dh <= mpq_class(m) * m)
+                            << "radius " << hex(r) << ", height " << hex(h) << ", margin " << hex(m) << ", shoulder " << k
+                            << ", rounding " << mode_name(mode);
+                        ++checked;
+                    }
+                }
+    EXPECT_GT(checked, 4000);
+}
+
+// A box corner in the rim region, within m of the rim but outside the fat and tall cylinders: a
+// shoulder decides it in stage 0, and a margin below its distance is not within.
+TEST(Clearance, ShoulderDecidesACornerInTheRimRegion) {
+    // The corner (1.6, 0, 1.6) lies 0.6·√2 ≈ 0.8485 from the rim point (1, 0, 1).
+    const AlignedBox<double> box{{1.6, -1, 1.6}, {3, 1, 3}};
+    const detail::clearance::Grown g = detail::clearance::grown(kUnit, 1.0);
+    const auto verdicts = detail::clearance::stage0_verdicts<false>(box, g);
+    EXPECT_EQ(verdicts[1], true);   // outer: a hit, which decides nothing
+    EXPECT_EQ(verdicts[3 + 1], true);  // the 45° shoulder: a hit
+    EXPECT_TRUE(within_distance(box, kUnit, 1.0));
+    EXPECT_TRUE(within_distance(box, kUnit, 0.8486));
+    EXPECT_FALSE(within_distance(box, kUnit, 0.8485));
+}
+
 // The probes' stage 0 (one plain-double problem for the three probe cylinders, filtered/semi_static.hpp's
 // error bounds) on pairs of every generator profile, at margins from subnormal to 2^20 of the shapes
 // and at the approximate distance itself (probe cylinders within rounding of touching), in every
@@ -170,16 +217,19 @@ TEST(Clearance, ProbesStageZeroAgreesWithTheExactProbes) {
                     const detail::clearance::Grown g = detail::clearance::grown(cyl, m);
                     const auto probes = detail::clearance::probes(g);
                     for (const int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
-                        std::array<std::optional<bool>, 3> verdicts;
+                        std::array<std::optional<bool>, detail::clearance::kStage0Cylinders> verdicts;
                         {
                             const RoundingMode rounding(mode);
                             verdicts = detail::clearance::stage0_verdicts<true>(box, g);
                         }
-                        for (std::size_t k = 0; k < probes.size(); ++k) {
+                        for (std::size_t k = 0; k < verdicts.size(); ++k) {
                             if (!verdicts[k]) continue;
                             ++decided;
-                            EXPECT_EQ(*verdicts[k], intersects(box, probes[k].cylinder))
-                                << describe(c) << "\nmargin " << hex(m) << ", probe " << k << ", rounding " << mode_name(mode);
+                            const Cylinder<double> probe =
+                                k < probes.size() ? probes[k].cylinder : detail::clearance::shoulder(g, k - probes.size());
+                            EXPECT_EQ(*verdicts[k], intersects(box, probe))
+                                << describe(c) << "\nmargin " << hex(m) << ", stage 0 cylinder " << k << ", rounding "
+                                << mode_name(mode);
                         }
                     }
                 }

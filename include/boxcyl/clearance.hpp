@@ -8,10 +8,11 @@
 //
 // How: a table of stages, each answering only what it proves: three probes with the exact intersection
 // query (a cylinder inside the rounded one — a hit answers yes; one that holds it — a miss answers
-// no), certified distance bounds from an approximate closest pair (filtered/separation.hpp), the same
-// refined in double-double (filtered/separation_refined.hpp), the rim tori's tests in interval
-// arithmetic (filtered/rim.hpp), and the exact clearance decision
-// (exact/clearance.hpp) for what remains. docs/clearance.md has the method and its figures.
+// no) and three more cylinders inside it (the shoulders) in that query's first two stages, certified
+// distance bounds from an approximate closest pair (filtered/separation.hpp), the same refined in
+// double-double (filtered/separation_refined.hpp), the rim tori's tests in interval arithmetic
+// (filtered/rim.hpp), and the exact clearance decision (exact/clearance.hpp) for what remains.
+// docs/clearance.md has the method and its figures.
 #pragma once
 
 #include <algorithm>    // std::max
@@ -37,6 +38,7 @@
 #include "boxcyl/filtered/rim.hpp"
 #include "boxcyl/filtered/separation.hpp"
 #include "boxcyl/filtered/separation_refined.hpp"
+#include "boxcyl/filtered/witness_search.hpp"
 #endif
 
 namespace boxcyl {
@@ -59,6 +61,22 @@ inline Bounds sum_bounds(double a, double b) {
     return {std::bit_cast<double>(bits - 1), std::bit_cast<double>(bits + 1)};
 }
 
+// A double ≤ m·f (m, f ≥ 0 finite): the computed product's neighbour below, or 0. The exact product
+// lies between the computed one and a neighbour of it, in every rounding mode.
+inline double product_below(double m, double f) {
+    const double p = m * f;
+    if (!(p > 0)) return 0;
+    if (!std::isfinite(p)) return std::numeric_limits<double>::max();
+    return std::bit_cast<double>(std::bit_cast<std::uint64_t>(p) - 1);
+}
+
+// The rounded cylinder's shoulders: it holds every cylinder of radius r + m·cos θ and half height
+// h/2 + m·sin θ (a point within both is at most √((m cos θ)² + (m sin θ)²) = m from the cylinder). These
+// factors (cos θ, sin θ) for θ of 30°, 45° and 60°, rounded so that cos² + sin² ≤ 1 exactly, give three
+// cylinders between fat and tall: a box that cuts the rounded cylinder's rim region meets one of them.
+inline constexpr std::array<std::array<double, 2>, 3> kShoulders{{{0.866, 0.4999}, {0.7071, 0.7071}, {0.4999, 0.866}}};
+static_assert(0.866 * 0.866 + 0.4999 * 0.4999 < 1 && 2 * 0.7071 * 0.7071 < 1);
+
 // The cylinders the probes ask, sharing the cylinder's centre and axis: `outer` holds the rounded
 // cylinder (radius ≥ r + m, height ≥ h + 2m: a miss is a miss; left out, `outer_valid` false, when
 // those sizes overflow), `fat` and `tall` lie inside it (radius ≤ r + m; height ≤ h + 2m: a hit is a
@@ -66,12 +84,19 @@ inline Bounds sum_bounds(double a, double b) {
 struct Grown {
     Cylinder<double> outer, fat, tall;
     bool outer_valid;
+    double m;
 };
 inline Grown grown(const Cylinder<double>& c, double m) {
     const Bounds r = sum_bounds(c.radius, m);
     const Bounds h = sum_bounds(c.height, 2 * m);  // 2m is exact, or +∞ (then h.hi = ∞)
     return {{c.center, c.axis, r.hi, h.hi}, {c.center, c.axis, r.lo, c.height}, {c.center, c.axis, c.radius, h.lo},
-            std::isfinite(r.hi) && std::isfinite(h.hi)};
+            std::isfinite(r.hi) && std::isfinite(h.hi), m};
+}
+// Shoulder k, inside the rounded cylinder: its sizes rounded down (g.tall has the radius as given,
+// g.fat the height).
+inline Cylinder<double> shoulder(const Grown& g, std::size_t k) {
+    return {g.fat.center, g.fat.axis, sum_bounds(g.tall.radius, product_below(g.m, kShoulders[k][0])).lo,
+            sum_bounds(g.fat.height, 2 * product_below(g.m, kShoulders[k][1])).lo};
 }
 
 // One probe: the exact intersection query on a cylinder; when its answer is `decides_when`, that is
@@ -85,6 +110,13 @@ struct Probe {
 // (a hit is a hit), outer (a miss is a miss), tall (a hit is a hit).
 inline std::array<Probe, 3> probes(const Grown& g) {
     return {{{g.fat, true, true}, {g.outer, false, g.outer_valid}, {g.tall, true, true}}};
+}
+
+// Stage 0's cylinders: the three probes, then the shoulders (a hit is a hit). The shoulders get stage
+// 0 and its search, no whole query: what those leave in the rim region, the distance bounds answer.
+inline constexpr std::size_t kStage0Cylinders = 3 + kShoulders.size();
+inline Probe stage0_cylinder(const Grown& g, const std::array<Probe, 3>& ps, std::size_t k) {
+    return k < ps.size() ? ps[k] : Probe{shoulder(g, k - ps.size()), true, true};
 }
 
 #if defined(BOXCYL_HAS_EXACT)
@@ -102,22 +134,36 @@ struct Pair {
     // The distance bounds' search, for the refined stage (constructed there: it is most of a Pair).
     std::optional<filtered::separation::Approximate> search;
     filtered::rim::Proved proved{};
-    std::array<std::optional<bool>, 3> stage0{};  // each probe's answer where stage 0 gave it
+    std::array<std::optional<bool>, kStage0Cylinders> stage0{};  // each answer stage 0 or the search gave
 };
 
 // A stage answers (true: within, false: not) or passes (nullopt) to the next.
 template <class Box>
 using Stage = std::optional<bool> (*)(Pair<Box>&);
 
-// Stage 0 of the exact intersection query (filtered/semi_static.hpp) on the three probes at once: one
-// problem, computed for the outer cylinder — the largest, so its length scale bounds the other two —
-// with each probe's sizes set in turn (the reduction to the box's frame, most of stage 0's cost, is
-// shared). Each probe's verdict in probes() order (nullopt: undecided, or not asked: the outer one
-// left out, a query that stage 0 takes only rescaled, a parallelepiped); unless `all`, it stops at
-// the first probe answered with its deciding answer.
+// The shoulders' verdicts (after the probes': few queries get here), on the probes' problem. Not
+// inlined: as part of the probes' loop, it made the common path slower.
 template <bool all, class Box>
-std::array<std::optional<bool>, 3> stage0_verdicts(const Box& box, const Grown& g) {
-    std::array<std::optional<bool>, 3> verdicts{};
+[[gnu::noinline]] void shoulder_verdicts(filtered::Prepared<Box>& prep, const Grown& g,
+                                         std::array<std::optional<bool>, kStage0Cylinders>& verdicts) {
+    for (std::size_t k = 0; k < kShoulders.size(); ++k) {
+        const Cylinder<double> s = shoulder(g, k);
+        const Cylinder<double> c{prep.cyl.center, prep.cyl.axis, s.radius, s.height};
+        filtered::semi_static::set_sizes_of<Box>(prep.p, c.radius, c.height);
+        verdicts[3 + k] = filtered::semi_static::decide(prep.p, prep.box, c);
+        if (!all && verdicts[3 + k] == true) return;
+    }
+}
+
+// Stage 0 of the exact intersection query (filtered/semi_static.hpp) on stage 0's cylinders at once:
+// one problem, computed for the outer cylinder — the largest, so its length scale bounds the others —
+// with each cylinder's sizes set in turn (the reduction to the box's frame, most of stage 0's cost, is
+// shared). Each cylinder's verdict in stage0_cylinder() order (nullopt: undecided, or not asked: the
+// outer one left out, a query that stage 0 takes only rescaled, a parallelepiped); unless `all`, it
+// stops at the first one answered with its deciding answer.
+template <bool all, class Box>
+std::array<std::optional<bool>, kStage0Cylinders> stage0_verdicts(const Box& box, const Grown& g) {
+    std::array<std::optional<bool>, kStage0Cylinders> verdicts{};
 #if !(defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT)
     if constexpr (!std::is_same_v<Box, Parallelepiped<double>>) {  // a parallelepiped's query has no stage 0
         const std::array<Probe, 3> ps = probes(g);
@@ -128,23 +174,50 @@ std::array<std::optional<bool>, 3> stage0_verdicts(const Box& box, const Grown& 
             const Cylinder<double> c{prep.cyl.center, prep.cyl.axis, ps[k].cylinder.radius, ps[k].cylinder.height};
             filtered::semi_static::set_sizes_of<Box>(prep.p, c.radius, c.height);
             verdicts[k] = filtered::semi_static::decide(prep.p, prep.box, c);
-            if (!all && verdicts[k] == ps[k].decides_when) break;
+            if (!all && verdicts[k] == ps[k].decides_when) return verdicts;
         }
+        shoulder_verdicts<all>(prep, g, verdicts);
     }
 #endif
     return verdicts;
 }
-// A probe that stage 0 answered with its deciding answer is the answer; one answered otherwise is
-// skipped below; one left undecided asks the whole query.
+// A cylinder that stage 0 answered with its deciding answer is the answer; a probe answered otherwise
+// is skipped below; one left undecided asks the whole query.
 template <class Box>
 std::optional<bool> probes_stage0(Pair<Box>& q) {
     q.stage0 = stage0_verdicts<false>(q.box, q.g);
     const std::array<Probe, 3> ps = probes(q.g);
     for (std::size_t k = 0; k < ps.size(); ++k)
         if (q.stage0[k] == ps[k].decides_when) return ps[k].decides_when;
+    for (std::size_t k = ps.size(); k < kStage0Cylinders; ++k)
+        if (q.stage0[k] == true) return true;  // a shoulder's hit
     return std::nullopt;
 }
-// Probe k of probes(), unless stage 0 answered it.
+// Stage 0b of the exact intersection query (filtered/witness_search.hpp: a search in double for a
+// point or a direction that stage 0's certificates then prove) on each shoulder that stage 0 left
+// undecided, on the probes' problem again: hits in the rim region that no fixed witness shows. Sound in
+// every rounding mode, as in the intersection query. (The probes' own whole queries search too.)
+template <class Box>
+std::optional<bool> probes_search(Pair<Box>& q) {
+#if !(defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT)
+    if constexpr (!std::is_same_v<Box, Parallelepiped<double>>) {
+        const std::array<Probe, 3> ps = probes(q.g);
+        if (!ps[1].valid) return std::nullopt;
+        filtered::Prepared<Box> prep(q.box, ps[1].cylinder);
+        if (!prep.in_range || prep.rescaled()) return std::nullopt;
+        for (std::size_t k = 3; k < kStage0Cylinders; ++k) {
+            if (q.stage0[k]) continue;
+            const Probe p = stage0_cylinder(q.g, ps, k);
+            const Cylinder<double> c{prep.cyl.center, prep.cyl.axis, p.cylinder.radius, p.cylinder.height};
+            filtered::semi_static::set_sizes_of<Box>(prep.p, c.radius, c.height);
+            q.stage0[k] = filtered::witness_search::decide(prep.p, prep.box, c);
+            if (q.stage0[k] == p.decides_when) return p.decides_when;
+        }
+    }
+#endif
+    return std::nullopt;
+}
+// Probe k of probes(), unless stage 0 or the search answered it.
 template <class Box, std::size_t k>
 std::optional<bool> probe(Pair<Box>& q) {
     const Probe p = probes(q.g)[k];
@@ -197,18 +270,18 @@ std::optional<bool> exact_stage(Pair<Box>& q) {
 }
 
 // The order is policy: on random pairs most are decided by the probes' stage 0 (the fat cylinder's hit
-// or the outer one's miss, certified in plain double); the probes' own queries take what it leaves
-// undecided; the distance bounds in double, dearer, decide
+// or the outer one's miss, certified in plain double, or a shoulder's hit); the shoulders' search and the
+// probes' own queries take most of what it leaves undecided; the distance bounds in double, dearer, decide
 // nearly all of the rest; the refined bounds those within rounding of the margin; the rim tests and
 // the exact decision what is left: distances exactly at the margin, and every query in a directed
 // rounding mode that the earlier stages leave (docs/clearance.md gives the measured shares).
 template <class Box>
-inline constexpr std::array<Stage<Box>, 8> stages{&probes_stage0<Box>, &probe<Box, 0>,       &probe<Box, 1>,
-                                                  &probe<Box, 2>,      &separation<Box>,     &refined_separation<Box>,
-                                                  &rim<Box>,           &exact_stage<Box>};
-inline constexpr std::array<const char*, 8> stage_names{"probes' stage 0", "fat probe",      "outer probe",
-                                                        "tall probe",      "distance bounds", "refined bounds",
-                                                        "rim intervals",   "exact"};
+inline constexpr std::array<Stage<Box>, 9> stages{&probes_stage0<Box>, &probes_search<Box>,   &probe<Box, 0>,
+                                                  &probe<Box, 1>,      &probe<Box, 2>,       &separation<Box>,
+                                                  &refined_separation<Box>, &rim<Box>,       &exact_stage<Box>};
+inline constexpr std::array<const char*, 9> stage_names{"probes' stage 0", "probes' search", "fat probe",
+                                                        "outer probe",     "tall probe",     "distance bounds",
+                                                        "refined bounds",  "rim intervals",  "exact"};
 
 // The index of the stage that answers, for the benchmark's per-stage shares (margin > 0).
 template <class Box>
