@@ -5,7 +5,9 @@
 #    deciding pipeline row, the library's per-row statistics (filtered::Stats), and a voxel grid
 #    touching a cylinder through the scalar, batch and grid interfaces;
 #  * bench/bench_query.cpp: each algorithm in each arithmetic, and FCL, Bullet and ODE (bench/peers.cpp)
-#    on the random and boundary sets.
+#    on the random and boundary sets;
+#  * bench/bench_clearance.cpp: within_distance beside intersects() and the peers' distance ≤ m.
+# (bench/bench_distance.cpp, about ten minutes of its own, is run as docs/distance.md says.)
 # 15–25 minutes with the build on a shared 2-core machine. The sections after the marker line at the
 # end of docs/performance.md (batch API and grid query at scale) are kept as they are.
 # Usage: scripts/bench.sh [bench_query flags...]   e.g. --benchmark_repetitions=9, --boundary-pairs=1024
@@ -22,7 +24,7 @@ opt="-O2 -g -DNDEBUG"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="$opt" \
   -DBOXCYL_BUILD_BENCHMARKS=ON -DBOXCYL_BENCH_PEERS=ON -DBOXCYL_BUILD_TESTS=OFF -DBOXCYL_BUILD_TOOLS=OFF -DBOXCYL_BUILD_PYTHON=OFF \
   -DBOXCYL_INSTALL=OFF >/dev/null
-cmake --build "$build" -j "${JOBS:-$(nproc)}" --target bench_query bench_pipeline >/dev/null
+cmake --build "$build" -j "${JOBS:-$(nproc)}" --target bench_query bench_pipeline bench_clearance >/dev/null
 
 # The flags the benchmark was actually compiled with (CMake's flags.make), and the compiler.
 flags=$(sed -n 's/^CXX_FLAGS = //p' "$build/bench/CMakeFiles/bench_query.dir/flags.make")
@@ -35,13 +37,20 @@ version() { dpkg-query -W -f='${Version}' "$1" 2>/dev/null || echo "(version unk
 table=$(mktemp)
 sets=$(mktemp)
 kept=$(mktemp)
+clearance=$(mktemp)
 log="$build/bench_output.txt"  # the full console output of the last run
-trap 'rm -f "$table" "$sets" "$kept"' EXIT
+trap 'rm -f "$table" "$sets" "$kept" "$clearance"' EXIT
 # The hand-written analysis below this marker line survives regeneration.
 marker='<!-- analysis: kept by scripts/bench.sh -->'
 if [ -f "$out" ]; then awk -v m="$marker" 'found || $0 == m { found = 1; print }' "$out" > "$kept"; fi
 "$build/bench/bench_pipeline" --markdown="$sets" --benchmark_color=false | tee "$log"
 "$build/bench/bench_query" --markdown="$table" --benchmark_color=false "$@" | tee -a "$log"
+# The clearance benchmark prints its table after Google Benchmark's output (from the first line that
+# starts "| set |"). Its repetitions are interleaved at random, so that a slow minute of a shared
+# machine does not fall on one side of a ratio.
+interleaved=(--benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
+             --benchmark_report_aggregates_only=true --benchmark_color=false)
+"$build/bench/bench_clearance" "${interleaved[@]}" | tee -a "$log" | sed -n '/^| set |/,$p' > "$clearance"
 
 {
 cat <<HEAD
@@ -160,6 +169,20 @@ on the boundary queries that the double-double linear inequalities decide (row \
 (the first minute is the sets' generation, with the oracle; a long \`min_time\` makes the timed loop
 dominate the profile).
 TAIL
+cat <<CLEARANCE
+
+## Clearance: within_distance (\`bench/bench_clearance.cpp\`)
+
+\`boxcyl::within_distance(box, cyl, m)\` beside the exact default \`intersects()\` on the same 4096 random
+pairs (margins U(0, 1)·(r + h)), and on 512 at-margin queries (each pair at its flip margin and one ulp
+below: every distance within one ulp of its margin) beside plain double §4 \`intersects()\` on the same
+shapes; FCL's and Bullet's distance compared with m on both sets (the same conversions as above). Median
+of 5 repetitions, interleaved at random. *wrong* counts the answers that differ from \`within_distance\`'s;
+the last lines give the share of each set that each stage of the query answers
+([clearance.md](clearance.md) describes them).
+
+CLEARANCE
+cat "$clearance"
 if [ -s "$kept" ]; then echo; cat "$kept"; fi
 } > "$out"
 echo "wrote $out" >&2

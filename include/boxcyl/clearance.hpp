@@ -279,7 +279,7 @@ template <class Box>
 inline constexpr std::array<Stage<Box>, 9> stages{&probes_stage0<Box>, &probes_search<Box>,   &probe<Box, 0>,
                                                   &probe<Box, 1>,      &probe<Box, 2>,       &separation<Box>,
                                                   &refined_separation<Box>, &rim<Box>,       &exact_stage<Box>};
-inline constexpr std::array<const char*, 9> stage_names{"probes' stage 0", "probes' search", "fat probe",
+inline constexpr std::array<const char*, 9> stage_names{"probes' stage 0", "shoulders' search", "fat probe",
                                                         "outer probe",     "tall probe",     "distance bounds",
                                                         "refined bounds",  "rim intervals",  "exact"};
 
