@@ -100,36 +100,37 @@ LineAnswer answer_distance_line_unguarded(std::string_view text, std::size_t lin
 
 }  // namespace
 
-std::string format_distance(const std::string& id, const Distance& d) {
+namespace {
+
+// One answer line: the enclosure, the direction where there is one (the signed distance's), the pair.
+std::string format_answer(const std::string& id, double lower, double upper, const Vec3<double>* normal,
+                          const Vec3<double>& on_box, const Vec3<double>& on_cylinder) {
     std::string s = "{";
     if (!id.empty()) s += "\"id\": " + id + ", ";
     s += "\"lower\": ";
-    append_number(s, d.lower);
+    append_number(s, lower);
     s += ", \"upper\": ";
-    append_number(s, d.upper);
+    append_number(s, upper);
+    if (normal) {
+        s += ", \"normal\": ";
+        append_point(s, *normal);
+    }
     s += ", \"on_box\": ";
-    append_point(s, d.on_box);
+    append_point(s, on_box);
     s += ", \"on_cylinder\": ";
-    append_point(s, d.on_cylinder);
+    append_point(s, on_cylinder);
     s += '}';
     return s;
 }
 
+}  // namespace
+
+std::string format_distance(const std::string& id, const Distance& d) {
+    return format_answer(id, d.lower, d.upper, nullptr, d.on_box, d.on_cylinder);
+}
+
 std::string format_signed_distance(const std::string& id, const SignedDistance& d) {
-    std::string s = "{";
-    if (!id.empty()) s += "\"id\": " + id + ", ";
-    s += "\"lower\": ";
-    append_number(s, d.lower);
-    s += ", \"upper\": ";
-    append_number(s, d.upper);
-    s += ", \"normal\": ";
-    append_point(s, d.normal);
-    s += ", \"on_box\": ";
-    append_point(s, d.on_box);
-    s += ", \"on_cylinder\": ";
-    append_point(s, d.on_cylinder);
-    s += '}';
-    return s;
+    return format_answer(id, d.lower, d.upper, &d.normal, d.on_box, d.on_cylinder);
 }
 
 LineAnswer answer_distance_line(std::string_view text, std::size_t line_number, bool signed_distance) {
