@@ -270,18 +270,21 @@ std::optional<bool> exact_stage(Pair<Box>& q) {
 }
 
 // The order is policy: on random pairs most are decided by the probes' stage 0 (the fat cylinder's hit
-// or the outer one's miss, certified in plain double, or a shoulder's hit); the shoulders' search and the
-// probes' own queries take most of what it leaves undecided; the distance bounds in double, dearer, decide
-// nearly all of the rest; the refined bounds those within rounding of the margin; the rim tests and
-// the exact decision what is left: distances exactly at the margin, and every query in a directed
-// rounding mode that the earlier stages leave (docs/clearance.md gives the measured shares).
+// or the outer one's miss, certified in plain double, or a shoulder's hit), and the shoulders' search
+// and the distance bounds in double decide nearly all of the rest. The refined bounds come before the
+// probes' whole queries: at the margin they decide the pairs whose distance is within rounding of it
+// but not equal (most contacts with the side or a cap among them), where the probes' queries, on
+// shapes within rounding of touching, cost as much and decide fewer. The probes then decide the
+// side and cap contacts at exactly the margin; the rim tests and the exact decision what is left:
+// rim contacts at exactly the margin, and queries in a directed rounding mode that the earlier stages
+// leave (docs/clearance.md gives the measured shares).
 template <class Box>
-inline constexpr std::array<Stage<Box>, 9> stages{&probes_stage0<Box>, &probes_search<Box>,   &probe<Box, 0>,
-                                                  &probe<Box, 1>,      &probe<Box, 2>,       &separation<Box>,
-                                                  &refined_separation<Box>, &rim<Box>,       &exact_stage<Box>};
-inline constexpr std::array<const char*, 9> stage_names{"probes' stage 0", "shoulders' search", "fat probe",
-                                                        "outer probe",     "tall probe",     "distance bounds",
-                                                        "refined bounds",  "rim intervals",  "exact"};
+inline constexpr std::array<Stage<Box>, 9> stages{&probes_stage0<Box>, &probes_search<Box>,   &separation<Box>,
+                                                  &refined_separation<Box>, &probe<Box, 0>,  &probe<Box, 1>,
+                                                  &probe<Box, 2>,      &rim<Box>,            &exact_stage<Box>};
+inline constexpr std::array<const char*, 9> stage_names{"probes' stage 0", "shoulders' search", "distance bounds",
+                                                        "refined bounds",  "fat probe",      "outer probe",
+                                                        "tall probe",      "rim intervals",  "exact"};
 
 // The index of the stage that answers, for the benchmark's per-stage shares (margin > 0).
 template <class Box>

@@ -118,13 +118,14 @@ inline Approximate approximate(const rim::Box& box, const rim::Rims& f, const Cy
 }
 
 // The bounds for the box enclosed by `box` (rim.hpp's enclosure) and the cylinder. With `decide_at`
-// ≥ 0 the search stops once the distance is clearly on one side of it, and only the bound that can
-// decide "dist ≤ decide_at" is proved (the other is left at 0 or +∞). `search`, when given, receives
-// the search's result.
+// ≥ 0 the search stops once the distance is clearly on one side of it, or is known to 2^-26
+// relatively (closer to decide_at, bounds in double cannot decide; the refined stage, Newton's method
+// from this pair, takes it on), and only the bound that can decide "dist ≤ decide_at" is proved (the
+// other is left at 0 or +∞). `search`, when given, receives the search's result.
 inline Bounds bounds(const rim::Box& box, const Cylinder<double>& c, double decide_at = -1, Approximate* search = nullptr) {
     const rim::Rims f(c, 0.0);
     if (!f.valid) return {0, std::numeric_limits<double>::infinity()};
-    const Approximate a = approximate(box, f, c, decide_at);
+    const Approximate a = approximate(box, f, c, decide_at, decide_at >= 0 ? 0x1p-26 : 0x1p-44);
     if (search) *search = a;
     const algo::gjk::Closest& g = a.closest;
     const double approx_upper = a.upper;
