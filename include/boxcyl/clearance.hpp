@@ -115,9 +115,6 @@ inline std::array<Probe, 3> probes(const Grown& g) {
 // Stage 0's cylinders: the three probes, then the shoulders (a hit is a hit). The shoulders get stage
 // 0 and its search, no whole query: what those leave in the rim region, the distance bounds answer.
 inline constexpr std::size_t kStage0Cylinders = 3 + kShoulders.size();
-inline Probe stage0_cylinder(const Grown& g, const std::array<Probe, 3>& ps, std::size_t k) {
-    return k < ps.size() ? ps[k] : Probe{shoulder(g, k - ps.size()), true, true};
-}
 
 #if defined(BOXCYL_HAS_EXACT)
 // One query on its way through the stages, with what earlier stages proved for later ones.
@@ -158,7 +155,7 @@ template <bool all, class Box>
 // Stage 0 of the exact intersection query (filtered/semi_static.hpp) on stage 0's cylinders at once:
 // one problem, computed for the outer cylinder — the largest, so its length scale bounds the others —
 // with each cylinder's sizes set in turn (the reduction to the box's frame, most of stage 0's cost, is
-// shared). Each cylinder's verdict in stage0_cylinder() order (nullopt: undecided, or not asked: the
+// shared). Each cylinder's verdict, probes() then the shoulders (nullopt: undecided, or not asked: the
 // outer one left out, a query that stage 0 takes only rescaled, a parallelepiped); unless `all`, it
 // stops at the first one answered with its deciding answer.
 template <bool all, class Box>
@@ -198,20 +195,20 @@ std::optional<bool> probes_stage0(Pair<Box>& q) {
 // undecided, on the probes' problem again: hits in the rim region that no fixed witness shows. Sound in
 // every rounding mode, as in the intersection query. (The probes' own whole queries search too.)
 template <class Box>
-std::optional<bool> probes_search(Pair<Box>& q) {
+std::optional<bool> shoulders_search(Pair<Box>& q) {
 #if !(defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT)
     if constexpr (!std::is_same_v<Box, Parallelepiped<double>>) {
-        const std::array<Probe, 3> ps = probes(q.g);
-        if (!ps[1].valid) return std::nullopt;
-        filtered::Prepared<Box> prep(q.box, ps[1].cylinder);
+        if (!q.g.outer_valid) return std::nullopt;
+        filtered::Prepared<Box> prep(q.box, q.g.outer);
         if (!prep.in_range || prep.rescaled()) return std::nullopt;
-        for (std::size_t k = 3; k < kStage0Cylinders; ++k) {
-            if (q.stage0[k]) continue;
-            const Probe p = stage0_cylinder(q.g, ps, k);
-            const Cylinder<double> c{prep.cyl.center, prep.cyl.axis, p.cylinder.radius, p.cylinder.height};
+        for (std::size_t k = 0; k < kShoulders.size(); ++k) {
+            std::optional<bool>& verdict = q.stage0[3 + k];
+            if (verdict) continue;
+            const Cylinder<double> s = shoulder(q.g, k);
+            const Cylinder<double> c{prep.cyl.center, prep.cyl.axis, s.radius, s.height};
             filtered::semi_static::set_sizes_of<Box>(prep.p, c.radius, c.height);
-            q.stage0[k] = filtered::witness_search::decide(prep.p, prep.box, c);
-            if (q.stage0[k] == p.decides_when) return p.decides_when;
+            verdict = filtered::witness_search::decide(prep.p, prep.box, c);
+            if (verdict == true) return true;
         }
     }
 #endif
@@ -279,7 +276,7 @@ std::optional<bool> exact_stage(Pair<Box>& q) {
 // rim contacts at exactly the margin, and queries in a directed rounding mode that the earlier stages
 // leave (docs/clearance.md gives the measured shares).
 template <class Box>
-inline constexpr std::array<Stage<Box>, 9> stages{&probes_stage0<Box>, &probes_search<Box>,   &separation<Box>,
+inline constexpr std::array<Stage<Box>, 9> stages{&probes_stage0<Box>, &shoulders_search<Box>, &separation<Box>,
                                                   &refined_separation<Box>, &probe<Box, 0>,  &probe<Box, 1>,
                                                   &probe<Box, 2>,      &rim<Box>,            &exact_stage<Box>};
 inline constexpr std::array<const char*, 9> stage_names{"probes' stage 0", "shoulders' search", "distance bounds",
