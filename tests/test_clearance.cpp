@@ -148,8 +148,17 @@ TEST(Clearance, RandomPairsMarginZeroAndMonotone) {
     EXPECT_GT(within_count, 100);
 }
 
-// Every shoulder lies inside the rounded cylinder: max(r' − r, 0)² + max((h' − h)/2, 0)² ≤ m², exactly
-// (rationals), for margins and sizes from subnormal to huge, in every rounding mode.
+// Whether a cylinder of the same centre and axis lies in `cyl` rounded by m: max(r' − r, 0)² +
+// max((h' − h)/2, 0)² ≤ m², exactly (rationals).
+bool in_rounded(const Cylinder<double>& s, double r, double h, double m) {
+    mpq_class dr = mpq_class(s.radius) - r, dh = (mpq_class(s.height) - h) / 2;
+    dr = dr > 0 ? dr : mpq_class(0), dh = dh > 0 ? dh : mpq_class(0);
+    return s.radius >= 0 && s.height >= 0 && dr * dr + dh * dh <= mpq_class(m) * m;
+}
+
+// Every shoulder lies inside the rounded cylinder, exactly, for margins and sizes from subnormal to
+// huge, in every rounding mode: the three fixed ones, and those at the angles of the rim witnesses
+// (shoulder_factors of distances beyond the side and a cap from 0 and subnormal to huge, and NaN).
 TEST(Clearance, ShouldersLieInTheRoundedCylinder) {
     const double values[] = {0.0, 0x1p-1074, 0x1.8p-1060, 1e-300, 0.1, 0.7, 1.0, 3.0, 1e10, 0x1.fffffffffffffp1000, 1e308};
     int checked = 0;
@@ -167,17 +176,27 @@ TEST(Clearance, ShouldersLieInTheRoundedCylinder) {
                         for (std::size_t k = 0; k < shoulders.size(); ++k) shoulders[k] = detail::clearance::shoulder(g, k);
                     }
                     for (std::size_t k = 0; k < shoulders.size(); ++k) {
-                        const Cylinder<double>& s = shoulders[k];
-                        // The sizes' excess over the cylinder's (a size below it adds nothing to the distance).
-                        mpq_class dr = mpq_class(s.radius) - r, dh = (mpq_class(s.height) - h) / 2;
-                        dr = dr > 0 ? dr : mpq_class(0), dh = dh > 0 ? dh : mpq_class(0);
-                        EXPECT_TRUE(s.radius >= 0 && s.height >= 0 && dr * dr + dh * dh <= mpq_class(m) * m)
+                        EXPECT_TRUE(in_rounded(shoulders[k], r, h, m))
                             << "radius " << hex(r) << ", height " << hex(h) << ", margin " << hex(m) << ", shoulder " << k
                             << ", rounding " << mode_name(mode);
                         ++checked;
                     }
+                    for (const double a : {0.0, 0x1p-1074, 1e-300, 0.3, 1.0, 1e300, -1.0, std::nan("")})
+                        for (const double b : {0.0, 0x1p-1074, 1e-300, 0.3, 1.0, 1e300, -1.0, std::nan("")}) {
+                            std::optional<Cylinder<double>> s;
+                            {
+                                const RoundingMode rounding(mode);
+                                if (const auto f = detail::clearance::shoulder_factors(a, b))
+                                    s = detail::clearance::shoulder(g, (*f)[0], (*f)[1]);
+                            }
+                            if (!s) continue;
+                            EXPECT_TRUE(in_rounded(*s, r, h, m))
+                                << "radius " << hex(r) << ", height " << hex(h) << ", margin " << hex(m) << ", factors of "
+                                << hex(a) << ", " << hex(b) << ", rounding " << mode_name(mode);
+                            ++checked;
+                        }
                 }
-    EXPECT_GT(checked, 4000);
+    EXPECT_GT(checked, 150000);
 }
 
 // A box corner in the rim region, within m of the rim but outside the fat and tall cylinders: a
@@ -186,12 +205,81 @@ TEST(Clearance, ShoulderDecidesACornerInTheRimRegion) {
     // The corner (1.6, 0, 1.6) lies 0.6·√2 ≈ 0.8485 from the rim point (1, 0, 1).
     const AlignedBox<double> box{{1.6, -1, 1.6}, {3, 1, 3}};
     const detail::clearance::Grown g = detail::clearance::grown(kUnit, 1.0);
-    const auto verdicts = detail::clearance::stage0_verdicts<false>(box, g);
+    const auto verdicts = detail::clearance::stage0_verdicts<false>(box, g).cylinders;
     EXPECT_EQ(verdicts[1], true);   // outer: a hit, which decides nothing
     EXPECT_EQ(verdicts[3 + 1], true);  // the 45° shoulder: a hit
     EXPECT_TRUE(within_distance(box, kUnit, 1.0));
     EXPECT_TRUE(within_distance(box, kUnit, 0.8486));
     EXPECT_FALSE(within_distance(box, kUnit, 0.8485));
+}
+
+// A corner at 15° from the rim's plane, 0.9897 from the rim point (1, 0, 1): outside fat, tall and the
+// fixed shoulders (the 30° one reaches radius 1.866), so the rim witness (the box point nearest the rim
+// point nearest the box centre: this corner) in the shoulder at its own angle decides it in stage 0.
+TEST(Clearance, RimWitnessDecidesACornerBetweenTheShoulders) {
+    const AlignedBox<double> box{{1.956, -1, 1.256}, {3, 1, 3}};
+    const detail::clearance::Grown g = detail::clearance::grown(kUnit, 1.0);
+    const detail::clearance::Stage0Verdicts verdicts = detail::clearance::stage0_verdicts<true>(box, g);
+    EXPECT_EQ(verdicts.cylinders[0], false);  // fat
+    EXPECT_EQ(verdicts.cylinders[2], false);  // tall
+    for (std::size_t k = 0; k < detail::clearance::kShoulders.size(); ++k) EXPECT_EQ(verdicts.cylinders[3 + k], false);
+    ASSERT_TRUE(verdicts.rim_shoulder);
+    EXPECT_TRUE(intersects(box, *verdicts.rim_shoulder));
+    EXPECT_TRUE(in_rounded(*verdicts.rim_shoulder, 1, 2, 1.0));
+    // √(0.956² + 0.256²) = 0.98968...
+    EXPECT_TRUE(within_distance(box, kUnit, 1.0));
+    EXPECT_TRUE(within_distance(box, kUnit, 0.9897));
+    EXPECT_FALSE(within_distance(box, kUnit, 0.9896));
+}
+
+// The grown box holds every point within m of the box: its sizes exceed the box's by at least m
+// (an oriented box's by m·(1 + 2^-11), for axes orthonormal within 1e-4), exactly, in every rounding mode.
+TEST(Clearance, GrownBoxHoldsTheBoxRoundedByTheMargin) {
+    const double values[] = {0.0, 0x1p-1074, 1e-300, 0.1, 1.0, 3.0, 1e10, 1e300};
+    const mpq_class oriented_factor = 1 + mpq_class(1, 2048);
+    int checked = 0;
+    for (const int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO})
+        for (const double x : values)
+            for (const double m : values) {
+                const AlignedBox<double> aligned{{-x, x / 3, -0.1}, {x, x, 0.1}};
+                const OrientedBox<double> oriented{{x, -x, 0}, {Vec3<double>{1, 0, 0}, Vec3<double>{0, 1, 0}, Vec3<double>{0, 0, 1}}, {x, x / 3, 0.1}};
+                const CanonicalBox<double> canonical{{x, x / 3, 0.1}};
+                std::optional<AlignedBox<double>> ga;
+                std::optional<OrientedBox<double>> go;
+                std::optional<CanonicalBox<double>> gc;
+                {
+                    const RoundingMode rounding(mode);
+                    ga = detail::clearance::grown_box(aligned, m);
+                    go = detail::clearance::grown_box(oriented, m);
+                    gc = detail::clearance::grown_box(canonical, m);
+                }
+                ASSERT_TRUE(ga && go && gc) << hex(x) << ", margin " << hex(m);  // no overflow here
+                for (int i = 0; i < 3; ++i) {
+                    EXPECT_GE(mpq_class(aligned.min[i]) - ga->min[i], mpq_class(m)) << hex(x) << ", margin " << hex(m) << ", " << mode_name(mode);
+                    EXPECT_GE(mpq_class(ga->max[i]) - aligned.max[i], mpq_class(m)) << hex(x) << ", margin " << hex(m) << ", " << mode_name(mode);
+                    EXPECT_GE(mpq_class(go->extents[i]) - oriented.extents[i], oriented_factor * m) << hex(x) << ", margin " << hex(m) << ", " << mode_name(mode);
+                    EXPECT_EQ(go->center, oriented.center);
+                    EXPECT_GE(mpq_class(gc->extents[i]) - canonical.extents[i], mpq_class(m)) << hex(x) << ", margin " << hex(m) << ", " << mode_name(mode);
+                    ++checked;
+                }
+            }
+    EXPECT_EQ(checked, 4 * 8 * 8 * 3);
+    EXPECT_FALSE(detail::clearance::grown_box(AlignedBox<double>{{-1, 0, 0}, {1, 1, 0x1.fffffffffffffp1023}}, 1e300));
+    EXPECT_FALSE(detail::clearance::grown_box(Parallelepiped<double>{}, 1.0));
+}
+
+// A box face facing the rim at 45°, 1.1 from it: the outer probe's corner (2, 0, 2) crosses the face's
+// plane, the grown box misses the cylinder along the face's normal.
+TEST(Clearance, GrownBoxDecidesAFaceNearTheRim) {
+    const double s = 0x1.6a09e667f3bcdp-1;  // 1/√2, rounded
+    const Vec3<double> n{s, 0, s};
+    const double depth = 1.1 + 1;  // the face 1.1 from the rim point (1, 0, 1), the box 2 deep behind it
+    const OrientedBox<double> box{{1 + depth * s, 0, 1 + depth * s}, {n, Vec3<double>{0, 1, 0}, Vec3<double>{-s, 0, s}}, {1, 1, 1}};
+    detail::clearance::Pair<OrientedBox<double>> q(box, kUnit, 1.0);
+    EXPECT_EQ(detail::clearance::stage0_verdicts<true>(box, q.g).cylinders[1], true);  // the outer probe: a hit
+    EXPECT_EQ(detail::clearance::grown_box_misses(q), false);
+    EXPECT_FALSE(within_distance(box, kUnit, 1.0));
+    EXPECT_TRUE(within_distance(box, kUnit, 1.2));
 }
 
 // The probes' stage 0 (one plain-double problem for the three probe cylinders, filtered/semi_static.hpp's
@@ -202,7 +290,7 @@ TEST(Clearance, ProbesStageZeroAgreesWithTheExactProbes) {
     constexpr std::uint64_t seed = 0xc1ea0002;
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    int decided = 0;
+    int decided = 0, rim_hits = 0;
     for (const Profile profile :
          {Profile::mixed, Profile::degenerate, Profile::uniform, Profile::georeferenced, Profile::magnitudes}) {
         CaseGenerator gen(seed, profile);
@@ -218,9 +306,18 @@ TEST(Clearance, ProbesStageZeroAgreesWithTheExactProbes) {
                     const auto probes = detail::clearance::probes(g);
                     for (const int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
                         std::array<std::optional<bool>, detail::clearance::kStage0Cylinders> verdicts;
+                        std::optional<Cylinder<double>> rim_shoulder;
                         {
                             const RoundingMode rounding(mode);
-                            verdicts = detail::clearance::stage0_verdicts<true>(box, g);
+                            const detail::clearance::Stage0Verdicts v = detail::clearance::stage0_verdicts<true>(box, g);
+                            verdicts = v.cylinders;
+                            rim_shoulder = v.rim_shoulder;
+                        }
+                        if (rim_shoulder) {  // a hit in a shoulder inside the rounded cylinder
+                            ++rim_hits;
+                            EXPECT_TRUE(intersects(box, *rim_shoulder) && in_rounded(*rim_shoulder, cyl.radius, cyl.height, m))
+                                << describe(c) << "\nmargin " << hex(m) << ", the rim witnesses' shoulder, rounding "
+                                << mode_name(mode);
                         }
                         for (std::size_t k = 0; k < verdicts.size(); ++k) {
                             if (!verdicts[k]) continue;
@@ -238,6 +335,7 @@ TEST(Clearance, ProbesStageZeroAgreesWithTheExactProbes) {
         }
     }
     EXPECT_GT(decided, 20000);
+    EXPECT_GT(rim_hits, 20);
 
 }
 

@@ -24,8 +24,12 @@ namespace {
 
 using namespace boxcyl::testing;
 
-filtered::separation::Bounds bounds_of(const Case& c, double decide_at) {
-    return with_box(c, [&](const auto& box, const Cylinder<double>& cyl) { return filtered::separation::bounds(box, cyl, decide_at); });
+// GJK's bounds (intervals), or with `projected` the quick search's (running error bounds).
+filtered::separation::Bounds bounds_of(const Case& c, double decide_at, bool projected = false) {
+    return with_box(c, [&](const auto& box, const Cylinder<double>& cyl) {
+        return projected ? filtered::separation::projected_bounds(box, cyl, decide_at)
+                         : filtered::separation::bounds(box, cyl, decide_at);
+    });
 }
 
 struct Tally {
@@ -35,8 +39,8 @@ struct Tally {
 
 // Both bounds judged; of the separated pairs (lower > 0) searched to convergence (no margin to decide
 // at), "tight" counts those whose bounds are within 2^-20 of each other, relatively.
-void judge(const Case& c, double decide_at, Tally& t) {
-    const filtered::separation::Bounds b = bounds_of(c, decide_at);
+void judge(const Case& c, double decide_at, Tally& t, bool projected = false) {
+    const filtered::separation::Bounds b = bounds_of(c, decide_at, projected);
     const Parallelepiped<Rational> box = exact_box(c);
     const Cylinder<Rational> cyl = to_exact(c.cylinder);
     ++t.checked;
@@ -45,8 +49,8 @@ void judge(const Case& c, double decide_at, Tally& t) {
     if (b.lower > 0 && clearance_oracle::within(box, cyl, to_rational(std::nextafter(b.lower, 0.0)))) ok = false;
     if (!(b.lower >= 0) || !(b.lower <= b.upper || b.upper != b.upper)) ok = false;
     if (!ok && ++t.violations <= 5)
-        ADD_FAILURE() << "bounds [" << hex(b.lower) << ", " << hex(b.upper) << "] (decide_at " << hex(decide_at)
-                      << ") do not hold for\n" << describe(c);
+        ADD_FAILURE() << (projected ? "projected " : "") << "bounds [" << hex(b.lower) << ", " << hex(b.upper)
+                      << "] (decide_at " << hex(decide_at) << ") do not hold for\n" << describe(c);
     if (decide_at < 0 && b.lower > 0) {
         ++t.converged;
         if (b.upper - b.lower <= 0x1p-20 * b.upper) ++t.tight;
@@ -70,6 +74,52 @@ TEST(SeparationJudged, RandomPairsEveryProfile) {
                 t.converged, t.violations);
     EXPECT_EQ(t.violations, 0);
     EXPECT_GT(t.tight, t.converged * 9 / 10);
+}
+
+// The quick search's bounds (projected_bounds: running error bounds): proved on both sides without a
+// margin, and at margins around the distance (0.9, 0.999, 1.001 and 1.1 times GJK's estimate) where
+// only a clear side is proved; random pairs of every profile, then in every rounding mode.
+TEST(SeparationJudged, ProjectedBoundsRandomPairs) {
+    Tally t;
+    int decided = 0;
+    for (Profile p : {Profile::mixed, Profile::degenerate, Profile::uniform, Profile::georeferenced, Profile::magnitudes}) {
+        CaseGenerator gen(0x5e9a0500 + static_cast<std::uint64_t>(p), p);
+        for (int i = 0; i < (p == Profile::magnitudes ? 20 : 100); ++i) {
+            const Case c = gen.next();
+            judge(c, -1, t, true);
+            const double d = bounds_of(c, -1).upper;
+            if (!std::isfinite(d)) continue;
+            for (const double f : {0.9, 0.999, 1.001, 1.1}) {
+                const filtered::separation::Bounds b = bounds_of(c, f * d, true);
+                decided += b.lower > f * d || b.upper <= f * d;
+                judge(c, f * d, t, true);
+            }
+        }
+    }
+    for (Profile p : {Profile::mixed, Profile::uniform, Profile::georeferenced, Profile::degenerate}) {
+        CaseGenerator gen(0x5e9a0600 + static_cast<std::uint64_t>(p), p);
+        for (int i = 0; i < 25; ++i) {
+            const Case c = gen.next();
+            for (const int mode : {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+                filtered::separation::Bounds b{};
+                {
+                    const RoundingMode scope(mode);
+                    b = bounds_of(c, -1, true);
+                }
+                ++t.checked;
+                const Parallelepiped<Rational> box = exact_box(c);
+                const Cylinder<Rational> cyl = to_exact(c.cylinder);
+                const bool ok = (!std::isfinite(b.upper) || clearance_oracle::within(box, cyl, to_rational(b.upper))) &&
+                                !(b.lower > 0 && clearance_oracle::within(box, cyl, to_rational(std::nextafter(b.lower, 0.0))));
+                if (!ok && ++t.violations <= 5)
+                    ADD_FAILURE() << "rounding mode " << mode_name(mode) << ": projected bounds [" << hex(b.lower) << ", "
+                                  << hex(b.upper) << "] do not hold for\n" << describe(c);
+            }
+        }
+    }
+    std::printf("projected bounds: %ld judged, %d margins decided, %d violations\n", t.checked, decided, t.violations);
+    EXPECT_EQ(t.violations, 0);
+    EXPECT_GT(decided, 500);
 }
 
 TEST(SeparationJudged, IntegerLattice) {

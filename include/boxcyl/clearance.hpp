@@ -8,10 +8,12 @@
 //
 // How: a table of stages, each answering only what it proves: three probes with the exact intersection
 // query (a cylinder inside the rounded one — a hit answers yes; one that holds it — a miss answers
-// no) and three more cylinders inside it (the shoulders) in that query's first two stages, certified
-// distance bounds from an approximate closest pair (filtered/separation.hpp), the same refined in
-// double-double (filtered/separation_refined.hpp), the rim tori's tests in interval arithmetic
-// (filtered/rim.hpp), and the exact clearance decision (exact/clearance.hpp) for what remains.
+// no) and more cylinders inside it (the shoulders: three fixed, and one at the angle of a box point
+// near the rim) in that query's first two stages, the box grown by the margin against the cylinder
+// (a miss answers no), certified distance bounds from an approximate closest pair
+// (filtered/separation.hpp: a quick one in running-error arithmetic, then GJK's in intervals), the
+// same refined in double-double (filtered/separation_refined.hpp), the rim tori's tests in interval
+// arithmetic (filtered/rim.hpp), and the exact clearance decision (exact/clearance.hpp) for what remains.
 // docs/clearance.md has the method and its figures.
 #pragma once
 
@@ -39,6 +41,7 @@
 #include "boxcyl/filtered/separation.hpp"
 #include "boxcyl/filtered/separation_refined.hpp"
 #include "boxcyl/filtered/witness_search.hpp"
+#include "boxcyl/number/interval.hpp"  // next_down, next_up: a grown box's sizes
 #endif
 
 namespace boxcyl {
@@ -92,11 +95,26 @@ inline Grown grown(const Cylinder<double>& c, double m) {
     return {{c.center, c.axis, r.hi, h.hi}, {c.center, c.axis, r.lo, c.height}, {c.center, c.axis, c.radius, h.lo},
             std::isfinite(r.hi) && std::isfinite(h.hi), m};
 }
-// Shoulder k, inside the rounded cylinder: its sizes rounded down (g.tall has the radius as given,
-// g.fat the height).
-inline Cylinder<double> shoulder(const Grown& g, std::size_t k) {
-    return {g.fat.center, g.fat.axis, sum_bounds(g.tall.radius, product_below(g.m, kShoulders[k][0])).lo,
-            sum_bounds(g.fat.height, 2 * product_below(g.m, kShoulders[k][1])).lo};
+// The shoulder of factors (c, s), c² + s² ≤ 1 exactly, inside the rounded cylinder: radius r + m·c and
+// height h + 2m·s, rounded down (g.tall has the radius as given, g.fat the height). Shoulder k has
+// kShoulders[k]'s factors.
+inline Cylinder<double> shoulder(const Grown& g, double c, double s) {
+    return {g.fat.center, g.fat.axis, sum_bounds(g.tall.radius, product_below(g.m, c)).lo,
+            sum_bounds(g.fat.height, 2 * product_below(g.m, s)).lo};
+}
+inline Cylinder<double> shoulder(const Grown& g, std::size_t k) { return shoulder(g, kShoulders[k][0], kShoulders[k][1]); }
+
+// Factors (c, s) ≥ 0 with c² + s² ≤ 1 exactly, nearly proportional to (a, b) (a point's distances
+// beyond the side and beyond a cap): the shoulder through the rim at that point's angle. Any
+// computation of them would do; the check makes them safe: the computed c² + s² is within a relative
+// 3·2^-52 (and 2^-1073 below the normal range) of the exact one in every rounding mode, so a computed
+// value ≤ 1 − 2^-40 proves the exact one below 1. nullopt when the check fails (or a NaN came in).
+inline std::optional<std::array<double, 2>> shoulder_factors(double a, double b) {
+    a = std::max(a, 0.0), b = std::max(b, 0.0);
+    const double n = std::sqrt(a * a + b * b);
+    const double c = n > 0 ? a / n * (1 - 0x1p-30) : 0, s = n > 0 ? b / n * (1 - 0x1p-30) : 0;
+    if (!(c * c + s * s <= 1 - 0x1p-40)) return std::nullopt;
+    return std::array<double, 2>{c, s};
 }
 
 // One probe: the exact intersection query on a cylinder; when its answer is `decides_when`, that is
@@ -117,6 +135,40 @@ inline std::array<Probe, 3> probes(const Grown& g) {
 inline constexpr std::size_t kStage0Cylinders = 3 + kShoulders.size();
 
 #if defined(BOXCYL_HAS_EXACT)
+// A box that holds every point within m of `b` (b ⊕ ball(m)): if it misses the cylinder, the box is
+// farther than m from it. Its sizes are rounded outwards; nullopt when they overflow. An oriented box's
+// axes are orthonormal within 1e-4 (validate.hpp), so a displacement of length m has coordinates of at
+// most m/σ_min ≤ 1.00015·m along them: its extents grow by a double above m·(1 + 2^-11).
+// Parallelepipeds are left out (nullopt): their axes may be far from orthogonal. The exact result of
+// a rounded operation lies between the computed one's neighbours (number/interval.hpp's next_down,
+// next_up), in every rounding mode.
+inline std::optional<AlignedBox<double>> grown_box(const AlignedBox<double>& b, double m) {
+    AlignedBox<double> g = b;
+    for (int i = 0; i < 3; ++i) {
+        g.min[i] = next_down(b.min[i] - m);
+        g.max[i] = next_up(b.max[i] + m);
+        if (!std::isfinite(g.min[i]) || !std::isfinite(g.max[i])) return std::nullopt;
+    }
+    return g;
+}
+template <class Box>  // CanonicalBox, OrientedBox: centre and axes kept, extents grown
+std::optional<Box> grown_box(const Box& b, double m) {
+    if constexpr (std::is_same_v<Box, Parallelepiped<double>>) {
+        return std::nullopt;
+    } else {
+        // The computed product's neighbour above is at least the exact product, m·(1 + 2^-11), in every
+        // rounding mode and below the normal range too.
+        const double grow = std::is_same_v<Box, OrientedBox<double>> ? next_up(m * (1 + 0x1p-11)) : m;
+        if (!std::isfinite(grow)) return std::nullopt;
+        Box g = b;
+        for (int i = 0; i < 3; ++i) {
+            g.extents[i] = sum_bounds(b.extents[i], grow).hi;
+            if (!std::isfinite(g.extents[i])) return std::nullopt;
+        }
+        return g;
+    }
+}
+
 // One query on its way through the stages, with what earlier stages proved for later ones.
 template <class Box>
 struct Pair {
@@ -132,6 +184,9 @@ struct Pair {
     std::optional<filtered::separation::Approximate> search;
     filtered::rim::Proved proved{};
     std::array<std::optional<bool>, kStage0Cylinders> stage0{};  // each answer stage 0 or the search gave
+    // The quick bounds' pair is within 2^-20 of the margin: the pair is most likely at it, where the
+    // grown box and the shoulders' search cost more than they decide (they are skipped).
+    bool near_margin = false;
 };
 
 // A stage answers (true: within, false: not) or passes (nullopt) to the next.
@@ -141,26 +196,88 @@ using Stage = std::optional<bool> (*)(Pair<Box>&);
 // The shoulders' verdicts (after the probes': few queries get here), on the probes' problem. Not
 // inlined: as part of the probes' loop, it made the common path slower.
 template <bool all, class Box>
-[[gnu::noinline]] void shoulder_verdicts(filtered::Prepared<Box>& prep, const Grown& g,
+[[gnu::noinline]] bool shoulder_verdicts(filtered::Prepared<Box>& prep, const Grown& g,
                                          std::array<std::optional<bool>, kStage0Cylinders>& verdicts) {
+    bool hit = false;
     for (std::size_t k = 0; k < kShoulders.size(); ++k) {
         const Cylinder<double> s = shoulder(g, k);
         const Cylinder<double> c{prep.cyl.center, prep.cyl.axis, s.radius, s.height};
         filtered::semi_static::set_sizes_of<Box>(prep.p, c.radius, c.height);
         verdicts[3 + k] = filtered::semi_static::decide(prep.p, prep.box, c);
-        if (!all && verdicts[3 + k] == true) return;
+        hit |= verdicts[3 + k] == true;
+        if (!all && hit) return true;
     }
+    return hit;
+}
+
+// The rim witnesses, for a box that cuts the rounded cylinder's rim region where no fixed shoulder
+// shows it: Q1, the box point nearest the rim point nearest the box centre, and Q2, the box point
+// nearest the cylinder point nearest Q1 (a step of alternating projections). Each is tested against
+// the shoulder at its own angle from the rim (shoulder_factors), which holds it when it is within m of
+// the cylinder with a little to spare. Box points exactly, as stage 0's witnesses are: clamped in the
+// box's coordinates, an aligned box's in world coordinates (filtered/semi_static.hpp, witness_offset);
+// the search itself is approximate, its test is stage 0's. The shoulder that holds one, or nullopt.
+template <class Box>
+std::optional<Cylinder<double>> rim_witness_shoulder(filtered::Prepared<Box>& prep, const Grown& g) {
+    filtered::semi_static::Problem& p = prep.p;
+    const Vec3<double>& d = p.d;
+    const double r = g.tall.radius, h = 0.5 * g.fat.height;
+    // The box point nearest C + z, as its offset from C.
+    auto box_offset = [&](const Vec3<double>& z) {
+        Vec3<double> v;
+        for (int i = 0; i < 3; ++i) {
+            if constexpr (std::is_same_v<Box, AlignedBox<double>>)
+                v[i] = filtered::semi_static::clamp_to(prep.cyl.center[i] + z[i], prep.box.min[i], prep.box.max[i]) -
+                       prep.cyl.center[i];
+            else
+                v[i] = filtered::semi_static::clamp_to(p.c[i] + z[i], -p.e[i], p.e[i]) - p.c[i];
+        }
+        return v;
+    };
+    // An offset w's height along the axis and its part across it.
+    auto split = [&d](const Vec3<double>& w) {
+        const double t = dot(d, w);
+        const Vec3<double> across{w[0] - t * d[0], w[1] - t * d[1], w[2] - t * d[2]};
+        return std::pair{t, across};
+    };
+    // Whether box point C + v lies in the shoulder at its angle: the shoulder when it does.
+    auto holds = [&](const Vec3<double>& v) -> std::optional<Cylinder<double>> {
+        const auto [t, across] = split(v);
+        const std::optional<std::array<double, 2>> f =
+            shoulder_factors(std::sqrt(dot(across, across)) - r, std::abs(t) - h);
+        if (!f) return std::nullopt;
+        const Cylinder<double> sh = shoulder(g, (*f)[0], (*f)[1]);
+        filtered::semi_static::set_sizes_of<Box>(p, sh.radius, sh.height);
+        if (!filtered::semi_static::box_point_inside(p, filtered::semi_static::kappas_of<Box>, v)) return std::nullopt;
+        return sh;
+    };
+    const auto [t0, across0] = split(Vec3<double>{-p.c[0], -p.c[1], -p.c[2]});  // the box centre
+    const double l0 = std::sqrt(dot(across0, across0));
+    if (!(l0 > 0)) return std::nullopt;  // on the axis (or a NaN): no nearest rim point
+    const double to_rim = r / l0, to_cap = t0 >= 0 ? h : -h;
+    const Vec3<double> v1 = box_offset({to_cap * d[0] + to_rim * across0[0], to_cap * d[1] + to_rim * across0[1],
+                                        to_cap * d[2] + to_rim * across0[2]});
+    if (std::optional<Cylinder<double>> sh = holds(v1)) return sh;
+    const auto [t1, across1] = split(v1);
+    const double l1 = std::sqrt(dot(across1, across1)), inward = l1 > r ? r / l1 : 1.0;
+    const double t = filtered::semi_static::clamp_to(t1, -h, h);
+    return holds(box_offset({t * d[0] + inward * across1[0], t * d[1] + inward * across1[1],
+                             t * d[2] + inward * across1[2]}));
 }
 
 // Stage 0 of the exact intersection query (filtered/semi_static.hpp) on stage 0's cylinders at once:
 // one problem, computed for the outer cylinder — the largest, so its length scale bounds the others —
 // with each cylinder's sizes set in turn (the reduction to the box's frame, most of stage 0's cost, is
 // shared). Each cylinder's verdict, probes() then the shoulders (nullopt: undecided, or not asked: the
-// outer one left out, a query that stage 0 takes only rescaled, a parallelepiped); unless `all`, it
-// stops at the first one answered with its deciding answer.
+// outer one left out, a query that stage 0 takes only rescaled, a parallelepiped), then the rim
+// witnesses' shoulder when one holds a witness (a hit); unless `all`, it stops at the first answer.
+struct Stage0Verdicts {
+    std::array<std::optional<bool>, kStage0Cylinders> cylinders{};
+    std::optional<Cylinder<double>> rim_shoulder;
+};
 template <bool all, class Box>
-std::array<std::optional<bool>, kStage0Cylinders> stage0_verdicts(const Box& box, const Grown& g) {
-    std::array<std::optional<bool>, kStage0Cylinders> verdicts{};
+Stage0Verdicts stage0_verdicts(const Box& box, const Grown& g) {
+    Stage0Verdicts verdicts;
 #if !(defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT)
     if constexpr (!std::is_same_v<Box, Parallelepiped<double>>) {  // a parallelepiped's query has no stage 0
         const std::array<Probe, 3> ps = probes(g);
@@ -170,10 +287,11 @@ std::array<std::optional<bool>, kStage0Cylinders> stage0_verdicts(const Box& box
         for (std::size_t k = 0; k < ps.size(); ++k) {
             const Cylinder<double> c{prep.cyl.center, prep.cyl.axis, ps[k].cylinder.radius, ps[k].cylinder.height};
             filtered::semi_static::set_sizes_of<Box>(prep.p, c.radius, c.height);
-            verdicts[k] = filtered::semi_static::decide(prep.p, prep.box, c);
-            if (!all && verdicts[k] == ps[k].decides_when) return verdicts;
+            verdicts.cylinders[k] = filtered::semi_static::decide(prep.p, prep.box, c);
+            if (!all && verdicts.cylinders[k] == ps[k].decides_when) return verdicts;
         }
-        shoulder_verdicts<all>(prep, g, verdicts);
+        if (shoulder_verdicts<all>(prep, g, verdicts.cylinders) && !all) return verdicts;
+        verdicts.rim_shoulder = rim_witness_shoulder(prep, g);
     }
 #endif
     return verdicts;
@@ -182,12 +300,14 @@ std::array<std::optional<bool>, kStage0Cylinders> stage0_verdicts(const Box& box
 // is skipped below; one left undecided asks the whole query.
 template <class Box>
 std::optional<bool> probes_stage0(Pair<Box>& q) {
-    q.stage0 = stage0_verdicts<false>(q.box, q.g);
+    const Stage0Verdicts v = stage0_verdicts<false>(q.box, q.g);
+    q.stage0 = v.cylinders;
     const std::array<Probe, 3> ps = probes(q.g);
     for (std::size_t k = 0; k < ps.size(); ++k)
         if (q.stage0[k] == ps[k].decides_when) return ps[k].decides_when;
     for (std::size_t k = ps.size(); k < kStage0Cylinders; ++k)
         if (q.stage0[k] == true) return true;  // a shoulder's hit
+    if (v.rim_shoulder) return true;
     return std::nullopt;
 }
 // Stage 0b of the exact intersection query (filtered/witness_search.hpp: a search in double for a
@@ -198,7 +318,7 @@ template <class Box>
 std::optional<bool> shoulders_search(Pair<Box>& q) {
 #if !(defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT)
     if constexpr (!std::is_same_v<Box, Parallelepiped<double>>) {
-        if (!q.g.outer_valid) return std::nullopt;
+        if (!q.g.outer_valid || q.near_margin) return std::nullopt;
         filtered::Prepared<Box> prep(q.box, q.g.outer);
         if (!prep.in_range || prep.rescaled()) return std::nullopt;
         for (std::size_t k = 0; k < kShoulders.size(); ++k) {
@@ -210,6 +330,26 @@ std::optional<bool> shoulders_search(Pair<Box>& q) {
             verdict = filtered::witness_search::decide(prep.p, prep.box, c);
             if (verdict == true) return true;
         }
+    }
+#endif
+    return std::nullopt;
+}
+// The box grown by the margin (grown_box) against the cylinder as given, in stage 0 of the exact
+// intersection query: a miss is a miss. Its face tests are the rounded cylinder's own (the support of
+// box ⊕ ball(m) along a unit normal is the box's plus m), where the outer probe's corners reach up to
+// m·(√2 − 1) beyond the rim: the misses of a box face near the rim that the probes leave. (Its
+// witness search as well decided a few more on random pairs, and cost more at the margin than it saved.)
+template <class Box>
+std::optional<bool> grown_box_misses(Pair<Box>& q) {
+#if !(defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT)
+    if constexpr (!std::is_same_v<Box, Parallelepiped<double>>) {
+        if (q.near_margin) return std::nullopt;
+        const std::optional<Box> g = grown_box(q.box, q.m);
+        if (!g) return std::nullopt;
+        filtered::Prepared<Box> prep(*g, q.cyl);
+        if (!prep.in_range || prep.rescaled()) return std::nullopt;
+        const std::optional<bool> hit = filtered::semi_static::decide(prep.p, prep.box, prep.cyl);
+        if (hit == false) return false;
     }
 #endif
     return std::nullopt;
@@ -228,6 +368,18 @@ std::optional<bool> separation(Pair<Box>& q) {
     const filtered::separation::Bounds b = filtered::separation::bounds(q.box, q.cyl, q.m, &q.search.emplace());
     if (b.upper <= q.m) return true;
     if (b.lower > q.m) return false;
+    return std::nullopt;
+}
+// Certified distance bounds (filtered/separation.hpp) from a quick search near the rim, in running-error
+// arithmetic (projected_bounds): most boxes in the rim region that stage 0 leaves, at a fraction of the
+// cost of GJK's bounds below.
+template <class Box>
+std::optional<bool> quick_separation(Pair<Box>& q) {
+    filtered::separation::Approximate a;
+    const filtered::separation::Bounds b = filtered::separation::projected_bounds(q.box, q.cyl, q.m, &a);
+    if (b.upper <= q.m) return true;
+    if (b.lower > q.m) return false;
+    q.near_margin = std::abs(a.upper - q.m) <= 0x1p-20 * q.m;
     return std::nullopt;
 }
 // The same bounds after Newton refinement, in double-double (filtered/separation_refined.hpp): the
@@ -267,8 +419,10 @@ std::optional<bool> exact_stage(Pair<Box>& q) {
 }
 
 // The order is policy: on random pairs most are decided by the probes' stage 0 (the fat cylinder's hit
-// or the outer one's miss, certified in plain double, or a shoulder's hit), and the shoulders' search
-// and the distance bounds in double decide nearly all of the rest. The refined bounds come before the
+// or the outer one's miss, certified in plain double, or a shoulder's hit), and nearly all of the rest
+// near the rim by the quick bounds and the grown box, each a fraction of the cost of the shoulders'
+// search and GJK's bounds that follow. A pair whose quick search lands within 2^-20 of the margin skips
+// the grown box and the shoulders' search (near_margin). The refined bounds come before the
 // probes' whole queries: at the margin they decide the pairs whose distance is within rounding of it
 // but not equal (most contacts with the side or a cap among them), where the probes' queries, on
 // shapes within rounding of touching, cost as much and decide fewer. The probes then decide the
@@ -276,12 +430,13 @@ std::optional<bool> exact_stage(Pair<Box>& q) {
 // rim contacts at exactly the margin, and queries in a directed rounding mode that the earlier stages
 // leave (docs/clearance.md gives the measured shares).
 template <class Box>
-inline constexpr std::array<Stage<Box>, 9> stages{&probes_stage0<Box>, &shoulders_search<Box>, &separation<Box>,
-                                                  &refined_separation<Box>, &probe<Box, 0>,  &probe<Box, 1>,
-                                                  &probe<Box, 2>,      &rim<Box>,            &exact_stage<Box>};
-inline constexpr std::array<const char*, 9> stage_names{"probes' stage 0", "shoulders' search", "distance bounds",
-                                                        "refined bounds",  "fat probe",      "outer probe",
-                                                        "tall probe",      "rim intervals",  "exact"};
+inline constexpr std::array<Stage<Box>, 11> stages{
+    &probes_stage0<Box>,       &quick_separation<Box>, &grown_box_misses<Box>, &shoulders_search<Box>,
+    &separation<Box>,          &refined_separation<Box>, &probe<Box, 0>,         &probe<Box, 1>,
+    &probe<Box, 2>,            &rim<Box>,              &exact_stage<Box>};
+inline constexpr std::array<const char*, 11> stage_names{
+    "probes' stage 0", "quick bounds", "grown box",       "shoulders' search", "distance bounds", "refined bounds",
+    "fat probe",       "outer probe", "tall probe",       "rim intervals",     "exact"};
 
 // The index of the stage that answers, for the benchmark's per-stage shares (margin > 0).
 template <class Box>
