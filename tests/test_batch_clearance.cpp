@@ -321,6 +321,27 @@ TEST_P(BatchClearance, ThreadsGiveTheSameAnswers) {
     count.print("voxels at a margin of three voxels");
 }
 
+// Voxels around a tilted cylinder at margins from a thousandth of a voxel to ten voxels, and at 1e308,
+// where the outer cylinder's height overflows and the fat cylinder's probe runs first: the first pass
+// answers the voxels inside the margin's band from the later probes' own ball tests, the rest go on.
+TEST_P(BatchClearance, VoxelsAtSeveralMarginsAgreeWithScalar) {
+    const Cylinder<double> c{{0.3, -0.2, 0.1}, {0.8, 0.5, 0.33}, 1.5, 5};
+    const double voxel = 0.25;
+    std::vector<AlignedBox<double>> a;
+    for (int i = -16; i < 16; ++i)
+        for (int j = -16; j < 16; ++j)
+            for (int k = -12; k < 12; ++k)
+                a.push_back({{i * voxel, j * voxel, k * voxel}, {(i + 1) * voxel, (j + 1) * voxel, (k + 1) * voxel}});
+    const Soa<double> soa(a);
+    Count count;
+    for (const double m : {voxel / 1024, voxel, 10 * voxel, 1e308}) {
+        const std::vector<bool> want = scalar(c, a, m);
+        compare(c, soa.view(), m, a, want, 1, "voxels, margin " + hex(m), count);
+        compare(c, std::span<const AlignedBox<double>>(a), m, a, want, 1, "voxel rows, margin " + hex(m), count);
+    }
+    count.print("voxels at margins from 1/1024 voxel to 1e308");
+}
+
 // A refused margin: std::invalid_argument with validate_margin's message, for every layout.
 TEST(BatchClearanceRefusals, BadMarginThrows) {
     const Cylinder<double> c{{0, 0, 0}, {0, 0, 1}, 1, 2};

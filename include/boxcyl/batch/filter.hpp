@@ -379,7 +379,49 @@ BOXCYL_FORCE_INLINE inline LaneMask search_hits(const CylinderFilter& f, const L
 //                                                               and 2H − |Â| > κ(2H + |Â| + Ŝ1) + τ.
 // Eligible: Ŝ1, T̂ ≤ 2^200 (false for NaN and ∞), so nothing overflows. Lanes that none of these decide
 // (boxes near the surface, big boxes) go on to aligned_lanes.
-BOXCYL_FORCE_INLINE inline LaneResult aligned_ball_lanes(const CylinderFilter& f, const Lanes lo[3], const Lanes hi[3]) {
+// The ball's terms (doubled coordinates relative to C): Q̂, Â, Ŝ1, T̂ and the eligibility. They depend
+// on C and û alone, so that cylinders sharing them (the clearance form's probes) share the terms.
+struct BallTerms {
+    Lanes q, a, s1, t;
+};
+BOXCYL_FORCE_INLINE inline BallTerms ball_terms(const BallConstants& b, const Lanes lo[3], const Lanes hi[3]) {
+    BallTerms x{0, 0, 0, 0};
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC unroll 3
+#endif
+    for (int j = 0; j < 3; ++j) {
+        const Lanes dlo = lo[j] - b.c[j], dhi = hi[j] - b.c[j];
+        const Lanes s = dlo + dhi;
+        x.q += s * s;
+        x.a += b.u[j] * s;
+        x.s1 += stdx::abs(s);
+        x.t += dhi - dlo;
+    }
+    return x;
+}
+// The ball's verdict against the cylinder of `b` (a usable filter's), without the bounding boxes.
+BOXCYL_FORCE_INLINE inline LaneResult ball_verdict(const BallConstants& b, const BallTerms& x) {
+    const Lanes aa = stdx::abs(x.a), a2 = x.a * x.a;
+    const Lanes rr = b.two_r + x.t, r2 = rr * rr;
+    const LaneMask ok = x.s1 <= kLimit && x.t <= kLimit;
+    const LaneMask miss = ((x.q - a2) - r2 > b.kappa * (x.q + a2 + r2) + kAbs) ||
+                          (aa - b.two_h - x.t > b.kappa * (aa + b.two_h + x.t + x.s1) + kAbs);
+    const LaneMask hit = ((b.four_r2 - x.q) + a2 > b.kappa * (b.four_r2 + x.q + a2) + kAbs) &&
+                         (b.two_h - aa > b.kappa * (b.two_h + aa + x.s1) + kAbs);
+    const LaneMask dec = ok && (miss || hit);
+    return {dec, dec && !miss};
+}
+// `terms`, when given, receives the ball's terms where they were computed (else it is left untouched:
+// every lane was decided by the bounding boxes, or the filter is unusable), and `*computed` says which.
+// The hit half of ball_verdict alone: the lanes whose ball certainly lies in the cylinder of `b` (a
+// ball cannot also be proved to miss it).
+BOXCYL_FORCE_INLINE inline LaneMask ball_inside(const BallConstants& b, const BallTerms& x) {
+    const Lanes aa = stdx::abs(x.a), a2 = x.a * x.a;
+    return x.s1 <= kLimit && x.t <= kLimit && ((b.four_r2 - x.q) + a2 > b.kappa * (b.four_r2 + x.q + a2) + kAbs) &&
+           (b.two_h - aa > b.kappa * (b.two_h + aa + x.s1) + kAbs);
+}
+BOXCYL_FORCE_INLINE inline LaneResult aligned_ball_lanes(const CylinderFilter& f, const Lanes lo[3], const Lanes hi[3],
+                                                         BallTerms* terms = nullptr, bool* computed = nullptr) {
     // The bounding boxes first: on voxel-like data most vectors end here, and the branch saves the
     // rest of the pass. Exact: for doubles x, y (±∞ included, never NaN here) fl(x − y) > 0 iff x > y,
     // and one comparison of the largest difference costs fewer instructions than six of mask logic.
@@ -390,27 +432,10 @@ BOXCYL_FORCE_INLINE inline LaneResult aligned_ball_lanes(const CylinderFilter& f
     const LaneMask out = gap > 0;
     if (stdx::all_of(out)) return {out, LaneMask(false)};
     if (!f.usable) return {out, LaneMask(false)};
-    Lanes q = 0, a = 0, s1 = 0, t = 0;
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC unroll 3
-#endif
-    for (int j = 0; j < 3; ++j) {
-        const Lanes dlo = lo[j] - b.c[j], dhi = hi[j] - b.c[j];
-        const Lanes s = dlo + dhi;
-        q += s * s;
-        a += b.u[j] * s;
-        s1 += stdx::abs(s);
-        t += dhi - dlo;
-    }
-    const Lanes aa = stdx::abs(a), a2 = a * a;
-    const Lanes rr = b.two_r + t, r2 = rr * rr;
-    const LaneMask ok = s1 <= kLimit && t <= kLimit;
-    const LaneMask miss = ((q - a2) - r2 > b.kappa * (q + a2 + r2) + kAbs) ||
-                          (aa - b.two_h - t > b.kappa * (aa + b.two_h + t + s1) + kAbs);
-    const LaneMask hit = ((b.four_r2 - q) + a2 > b.kappa * (b.four_r2 + q + a2) + kAbs) &&
-                         (b.two_h - aa > b.kappa * (b.two_h + aa + s1) + kAbs);
-    const LaneMask dec = ok && (miss || hit);
-    return {out || dec, dec && !miss && !out};
+    const BallTerms x = ball_terms(b, lo, hi);
+    if (terms != nullptr) *terms = x, *computed = true;
+    const LaneResult v = ball_verdict(b, x);
+    return {out || v.decided, v.hit && !out};
 }
 
 //

@@ -11,7 +11,7 @@
 #include <algorithm>  // std::min
 #include <bit>        // std::countr_zero, std::popcount
 #include <cassert>    // debug-build precondition checks
-#include <cstddef>    // std::size_t
+#include <cstddef>    // std::size_t, std::nullptr_t
 #include <cstdint>    // std::uint64_t
 #include <limits>       // DBL_MAX: the boxes' cheap check
 #include <span>         // inputs and outputs
@@ -300,6 +300,18 @@ void later_passes(const CylinderFilter& f, const Source& s, std::size_t begin, s
     }
 }
 
+// The clearance form's later probes whose hit answers yes (fat and tall), answered in the first pass
+// where their own ball test proves the hit: they share the first probe's centre and axis, so the ball's
+// terms are computed once (filter.hpp's ball_terms) and each further cylinder costs a few comparisons
+// per lane. Otherwise the lanes inside the outer cylinder (its hits, which answer nothing: on the voxel
+// set one box in twenty) all went through the later probes' whole filter, gathered. `says`: the lanes
+// one of them proves to be hits.
+struct LaterBalls {
+    const CylinderFilter* filter[2]{};
+    std::size_t count = 0;
+    std::uint64_t says = 0;
+};
+
 // The filter's answers for boxes [begin, begin + count), count ≤ 64, as bits 0..count−1: `hit` for the
 // lanes it proves to meet the cylinder, `open` for those it leaves undecided (the others it proves to
 // miss). The first pass runs over every vector of boxes without a branch per lane (aligned sources load
@@ -311,9 +323,11 @@ void later_passes(const CylinderFilter& f, const Source& s, std::size_t begin, s
 // aligned and oriented sources by a few vector operations on the loaded lanes (is_valid over the block
 // only when they cannot clear a vector), else by is_valid per box; the first invalid one throws
 // InvalidBox.
-template <class Source>
+// later (LaterBalls*): the clearance form's later probes, answered on the way (a separate instance, so
+// that the plain batch's first pass stays as it was).
+template <class Source, class Later = std::nullptr_t>
 BlockFilter filter_block(const CylinderFilter& f, const Source& s, std::size_t begin, std::size_t count, bool check,
-                         Stats& st) {
+                         Stats& st, Later later = nullptr) {
     constexpr bool loads = requires(Lanes* v) { s.load_lanes(std::size_t{0}, std::size_t{1}, v, v); };
     constexpr bool frames = requires(Lanes* v, Lanes (*m)[3]) { s.load_frames(std::size_t{0}, std::size_t{1}, v, m, v); };
     std::uint64_t bits = 0, open = 0;
@@ -325,7 +339,22 @@ BlockFilter filter_block(const CylinderFilter& f, const Source& s, std::size_t b
             Lanes lo[3], hi[3];
             s.load_lanes(begin + k, valid, lo, hi);
             if (check && !plausible(lo, hi)) suspect = true;
-            r = aligned_ball_lanes(f, lo, hi);  // NaN or ∞ lanes of an invalid box: harmless, never used
+            if constexpr (std::is_same_v<Later, LaterBalls*>) {
+                BallTerms x;
+                bool computed = false;
+                r = aligned_ball_lanes(f, lo, hi, &x, &computed);
+                const std::uint64_t in_range = (std::uint64_t{1} << valid) - 1;
+                // Only where the first probe's ball proves a hit (its other lanes it answers itself, or
+                // its whole filter takes them up).
+                if (computed && later->count > 0 && stdx::any_of(r.hit)) {
+                    LaneMask says(false);
+                    for (std::size_t i = 0; i < later->count; ++i)
+                        if (later->filter[i]->usable) says = says || ball_inside(later->filter[i]->ball, x);
+                    if (stdx::any_of(says)) later->says |= (to_bits({says, says}).hit & in_range) << k;
+                }
+            } else {
+                r = aligned_ball_lanes(f, lo, hi);  // NaN or ∞ lanes of an invalid box: harmless, never used
+            }
         } else if constexpr (frames) {
             Lanes c[3], A[3][3], e[3];
             s.load_frames(begin + k, valid, c, A, e);
@@ -357,6 +386,7 @@ struct Meets {
 struct Within {
     const Clearance& query;
     CylinderFilter filter[3];
+    bool shared_terms = false;  // every probe's filter has the first's C, û and κ (LaterBalls)
 };
 inline Meets prepare_query(const Cylinder<double>& cyl) {
     assert(is_valid(cyl) && "boxcyl::batch::intersects: invalid cylinder (see boxcyl::validate)");
@@ -366,6 +396,13 @@ inline Within prepare_query(const Clearance& q) {
     assert(is_valid(q.cylinder) && "boxcyl::batch::within_distance: invalid cylinder (see boxcyl::validate)");
     Within w{q, {}};
     for (std::size_t k = 0; k < q.probes; ++k) w.filter[k] = prepare(q.probe[k]);
+    // The probes share the cylinder's centre and axis, so prepare() gives them the same C, û and κ; the
+    // check keeps LaterBalls sound should that ever change.
+    w.shared_terms = q.probes > 0;
+    for (std::size_t k = 1; k < q.probes; ++k)
+        for (int j = 0; j < 3; ++j)
+            w.shared_terms = w.shared_terms && w.filter[k].c[j] == w.filter[0].c[j] && w.filter[k].u[j] == w.filter[0].u[j] &&
+                             w.filter[k].kappa == w.filter[0].kappa;
     return w;
 }
 
@@ -422,7 +459,14 @@ void group_bits(const Within& w, const Source& s, std::size_t begin, std::size_t
         assert_valid(s, at, count, check);
         bits[b] = 0;
         open[b] = count == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
-        if (q.probes > 0) take(0, b, open[b], filter_block(w.filter[0], s, at, count, check, st));
+        if (q.probes == 0) continue;
+        LaterBalls later;
+        if (w.shared_terms)
+            for (std::size_t k = 1; k < q.probes; ++k)
+                if (q.decides_when[k]) later.filter[later.count++] = &w.filter[k];
+        take(0, b, open[b], filter_block(w.filter[0], s, at, count, check, st, &later));
+        bits[b] |= later.says & open[b];
+        open[b] &= ~later.says;
     }
     for (std::size_t k = 1; k < q.probes; ++k) {
         if constexpr (gathers_whole_filter<Source>) {
