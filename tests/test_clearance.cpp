@@ -282,6 +282,46 @@ TEST(Clearance, GrownBoxDecidesAFaceNearTheRim) {
     EXPECT_TRUE(within_distance(box, kUnit, 1.2));
 }
 
+// Random pairs (bench_clearance's set) that two steps of the quick search leave open and more steps
+// decide: a box along the rim, where alternating projections converge slowly. The quick bounds answer
+// them, as the exact query does.
+TEST(Clearance, QuickBoundsTakeMoreStepsWhereTwoLeaveThePairOpen) {
+    namespace sep = filtered::separation;
+    struct Example {
+        AlignedBox<double> box;
+        Cylinder<double> cyl;
+        double m;
+        bool within;
+    };
+    const Example examples[] = {
+        {{{0x1.29e93366d81afp+12, 0x1.d455bc8bb8582p+11, -0x1.19d7b58b21c5fp+13},
+          {0x1.b10478c820235p+12, 0x1.606e76b6ded0ep+13, -0x1.4245b1708c8b8p+11}},
+         {{0x1.0d2d06e4be0a8p+12, 0x1.1a1fd30870781p+13, -0x1.56708af4d2cc8p+11},
+          {-0x1.5f5407e986be1p-2, -0x1.3a9d64ebc44p-2, 0x1.5969804779adcp-3},
+          0x1.d2f1dae2979c8p+9,
+          0},
+         0x1.d30aca1be2edcp+5,
+         true},
+        {{{-0x1.f1685362ed99dp+12, -0x1.42f353dbffaf8p+11, -0x1.9e24866856d2p+12},
+          {-0x1.acf278a856c97p+12, -0x1.42f353cbffaf8p+11, 0x1.3a494889b95a2p+10}},
+         {{-0x1.4153d3362c21cp+12, -0x1.32e8511a8b377p+12, -0x1.28c25b0c33c5p+9},
+          {-0x1.11ce6a04fb444p-1, 0x1.9b3e6d301d1ep-2, -0x1.180cf51b061e6p-2},
+          0x1.16faaf68633f1p+11,
+          0},
+         0x1.da65aa7831f6cp+10,
+         false},
+    };
+    for (const Example& e : examples) {
+        sep::Approximate two;
+        sep::projected_bounds(e.box, e.cyl, -1, &two);  // decide_at < 0: the two steps alone
+        EXPECT_FALSE(sep::clear_of(two, e.m));
+        const sep::Bounds b = sep::projected_bounds(e.box, e.cyl, e.m);
+        EXPECT_EQ(b.upper <= e.m, e.within);
+        EXPECT_EQ(b.lower > e.m, !e.within);
+        EXPECT_EQ(within_distance(e.box, e.cyl, e.m), e.within);
+    }
+}
+
 // The probes' stage 0 (one plain-double problem for the three probe cylinders, filtered/semi_static.hpp's
 // error bounds) on pairs of every generator profile, at margins from subnormal to 2^20 of the shapes
 // and at the approximate distance itself (probe cylinders within rounding of touching), in every

@@ -146,8 +146,14 @@ inline Approximate approximate(const rim::Box& box, const rim::Rims& f, const Cy
 // rim point nearest the box centre, then `steps` steps of alternating projections (the box point nearest
 // the cylinder point nearest the last one). Box points are clamped in the box's axes (for the
 // parallelepiped's skewed axes only an approximation, which the proof does not need).
-// `a` brings the box and the axis in double (a.box, a.u).
-inline void projected(Approximate& a, const Cylinder<double>& c, int steps = 2) {
+// `a` brings the box and the axis in double (a.box, a.u). With `decide_at` ≥ 0 the steps go on, doubling
+// up to `max_steps`, while the search's bounds do not show a side of decide_at clearly (by 2^-20 of it)
+// and its pair is not within 2^-20 of it: the projections converge only linearly where the box lies
+// along the rim, and most pairs that two steps leave open are clear after a few more.
+inline bool clear_of(const Approximate& a, double decide_at) {
+    return a.upper < decide_at * (1 - 0x1p-20) || a.lower > decide_at * (1 + 0x1p-20);
+}
+inline void projected(Approximate& a, const Cylinder<double>& c, int steps = 2, double decide_at = -1, int max_steps = 16) {
     const Vec3<double>& u = a.u;
     const double h = 0.5 * c.height;
     Vec3<double> inverse;  // 1/|hi|², or 0 for a flat side
@@ -175,11 +181,15 @@ inline void projected(Approximate& a, const Cylinder<double>& c, int steps = 2) 
     for (int i = 0;; ++i) {
         a.closest.mu = nearest_mu(q);
         q = nearest_on_cylinder(algo::gjk::detail::box_point(a.box, a.closest.mu), false);
-        if (i == steps) break;
+        if (i < steps) continue;
+        a.closest.q = q;
+        a.closest.overlap = false;
+        detail::complete(a, c, false);  // the common directions: stage 0's tests, in the clearance query
+        // Done, or a pair within 2^-20 of decide_at (no search in double shows a side then).
+        if (decide_at < 0 || steps >= max_steps || clear_of(a, decide_at) || std::abs(a.upper - decide_at) <= 0x1p-20 * decide_at)
+            return;
+        steps = std::min(2 * steps, max_steps);
     }
-    a.closest.q = q;
-    a.closest.overlap = false;
-    detail::complete(a, c, false);  // the common directions: stage 0's tests, in the clearance query
 }
 
 // The bounds that a search's result `a` shows, proved for the box enclosed by `box` (rim.hpp's
@@ -296,10 +306,9 @@ Bounds projected_bounds(const AnyBox& b, const Cylinder<double>& c, double decid
     for (int i = 0; i < 3; ++i) a.box.half[i] = {box.half[i][0].value(), box.half[i][1].value(), box.half[i][2].value()};
     const double len = std::sqrt(dot(c.axis, c.axis));
     a.u = without_tiny_components({c.axis[0] / len, c.axis[1] / len, c.axis[2] / len});
-    projected(a, c);
+    projected(a, c, 2, decide_at);
     if (search) *search = a;
-    if (!(a.upper < decide_at * (1 - 0x1p-20)) && !(a.lower > decide_at * (1 + 0x1p-20)))
-        return {0, std::numeric_limits<double>::infinity()};
+    if (!clear_of(a, decide_at)) return {0, std::numeric_limits<double>::infinity()};
     return certified<Bounded>(box, bounded_cylinder(c), a, decide_at);
 }
 
