@@ -200,7 +200,7 @@ TEST(Clearance, ShouldersLieInTheRoundedCylinder) {
 }
 
 // A box corner in the rim region, within m of the rim but outside the fat and tall cylinders: a
-// shoulder decides it in stage 0, and a margin below its distance is not within.
+// shoulder decides it (the shoulders' stage), and a margin below its distance is not within.
 TEST(Clearance, ShoulderDecidesACornerInTheRimRegion) {
     // The corner (1.6, 0, 1.6) lies 0.6·√2 ≈ 0.8485 from the rim point (1, 0, 1).
     const AlignedBox<double> box{{1.6, -1, 1.6}, {3, 1, 3}};
@@ -208,6 +208,8 @@ TEST(Clearance, ShoulderDecidesACornerInTheRimRegion) {
     const auto verdicts = detail::clearance::stage0_verdicts<false>(box, g).cylinders;
     EXPECT_EQ(verdicts[1], true);   // outer: a hit, which decides nothing
     EXPECT_EQ(verdicts[3 + 1], true);  // the 45° shoulder: a hit
+    detail::clearance::Pair<AlignedBox<double>> q(box, kUnit, 1.0);
+    EXPECT_EQ(detail::clearance::shoulders(q), true);
     EXPECT_TRUE(within_distance(box, kUnit, 1.0));
     EXPECT_TRUE(within_distance(box, kUnit, 0.8486));
     EXPECT_FALSE(within_distance(box, kUnit, 0.8485));

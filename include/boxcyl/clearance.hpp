@@ -185,7 +185,7 @@ struct Pair {
     filtered::rim::Proved proved{};
     std::array<std::optional<bool>, kStage0Cylinders> stage0{};  // each answer stage 0 or the search gave
     // The quick bounds' pair is within 2^-20 of the margin: the pair is most likely at it, where the
-    // grown box and the shoulders' search cost more than they decide (they are skipped).
+    // grown box and the shoulders cost more than they decide (they are skipped).
     bool near_margin = false;
 };
 
@@ -268,15 +268,17 @@ std::optional<Cylinder<double>> rim_witness_shoulder(filtered::Prepared<Box>& pr
 // Stage 0 of the exact intersection query (filtered/semi_static.hpp) on stage 0's cylinders at once:
 // one problem, computed for the outer cylinder — the largest, so its length scale bounds the others —
 // with each cylinder's sizes set in turn (the reduction to the box's frame, most of stage 0's cost, is
-// shared). Each cylinder's verdict, probes() then the shoulders (nullopt: undecided, or not asked: the
-// outer one left out, a query that stage 0 takes only rescaled, a parallelepiped), then the rim
-// witnesses' shoulder when one holds a witness (a hit); unless `all`, it stops at the first answer.
+// shared). Each cylinder's verdict, probes() then, with `shoulders`, the fixed shoulders (nullopt:
+// undecided, or not asked: the outer one left out, a query that stage 0 takes only rescaled, a
+// parallelepiped), then the rim witnesses' shoulder when one holds a witness (a hit); unless `all`, it
+// stops at the first answer. The query asks the fixed shoulders later (shoulders()): the quick bounds
+// answer most pairs they would, and the others for less than their three tests cost.
 struct Stage0Verdicts {
     std::array<std::optional<bool>, kStage0Cylinders> cylinders{};
     std::optional<Cylinder<double>> rim_shoulder;
 };
 template <bool all, class Box>
-Stage0Verdicts stage0_verdicts(const Box& box, const Grown& g) {
+Stage0Verdicts stage0_verdicts(const Box& box, const Grown& g, bool shoulders = true) {
     Stage0Verdicts verdicts;
 #if !(defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT)
     if constexpr (!std::is_same_v<Box, Parallelepiped<double>>) {  // a parallelepiped's query has no stage 0
@@ -290,7 +292,7 @@ Stage0Verdicts stage0_verdicts(const Box& box, const Grown& g) {
             verdicts.cylinders[k] = filtered::semi_static::decide(prep.p, prep.box, c);
             if (!all && verdicts.cylinders[k] == ps[k].decides_when) return verdicts;
         }
-        if (shoulder_verdicts<all>(prep, g, verdicts.cylinders) && !all) return verdicts;
+        if (shoulders && shoulder_verdicts<all>(prep, g, verdicts.cylinders) && !all) return verdicts;
         verdicts.rim_shoulder = rim_witness_shoulder(prep, g);
     }
 #endif
@@ -300,27 +302,27 @@ Stage0Verdicts stage0_verdicts(const Box& box, const Grown& g) {
 // is skipped below; one left undecided asks the whole query.
 template <class Box>
 std::optional<bool> probes_stage0(Pair<Box>& q) {
-    const Stage0Verdicts v = stage0_verdicts<false>(q.box, q.g);
+    const Stage0Verdicts v = stage0_verdicts<false>(q.box, q.g, false);
     q.stage0 = v.cylinders;
     const std::array<Probe, 3> ps = probes(q.g);
     for (std::size_t k = 0; k < ps.size(); ++k)
         if (q.stage0[k] == ps[k].decides_when) return ps[k].decides_when;
-    for (std::size_t k = ps.size(); k < kStage0Cylinders; ++k)
-        if (q.stage0[k] == true) return true;  // a shoulder's hit
     if (v.rim_shoulder) return true;
     return std::nullopt;
 }
-// Stage 0b of the exact intersection query (filtered/witness_search.hpp: a search in double for a
-// point or a direction that stage 0's certificates then prove) on each shoulder that stage 0 left
-// undecided, on the probes' problem again: hits in the rim region that no fixed witness shows. Sound in
-// every rounding mode, as in the intersection query. (The probes' own whole queries search too.)
+// The fixed shoulders, on the probes' problem again: stage 0 of the exact intersection query on each,
+// then stage 0b (filtered/witness_search.hpp: a search in double for a point or a direction that stage
+// 0's certificates then prove) on each it leaves undecided: hits in the rim region that no fixed
+// witness shows. Sound in every rounding mode, as in the intersection query. (The probes' own whole
+// queries search too.)
 template <class Box>
-std::optional<bool> shoulders_search(Pair<Box>& q) {
+std::optional<bool> shoulders(Pair<Box>& q) {
 #if !(defined(BOXCYL_FORCE_EXACT) && BOXCYL_FORCE_EXACT)
     if constexpr (!std::is_same_v<Box, Parallelepiped<double>>) {
         if (!q.g.outer_valid || q.near_margin) return std::nullopt;
         filtered::Prepared<Box> prep(q.box, q.g.outer);
         if (!prep.in_range || prep.rescaled()) return std::nullopt;
+        if (shoulder_verdicts<false>(prep, q.g, q.stage0)) return true;
         for (std::size_t k = 0; k < kShoulders.size(); ++k) {
             std::optional<bool>& verdict = q.stage0[3 + k];
             if (verdict) continue;
@@ -419,10 +421,10 @@ std::optional<bool> exact_stage(Pair<Box>& q) {
 }
 
 // The order is policy: on random pairs most are decided by the probes' stage 0 (the fat cylinder's hit
-// or the outer one's miss, certified in plain double, or a shoulder's hit), and nearly all of the rest
-// near the rim by the quick bounds and the grown box, each a fraction of the cost of the shoulders'
-// search and GJK's bounds that follow. A pair whose quick search lands within 2^-20 of the margin skips
-// the grown box and the shoulders' search (near_margin). The refined bounds come before the
+// or the outer one's miss, certified in plain double, or a rim witness's hit), and nearly all of the
+// rest near the rim by the quick bounds, a fraction of the cost of the grown box, the shoulders and
+// GJK's bounds that follow. A pair whose quick search lands within 2^-20 of the margin skips
+// the grown box and the shoulders (near_margin). The refined bounds come before the
 // probes' whole queries: at the margin they decide the pairs whose distance is within rounding of it
 // but not equal (most contacts with the side or a cap among them), where the probes' queries, on
 // shapes within rounding of touching, cost as much and decide fewer. The probes then decide the
@@ -431,11 +433,11 @@ std::optional<bool> exact_stage(Pair<Box>& q) {
 // leave (docs/clearance.md gives the measured shares).
 template <class Box>
 inline constexpr std::array<Stage<Box>, 11> stages{
-    &probes_stage0<Box>,       &quick_separation<Box>, &grown_box_misses<Box>, &shoulders_search<Box>,
+    &probes_stage0<Box>,       &quick_separation<Box>, &grown_box_misses<Box>, &shoulders<Box>,
     &separation<Box>,          &refined_separation<Box>, &probe<Box, 0>,         &probe<Box, 1>,
     &probe<Box, 2>,            &rim<Box>,              &exact_stage<Box>};
 inline constexpr std::array<const char*, 11> stage_names{
-    "probes' stage 0", "quick bounds", "grown box",       "shoulders' search", "distance bounds", "refined bounds",
+    "probes' stage 0", "quick bounds", "grown box",       "shoulders",         "distance bounds", "refined bounds",
     "fat probe",       "outer probe", "tall probe",       "rim intervals",     "exact"};
 
 // The index of the stage that answers, for the benchmark's per-stage shares (margin > 0).
