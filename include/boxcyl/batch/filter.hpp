@@ -379,8 +379,8 @@ BOXCYL_FORCE_INLINE inline LaneMask search_hits(const CylinderFilter& f, const L
 //                                                               and 2H − |Â| > κ(2H + |Â| + Ŝ1) + τ.
 // Eligible: Ŝ1, T̂ ≤ 2^200 (false for NaN and ∞), so nothing overflows. Lanes that none of these decide
 // (boxes near the surface, big boxes) go on to aligned_lanes.
-// The ball's terms (doubled coordinates relative to C): Q̂, Â, Ŝ1, T̂ and the eligibility. They depend
-// on C and û alone, so that cylinders sharing them (the clearance form's probes) share the terms.
+// The ball's terms (doubled coordinates relative to C): Q̂, Â, Ŝ1 and T̂. They depend on C and û
+// alone, so that cylinders sharing them (the clearance form's probes) share the terms.
 struct BallTerms {
     Lanes q, a, s1, t;
 };
@@ -411,8 +411,6 @@ BOXCYL_FORCE_INLINE inline LaneResult ball_verdict(const BallConstants& b, const
     const LaneMask dec = ok && (miss || hit);
     return {dec, dec && !miss};
 }
-// `terms`, when given, receives the ball's terms where they were computed (else it is left untouched:
-// every lane was decided by the bounding boxes, or the filter is unusable), and `*computed` says which.
 // The hit half of ball_verdict alone: the lanes whose ball certainly lies in the cylinder of `b` (a
 // ball cannot also be proved to miss it).
 BOXCYL_FORCE_INLINE inline LaneMask ball_inside(const BallConstants& b, const BallTerms& x) {
@@ -420,6 +418,8 @@ BOXCYL_FORCE_INLINE inline LaneMask ball_inside(const BallConstants& b, const Ba
     return x.s1 <= kLimit && x.t <= kLimit && ((b.four_r2 - x.q) + a2 > b.kappa * (b.four_r2 + x.q + a2) + kAbs) &&
            (b.two_h - aa > b.kappa * (b.two_h + aa + x.s1) + kAbs);
 }
+// `terms`, when given, receives the ball's terms where they were computed (else it is left untouched:
+// every lane was decided by the bounding boxes, or the filter is unusable), and `*computed` says which.
 BOXCYL_FORCE_INLINE inline LaneResult aligned_ball_lanes(const CylinderFilter& f, const Lanes lo[3], const Lanes hi[3],
                                                          BallTerms* terms = nullptr, bool* computed = nullptr) {
     // The bounding boxes first: on voxel-like data most vectors end here, and the branch saves the
