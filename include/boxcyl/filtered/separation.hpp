@@ -142,6 +142,11 @@ inline Approximate approximate(const rim::Box& box, const rim::Rims& f, const Cy
     return a;
 }
 
+// Whether the search's bounds show a side of decide_at clearly (by 2^-20 of it).
+inline bool clear_of(const Approximate& a, double decide_at) {
+    return a.upper < decide_at * (1 - 0x1p-20) || a.lower > decide_at * (1 + 0x1p-20);
+}
+
 // A quick search for a box near the rim, where GJK's first steps go round: the box point nearest the
 // rim point nearest the box centre, then `steps` steps of alternating projections (the box point nearest
 // the cylinder point nearest the last one). Box points are clamped in the box's axes (for the
@@ -150,9 +155,6 @@ inline Approximate approximate(const rim::Box& box, const rim::Rims& f, const Cy
 // up to `max_steps`, while the search's bounds do not show a side of decide_at clearly (by 2^-20 of it)
 // and its pair is not within 2^-20 of it: the projections converge only linearly where the box lies
 // along the rim, and most pairs that two steps leave open are clear after a few more.
-inline bool clear_of(const Approximate& a, double decide_at) {
-    return a.upper < decide_at * (1 - 0x1p-20) || a.lower > decide_at * (1 + 0x1p-20);
-}
 inline void projected(Approximate& a, const Cylinder<double>& c, int steps = 2, double decide_at = -1, int max_steps = 16) {
     const Vec3<double>& u = a.u;
     const double h = 0.5 * c.height;
