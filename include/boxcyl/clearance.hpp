@@ -381,7 +381,7 @@ std::optional<bool> quick_separation(Pair<Box>& q) {
     const filtered::separation::Bounds b = filtered::separation::projected_bounds(q.box, q.cyl, q.m, &a);
     if (b.upper <= q.m) return true;
     if (b.lower > q.m) return false;
-    q.near_margin = std::abs(a.upper - q.m) <= 0x1p-20 * q.m;
+    q.near_margin = filtered::separation::near_of(a, q.m);
     return std::nullopt;
 }
 // The same bounds after Newton refinement, in double-double (filtered/separation_refined.hpp): the

@@ -146,6 +146,9 @@ inline Approximate approximate(const rim::Box& box, const rim::Rims& f, const Cy
 inline bool clear_of(const Approximate& a, double decide_at) {
     return a.upper < decide_at * (1 - 0x1p-20) || a.lower > decide_at * (1 + 0x1p-20);
 }
+// Whether the search's pair lies within 2^-20 of decide_at: most likely at it, where no search in
+// double shows a side.
+inline bool near_of(const Approximate& a, double decide_at) { return std::abs(a.upper - decide_at) <= 0x1p-20 * decide_at; }
 
 // A quick search for a box near the rim, where GJK's first steps go round: the box point nearest the
 // rim point nearest the box centre, then `steps` steps of alternating projections (the box point nearest
@@ -187,9 +190,7 @@ inline void projected(Approximate& a, const Cylinder<double>& c, int steps = 2, 
         a.closest.q = q;
         a.closest.overlap = false;
         detail::complete(a, c, false);  // the common directions: stage 0's tests, in the clearance query
-        // Done, or a pair within 2^-20 of decide_at (no search in double shows a side then).
-        if (decide_at < 0 || steps >= max_steps || clear_of(a, decide_at) || std::abs(a.upper - decide_at) <= 0x1p-20 * decide_at)
-            return;
+        if (decide_at < 0 || steps >= max_steps || clear_of(a, decide_at) || near_of(a, decide_at)) return;
         steps = std::min(2 * steps, max_steps);
     }
 }
