@@ -180,12 +180,15 @@ TEST(Schedule, FactsOfThePreparedQuery) {
     EXPECT_FALSE(filtered::turned(b));
     EXPECT_FALSE(a.facts().flat);
     EXPECT_TRUE(b.facts().flat);
-    filtered::Prepared<AlignedBox<double>> c(AlignedBox<double>{{-1, -1, -1}, {1, 1, 1}},
-                                             Cylinder<double>{{0, 0, 0}, {0x1p-300, 0, 1}, 1, 2});
+    // (The prepared query refers to the caller's shapes: they must outlive it.)
+    const AlignedBox<double> cube{{-1, -1, -1}, {1, 1, 1}};
+    const Cylinder<double> two_scale{{0, 0, 0}, {0x1p-300, 0, 1}, 1, 2};
+    filtered::Prepared<AlignedBox<double>> c(cube, two_scale);
     EXPECT_FALSE(filtered::turned(c));
     EXPECT_TRUE(c.facts().two_scale_axis);
     // Beyond stage 0's range, rescaled exactly by a power of two.
-    filtered::Prepared<AlignedBox<double>> far(AlignedBox<double>{{-0x1p500, -1, -1}, {1, 1, 1}}, cyl);
+    const AlignedBox<double> huge{{-0x1p500, -1, -1}, {1, 1, 1}};
+    filtered::Prepared<AlignedBox<double>> far(huge, cyl);
     EXPECT_TRUE(far.in_range);
     EXPECT_EQ(far.box.min[0], -1.0);
     // Far from the origin for its size (UTM coordinates, a millimetre box): moved near it, exactly.
@@ -196,9 +199,24 @@ TEST(Schedule, FactsOfThePreparedQuery) {
     EXPECT_EQ(moved.box.max[0], block.max[0] - block.min[0]);  // exact: Sterbenz
     EXPECT_EQ(moved.cyl.center[2], hole.center[2] - block.min[2]);
     EXPECT_EQ(moved.cyl.radius, hole.radius);
+    // Stage 0's problem is the moved query's.
+    filtered::semi_static::Problem p;
+    ASSERT_TRUE(filtered::semi_static::problem(moved.box, moved.cyl, p));
+    EXPECT_TRUE(moved.in_range);
+    EXPECT_EQ(moved.p.c, p.c);
+    EXPECT_EQ(moved.p.l, p.l);
+    // Moved even where that leaves stage 0's range (shapes of 2^-230 at 2^-180), not rescaled.
+    const AlignedBox<double> speck{{0x1p-180, 0, 0}, {0x1p-180 + 0x1p-229, 0x1p-229, 0x1p-229}};
+    const Cylinder<double> beside{{0x1p-180 + 0x1p-228, 0, 0}, {0, 0, 1}, 0x1p-229, 0x1p-229};
+    filtered::Prepared<AlignedBox<double>> tiny(speck, beside);
+    EXPECT_EQ(tiny.box.min, (Vec3<double>{0, 0, 0}));
+    EXPECT_FALSE(tiny.in_range);
+    EXPECT_FALSE(tiny.rescaled());
+    EXPECT_TRUE(intersects(speck, beside));  // the box's face x = 2^-229 touches the side
     // Not when a difference would round: a position of 2^-60 beside one of 2^40 on the same axis.
-    filtered::Prepared<AlignedBox<double>> kept(AlignedBox<double>{{0x1p40, 0, 0}, {0x1p40 + 1, 1, 1}},
-                                                Cylinder<double>{{0x1p-60, 0.5, 0.5}, {0, 0, 1}, 0.001, 0.002});
+    const AlignedBox<double> at_2_40{{0x1p40, 0, 0}, {0x1p40 + 1, 1, 1}};
+    const Cylinder<double> near_0{{0x1p-60, 0.5, 0.5}, {0, 0, 1}, 0.001, 0.002};
+    filtered::Prepared<AlignedBox<double>> kept(at_2_40, near_0);
     EXPECT_EQ(kept.box.min[0], 0x1p40);
 }
 

@@ -131,7 +131,9 @@ bool translated_exactly(Box& box, Cylinder<double>& cyl) {
             g = std::min(g, granularity(x));
         });
         if (g == std::numeric_limits<int>::max() || t == 0) continue;  // all zero, or nothing to move
-        const double limit = std::ldexp(1.0, std::min(g + 53, 1024));  // ∞ beyond the double range
+        // 2^(g+53), built from its bits (g ≥ −1074 makes it normal), +∞ beyond the double range.
+        const double limit = g + 53 >= 1024 ? std::numeric_limits<double>::infinity()
+                                            : std::bit_cast<double>(static_cast<std::uint64_t>(g + 53 + 1023) << 52);
         bool exact = true;
         for_each_position(b, c, i, [&](double& x) { exact &= std::fabs(x - t) < limit; });
         if (!exact) return false;
@@ -217,19 +219,15 @@ public:
         bool turned;      // an oriented box whose frame is not a signed permutation
     };
 
-    // The query is not copied (the rows read the caller's box and cylinder), unless it is rescaled.
-    // A query far from the origin for its size is moved near it, exactly where that can be; one beyond
-    // stage 0's range of scales is scaled to about 1, exactly where that can be.
+    // The query is not copied (the rows read the caller's box and cylinder), unless it is moved or
+    // rescaled. A query far from the origin for its size is moved near it, exactly where that can be
+    // (told from the input as given, so that stage 0's problem is computed once); one beyond stage 0's
+    // range of scales is scaled to about 1, exactly where that can be.
     BOXCYL_FORCE_INLINE Prepared(const Box& b, const Cylinder<double>& c)
-        : in_range(semi_static::problem(b, c, p)),
-          scaled_(in_range && !far_from_origin(p) ? std::nullopt : moved(b, c, in_range)),
+        : in_range(false),
+          scaled_(prepare(b, c, p, in_range, rescaled_)),
           box(scaled_ ? scaled_->first : b),
-          cyl(scaled_ ? scaled_->second : c) {
-        if (scaled_) {
-            rescaled_ = !in_range;  // out of range: scaled; in range: moved
-            in_range = semi_static::problem(box, cyl, p);
-        }
-    }
+          cyl(scaled_ ? scaled_->second : c) {}
     Prepared(const Prepared&) = delete;
     Prepared& operator=(const Prepared&) = delete;
 
@@ -237,23 +235,62 @@ public:
     bool in_range;           // within stage 0's range of scales
 
 private:
-    // Stage 0's scale L (twice the largest length) more than 2^6 times the largest size: its error bounds
-    // would be those of the positions, not of the shapes.
+    // Stage 0's scale L (twice the largest length) more than 2^6 times the largest size (a half extent,
+    // the radius, the half height): its error bounds would be those of the positions, not of the shapes.
+    static bool far_from_origin(double l, double size) { return l > 0x1p7 * size; }
     static bool far_from_origin(const semi_static::Problem& q) {
-        const double size = std::max(std::max(std::max(q.e[0], q.e[1]), std::max(q.e[2], q.r)), q.h);
-        return q.l > 0x1p7 * size;
+        return far_from_origin(q.l, std::max(std::max(std::max(q.e[0], q.e[1]), std::max(q.e[2], q.r)), q.h));
     }
-    static std::optional<std::pair<Box, Cylinder<double>>> moved(const Box& b, const Cylinder<double>& c, bool in_range) {
+    // The same test on the input as given (L and the sizes as the problem computes them, less rounding).
+    static bool looks_far(const AlignedBox<double>& b, const Cylinder<double>& c) {
+        double position = 0, size = std::max(c.radius, c.height * 0.5);
+        update_max(position, b.min), update_max(position, b.max), update_max(position, c.center);
+        for (int i = 0; i < 3; ++i) size = std::max(size, b.max[i] * 0.5 - b.min[i] * 0.5);
+        return far_from_origin(2 * std::max(std::max(position, c.radius), c.height), size);
+    }
+    static bool looks_far(const OrientedBox<double>& b, const Cylinder<double>& c) {
+        double position = 0, size = std::max(c.radius, c.height * 0.5);
+        update_max(position, b.center), update_max(position, c.center);
+        update_max(size, b.extents);
+        return far_from_origin(2 * std::max(std::max(position, c.radius), c.height), size);
+    }
+
+    // Stage 0's problem for the query as the rows will see it (in_range: whether it has one), and that
+    // query when it is not the caller's: moved where it looks far from the origin, else as given, and
+    // then moved or rescaled where its problem says so.
+    static std::optional<std::pair<Box, Cylinder<double>>> prepare(const Box& b, const Cylinder<double>& c,
+                                                                   semi_static::Problem& p, bool& in_range,
+                                                                   bool& rescaled) {
+        constexpr bool movable = !std::is_same_v<Box, CanonicalBox<double>>;  // (a canonical box is at the origin)
+        bool far = false;
+        if constexpr (movable) {
+            far = looks_far(b, c);
+            if (far) {
+                std::pair<Box, Cylinder<double>> s{b, c};
+                // Moved whenever the query as given is in range, even where the moved one is not (the
+                // later rows are better conditioned near the origin); out of range both ways, rescaled.
+                if (translated_exactly(s.first, s.second)) {
+                    const bool moved_in_range = semi_static::problem(s.first, s.second, p);
+                    if (moved_in_range || semi_static::problem(b, c, p)) {
+                        in_range = moved_in_range;
+                        return s;
+                    }
+                }
+            }
+        }
+        in_range = semi_static::problem(b, c, p);
+        if (in_range && (far || !far_from_origin(p))) return std::nullopt;  // (far: moving it failed above)
         std::pair<Box, Cylinder<double>> s{b, c};
         bool exact = false;
         if (!in_range) exact = rescaled_exactly(s.first, s.second, largest_length(b, c));
-        else if constexpr (!std::is_same_v<Box, CanonicalBox<double>>) exact = translated_exactly(s.first, s.second);
-        // (a canonical box is at the origin already: nothing to move)
+        else if constexpr (movable) exact = translated_exactly(s.first, s.second);
         if (!exact) return std::nullopt;
+        rescaled = !in_range;
+        in_range = semi_static::problem(s.first, s.second, p);
         return s;
     }
+    bool rescaled_ = false;  // (before scaled_: prepare() sets it)
     std::optional<std::pair<Box, Cylinder<double>>> scaled_;
-    bool rescaled_ = false;
 
 public:
     // Whether the lengths were scaled by a power of two (not only moved): the sizes in p are then not
