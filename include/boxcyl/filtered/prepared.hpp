@@ -9,6 +9,7 @@
 #pragma once
 
 #include <algorithm>  // std::max
+#include <array>      // a translation
 #include <bit>        // std::bit_cast: powers of two
 #include <cmath>      // std::fabs, std::ilogb
 #include <cstdint>    // std::uint64_t, std::int8_t
@@ -120,26 +121,29 @@ void for_each_position(Box& b, Cylinder<double>& c, int i, F&& f) {
 // difference tells, in every rounding mode.
 template <class Box>
 bool translated_exactly(Box& box, Cylinder<double>& cyl) {
-    Box b = box;
-    Cylinder<double> c = cyl;
+    std::array<double, 3> t{};
     for (int i = 0; i < 3; ++i) {
-        double t = 0;
-        bool first = true;
-        int g = std::numeric_limits<int>::max();
-        for_each_position(b, c, i, [&](double& x) {
-            if (first) t = x, first = false;
-            g = std::min(g, granularity(x));
+        bool first = true, sterbenz = true;
+        for_each_position(box, cyl, i, [&](double& x) {
+            if (first) t[i] = x, first = false;
+            // Sterbenz's lemma: x − t is exact when x lies between t/2 and 2t (positions close together
+            // far from the origin: nearly always). 2|x| and 2|t| are exact, or past the range where the
+            // comparison holds anyway, in every rounding mode.
+            const double ax = std::fabs(x), at = std::fabs(t[i]);
+            sterbenz &= (std::signbit(x) == std::signbit(t[i])) & (2 * ax >= at) & (ax <= 2 * at);
         });
-        if (g == std::numeric_limits<int>::max() || t == 0) continue;  // all zero, or nothing to move
+        if (t[i] == 0 || sterbenz) continue;  // nothing to move, or exact
+        int g = std::numeric_limits<int>::max();
+        for_each_position(box, cyl, i, [&](double& x) { g = std::min(g, granularity(x)); });
         // 2^(g+53), built from its bits (g ≥ −1074 makes it normal), +∞ beyond the double range.
         const double limit = g + 53 >= 1024 ? std::numeric_limits<double>::infinity()
                                             : std::bit_cast<double>(static_cast<std::uint64_t>(g + 53 + 1023) << 52);
         bool exact = true;
-        for_each_position(b, c, i, [&](double& x) { exact &= std::fabs(x - t) < limit; });
+        for_each_position(box, cyl, i, [&](double& x) { exact &= std::fabs(x - t[i]) < limit; });
         if (!exact) return false;
-        for_each_position(b, c, i, [&](double& x) { x -= t; });
     }
-    box = b, cyl = c;
+    for (int i = 0; i < 3; ++i)
+        if (t[i] != 0) for_each_position(box, cyl, i, [&](double& x) { x -= t[i]; });
     return true;
 }
 
@@ -266,11 +270,11 @@ private:
         if constexpr (movable) {
             far = looks_far(b, c);
             if (far) {
-                std::pair<Box, Cylinder<double>> s{b, c};
+                std::optional<std::pair<Box, Cylinder<double>>> s(std::in_place, b, c);
                 // Moved whenever the query as given is in range, even where the moved one is not (the
                 // later rows are better conditioned near the origin); out of range both ways, rescaled.
-                if (translated_exactly(s.first, s.second)) {
-                    const bool moved_in_range = semi_static::problem(s.first, s.second, p);
+                if (translated_exactly(s->first, s->second)) {
+                    const bool moved_in_range = semi_static::problem(s->first, s->second, p);
                     if (moved_in_range || semi_static::problem(b, c, p)) {
                         in_range = moved_in_range;
                         return s;

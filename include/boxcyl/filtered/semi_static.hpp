@@ -280,6 +280,13 @@ inline bool in_range(double l) { return l >= min_scale && l <= max_scale; }
 BOXCYL_FORCE_INLINE inline double largest(const Vec3<double>& v) {
     return std::max(std::max(std::fabs(v[0]), std::fabs(v[1])), std::fabs(v[2]));
 }
+// The largest of several doubles, the first of equals as std::max({...}) takes it, by nested std::max:
+// the initializer-list form compiled to a loop with a branch per element, a fifth of stage 0's setup.
+template <class... T>
+BOXCYL_FORCE_INLINE inline double max_of(double a, T... rest) {
+    ((a = std::max(a, static_cast<double>(rest))), ...);
+    return a;
+}
 inline bool usable_axis(const Vec3<double>& a) {
     const double m = largest(a);
     return m > 0 && m <= 0x1p1000;  // finite and non-zero (validated input is)
@@ -532,7 +539,7 @@ BOXCYL_FORCE_INLINE inline void set_sizes(Problem& p, double radius, double heig
 
 // Canonical box: the box is canonical, the cylinder already in its frame: nothing rounds but the unit axis.
 BOXCYL_FORCE_INLINE inline bool problem(const CanonicalBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
-    const double l = 2 * std::max({largest(b.extents), largest(cyl.center), cyl.radius, cyl.height});
+    const double l = 2 * max_of(largest(b.extents), largest(cyl.center), cyl.radius, cyl.height);
     if (!in_range(l) || !usable_axis(cyl.axis)) return false;
     p.c = cyl.center;
     p.d = unit_axis(cyl.axis);
@@ -551,7 +558,7 @@ BOXCYL_FORCE_INLINE inline bool problem(const CanonicalBox<double>& b, const Cyl
 
 // Aligned box: centre K and extents E rounded (in the model); "C in the box" is decided exactly.
 BOXCYL_FORCE_INLINE inline bool problem(const AlignedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
-    const double l = 2 * std::max({largest(b.min), largest(b.max), largest(cyl.center), cyl.radius, cyl.height});
+    const double l = 2 * max_of(largest(b.min), largest(b.max), largest(cyl.center), cyl.radius, cyl.height);
     if (!in_range(l) || !usable_axis(cyl.axis)) return false;
     int inside = 1;
     for (int i = 0; i < 3; ++i) {
@@ -576,7 +583,7 @@ BOXCYL_FORCE_INLINE inline bool problem(const AlignedBox<double>& b, const Cylin
 // lemma, as |A_i|² ∈ [0.5, 2]), a row sum of three rounds twice: so g ≤ row + 10ε, and
 // g = fl(row + 32ε) is an upper bound.
 BOXCYL_FORCE_INLINE inline bool problem(const OrientedBox<double>& b, const Cylinder<double>& cyl, Problem& p) {
-    const double l = 2 * std::max({largest(b.center), largest(b.extents), largest(cyl.center), cyl.radius, cyl.height});
+    const double l = 2 * max_of(largest(b.center), largest(b.extents), largest(cyl.center), cyl.radius, cyl.height);
     if (!in_range(l) || !usable_axis(cyl.axis)) return false;
     const std::array<Vec3<double>, 3>& a = b.axes;
     // G is symmetric: six dot products; the rows summed in the same order as the three-term sum.
