@@ -167,15 +167,18 @@ struct AlignedRowsSource {
         }
     }
 #if defined(__AVX2__)
-    // Lanes p[0], p[6], p[12], … (doubles): one column of lane_count rows.
-    BOXCYL_FORCE_INLINE inline static Lanes column(const char* p) {
+    // Lanes p[0], p[6], p[12], … (doubles): one column of lane_count rows. L is Lanes, as a template
+    // parameter: each branch's construction is then dependent and checked only where it is taken (clang
+    // checks a non-dependent discarded one, and no 4-lane Lanes takes an __m512d or the reverse).
+    template <class L = Lanes>
+    BOXCYL_FORCE_INLINE inline static L column(const char* p) {
 #if defined(__AVX512F__)
         if constexpr (lane_count == 8)
-            return Lanes(_mm512_i64gather_pd(_mm512_set_epi64(42, 36, 30, 24, 18, 12, 6, 0), p, 8));
+            return L(_mm512_i64gather_pd(_mm512_set_epi64(42, 36, 30, 24, 18, 12, 6, 0), p, 8));
 #endif
         if constexpr (lane_count == 4)
-            return Lanes(_mm256_i64gather_pd(reinterpret_cast<const double*>(p), _mm256_set_epi64x(18, 12, 6, 0), 8));
-        return Lanes();
+            return L(_mm256_i64gather_pd(reinterpret_cast<const double*>(p), _mm256_set_epi64x(18, 12, 6, 0), 8));
+        return L();
     }
 #endif
     LaneResult gathered(const CylinderFilter& f, const std::size_t* idx, std::size_t count) const {
