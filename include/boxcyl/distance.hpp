@@ -24,7 +24,7 @@
 #include <algorithm>    // std::max, std::clamp
 #include <array>        // half axes
 #include <bit>          // std::bit_cast: doubles ≥ 0 ordered as integers
-#include <cmath>        // std::isfinite, std::ldexp, std::ilogb
+#include <cmath>        // std::isfinite, std::ilogb, std::sqrt
 #include <cstdint>      // std::uint64_t
 #include <limits>       // infinity
 #include <stdexcept>    // std::invalid_argument
@@ -81,9 +81,9 @@ inline constexpr int newton_steps = 16;
 struct Scale {
     int e;
     bool exact = true;
-    double operator()(double x) {
-        const double y = std::ldexp(x, e);
-        if (std::ldexp(y, -e) != x) exact = false;
+    double operator()(double x) {  // (products with powers of two: std::ldexp is a libm call)
+        const double y = filtered::times_two_to(x, e);
+        if (filtered::times_two_to(y, -e) != x) exact = false;
         return y;
     }
     Vec3<double> operator()(const Vec3<double>& v) { return {(*this)(v[0]), (*this)(v[1]), (*this)(v[2])}; }
@@ -94,18 +94,23 @@ struct Scale {
     Cylinder<double> operator()(const Cylinder<double>& c) { return {(*this)(c.center), c.axis, (*this)(c.radius), (*this)(c.height)}; }
 };
 
+// ilogb(x) for a finite x ≠ 0, from the bits where x is normal (std::ilogb is a libm call).
+inline int exponent(double x) {
+    const auto biased = static_cast<int>((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff);
+    return biased != 0 ? biased - 1023 : std::ilogb(x);
+}
 // The binary exponent of the largest length the shapes hold (coordinates, half axes, radius, height).
 struct Magnitude {
     int e = std::numeric_limits<int>::min();
     void operator()(double x) {
-        if (x != 0 && std::isfinite(x)) e = std::max(e, std::ilogb(x));
+        if (x != 0 && std::isfinite(x)) e = std::max(e, exponent(x));
     }
     void operator()(const Vec3<double>& v) { (*this)(v[0]), (*this)(v[1]), (*this)(v[2]); }
     void half_axes(const std::array<Vec3<double>, 3>& axes, const Vec3<double>& extents) {
         for (std::size_t i = 0; i < 3; ++i) {
             const double a = std::max({std::abs(axes[i][0]), std::abs(axes[i][1]), std::abs(axes[i][2])});
             if (a != 0 && extents[i] != 0 && std::isfinite(a) && std::isfinite(extents[i]))
-                e = std::max(e, std::ilogb(a) + std::ilogb(extents[i]) + 1);
+                e = std::max(e, exponent(a) + exponent(extents[i]) + 1);
         }
     }
     void operator()(const AlignedBox<double>& b) { (*this)(b.min), (*this)(b.max); }
@@ -122,14 +127,29 @@ struct Magnitude {
 // them end on a point whose bounds need the bisection).
 inline constexpr double search_gap = 0x1p-20;
 
+// The approximate closest pair that the refinement starts from: GJK in double on the box's centre and
+// half axes and the unit axis, rounded (the search needs no proof; the refinement proves what it finds).
+// The axis is scaled exactly by a power of two first, so that |D|² neither overflows nor underflows.
+template <class Box>
+filtered::separation::Approximate search(const Box& box, const Cylinder<double>& cyl) {
+    namespace sep = filtered::separation;
+    const sep::BoundedBox b = sep::bounded_box(box);
+    sep::Approximate a;
+    a.box.c = {b.center[0].value(), b.center[1].value(), b.center[2].value()};
+    for (std::size_t i = 0; i < 3; ++i) a.box.half[i] = {b.half[i][0].value(), b.half[i][1].value(), b.half[i][2].value()};
+    const Vec3<double> D = filtered::rim::scaled_axis(cyl.axis);
+    const double len = std::sqrt(dot(D, D));
+    a.u = sep::without_tiny_components({D[0] / len, D[1] / len, D[2] / len});
+    a.closest = algo::gjk::closest(a.box, {cyl.center, a.u, cyl.radius, 0.5 * cyl.height}, -1, 48, search_gap);
+    sep::detail::complete(a, cyl);
+    return a;
+}
+
 template <class Box>
 Distance refined(const Box& box, const Cylinder<double>& cyl, bool touching) {
     namespace sep = filtered::separation;
     Distance out{0.0, touching ? 0.0 : std::numeric_limits<double>::infinity(), {}, {}};
-    const filtered::rim::Box enclosed = filtered::rim::enclose(box);
-    const filtered::rim::Rims f(cyl, 0.0);
-    if (!f.valid) return out;  // an axis whose enclosure is not finite: the bisection alone
-    const sep::Approximate search = sep::approximate(enclosed, f, cyl, -1, search_gap);
+    const sep::Approximate search = distance::search(box, cyl);
     const sep::RefinedBounds r = sep::refined_bounds(box, cyl, search, -1, newton_steps, max_steps);
     if (r.found && !touching) {
         out.lower = sep::refined::lower_double(r.lower);
@@ -167,8 +187,8 @@ Distance distance(const Box& box, const Cylinder<double>& cyl) {
         out.on_cylinder = back(out.on_cylinder);
         const double lower = back(out.lower), upper = back(out.upper);
         // Rounded back outward where the result left the normal range.
-        out.lower = std::ldexp(lower, scale.e) == out.lower ? lower : std::max(0.0, boxcyl::detail::next_down(lower));
-        out.upper = std::ldexp(upper, scale.e) == out.upper ? upper : boxcyl::detail::next_up(upper);
+        out.lower = filtered::times_two_to(lower, scale.e) == out.lower ? lower : std::max(0.0, boxcyl::detail::next_down(lower));
+        out.upper = filtered::times_two_to(upper, scale.e) == out.upper ? upper : boxcyl::detail::next_up(upper);
     } else {
         out = refined(box, cyl, touching);
     }
