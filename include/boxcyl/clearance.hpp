@@ -356,6 +356,25 @@ std::optional<bool> grown_box_misses(Pair<Box>& q) {
 #endif
     return std::nullopt;
 }
+// An approximate closest pair from doubles: GJK on the box's centre and half axes and the unit axis,
+// rounded, without the interval enclosures that the distance bounds are proved on (the search needs no
+// proof; the refined bounds prove what it finds). The axis is scaled exactly by a power of two first,
+// so that |D|² neither overflows nor underflows. `decide_at` and `rel_gap` are GJK's (algo/gjk.hpp).
+template <class Box>
+filtered::separation::Approximate search_in_double(const Box& box, const Cylinder<double>& cyl, double decide_at,
+                                                   double rel_gap) {
+    namespace sep = filtered::separation;
+    const sep::BoundedBox b = sep::bounded_box(box);
+    sep::Approximate a;
+    a.box.c = {b.center[0].value(), b.center[1].value(), b.center[2].value()};
+    for (std::size_t i = 0; i < 3; ++i) a.box.half[i] = {b.half[i][0].value(), b.half[i][1].value(), b.half[i][2].value()};
+    const Vec3<double> D = filtered::rim::scaled_axis(cyl.axis);
+    const double len = std::sqrt(dot(D, D));
+    a.u = sep::without_tiny_components({D[0] / len, D[1] / len, D[2] / len});
+    a.closest = algo::gjk::closest(a.box, {cyl.center, a.u, cyl.radius, 0.5 * cyl.height}, decide_at, 48, rel_gap);
+    sep::detail::complete(a, cyl);
+    return a;
+}
 // Probe k of probes(), unless stage 0 or the search answered it.
 template <class Box, std::size_t k>
 std::optional<bool> probe(Pair<Box>& q) {
@@ -364,9 +383,15 @@ std::optional<bool> probe(Pair<Box>& q) {
     if (intersects_unchecked(q.box, p.cylinder) == p.decides_when) return p.decides_when;
     return std::nullopt;
 }
-// Certified distance bounds from an approximate closest pair (filtered/separation.hpp).
+// Certified distance bounds from an approximate closest pair (filtered/separation.hpp). Where the quick
+// bounds' pair lies within 2^-20 of the margin, bounds in intervals (about 2^-45 of it) answer hardly
+// ever: only the search is made, in double, for the refined bounds.
 template <class Box>
 std::optional<bool> separation(Pair<Box>& q) {
+    if (q.near_margin) {
+        q.search = search_in_double(q.box, q.cyl, q.m, 0x1p-26);
+        return std::nullopt;
+    }
     const filtered::separation::Bounds b = filtered::separation::bounds(q.box, q.cyl, q.m, &q.search.emplace());
     if (b.upper <= q.m) return true;
     if (b.lower > q.m) return false;

@@ -127,29 +127,11 @@ struct Magnitude {
 // them end on a point whose bounds need the bisection).
 inline constexpr double search_gap = 0x1p-20;
 
-// The approximate closest pair that the refinement starts from: GJK in double on the box's centre and
-// half axes and the unit axis, rounded (the search needs no proof; the refinement proves what it finds).
-// The axis is scaled exactly by a power of two first, so that |D|² neither overflows nor underflows.
-template <class Box>
-filtered::separation::Approximate search(const Box& box, const Cylinder<double>& cyl) {
-    namespace sep = filtered::separation;
-    const sep::BoundedBox b = sep::bounded_box(box);
-    sep::Approximate a;
-    a.box.c = {b.center[0].value(), b.center[1].value(), b.center[2].value()};
-    for (std::size_t i = 0; i < 3; ++i) a.box.half[i] = {b.half[i][0].value(), b.half[i][1].value(), b.half[i][2].value()};
-    const Vec3<double> D = filtered::rim::scaled_axis(cyl.axis);
-    const double len = std::sqrt(dot(D, D));
-    a.u = sep::without_tiny_components({D[0] / len, D[1] / len, D[2] / len});
-    a.closest = algo::gjk::closest(a.box, {cyl.center, a.u, cyl.radius, 0.5 * cyl.height}, -1, 48, search_gap);
-    sep::detail::complete(a, cyl);
-    return a;
-}
-
 template <class Box>
 Distance refined(const Box& box, const Cylinder<double>& cyl, bool touching) {
     namespace sep = filtered::separation;
     Distance out{0.0, touching ? 0.0 : std::numeric_limits<double>::infinity(), {}, {}};
-    const sep::Approximate search = distance::search(box, cyl);
+    const sep::Approximate search = clearance::search_in_double(box, cyl, -1, search_gap);
     const sep::RefinedBounds r = sep::refined_bounds(box, cyl, search, -1, newton_steps, max_steps);
     if (r.found && !touching) {
         out.lower = sep::refined::lower_double(r.lower);
