@@ -382,7 +382,7 @@ struct RefinedBounds {
 
 namespace refined {
 // x·2^p, exactly unless it leaves the range (values only).
-inline D scaled(const D& x, int p) { return {std::ldexp(x.high(), p), std::ldexp(x.low(), p), 0.0}; }
+inline D scaled(const D& x, int p) { return {times_two_to(x.high(), p), times_two_to(x.low(), p), 0.0}; }
 
 // The cylinder point nearest X (values: no proof). X − C is scaled by a power of two to magnitude ~1
 // first, so that its squares neither overflow nor underflow, whatever the coordinates' range.
@@ -507,6 +507,11 @@ inline double lower_double(const DoubleDouble& lower) {
     }
     return lo;
 }
+// upper − lower to double-double precision, about (the ends as doubles, lo() and hi(), are an ulp apart
+// at least): a speed hint, no proof.
+inline double width(const RefinedBounds& r) {
+    return (r.upper.high() - r.lower.high()) + ((r.upper.low() + r.upper.error()) - (r.lower.low() - r.lower.error()));
+}
 // Whether the doubles the bounds prove are at most n apart.
 inline bool within_doubles(const RefinedBounds& r, std::uint64_t n) {
     const double lo = lower_double(r.lower), up = upper_double(r.upper);
@@ -588,6 +593,10 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
     if (enough()) return out;
     search_direction();
     if (enough()) return out;
+    // The margin inside bounds within 2^-80 of it (double-double's evaluations leave about 2^-94): the
+    // distance is at the margin, most likely exactly (a contact at exactly the margin, which only the
+    // exact stages decide), and the steps below would cost several times the bounds so far for nothing.
+    if (decide_at > 0 && refined::width(out) <= 0x1p-80 * decide_at) return out;
     const std::array<D, 3> before = mu;
     constexpr int dd_steps = 4;
     refine(box, k, mu, free, std::min(newton_steps, dd_steps));
