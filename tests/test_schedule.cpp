@@ -6,6 +6,7 @@
 // statistics the pipeline reports.
 #include <gtest/gtest.h>
 
+#include <array>      // a frame
 #include <cfenv>      // rounding modes
 #include <cstdio>     // std::printf
 #include <random>     // std::mt19937_64
@@ -260,6 +261,67 @@ TEST(Schedule, TranslationNearTheOriginIsExact) {
     }
     EXPECT_GT(moved, 4000);
     EXPECT_GT(kept, 500);
+}
+
+// Tiny sizes: the pairs shrunk to 0 and grown to τ = 2^-120 of the scale, with nothing tiny left in
+// them (the row's recursion is one level deep).
+TEST(Schedule, TinySizesShrinkAndGrow) {
+    const double tau = 0x1p-118;  // for a scale of 4
+    const OrientedBox<double> box{{0, 0, 0}, {Vec3<double>{1, 0, 0}, Vec3<double>{0, 1, 0}, Vec3<double>{0, 0, 1}},
+                                  {0x1p-1000, 1, 0x1p-118}};
+    const Cylinder<double> cyl{{2, 0, 0}, {0, 0, 1}, 0x1p-1074, 4};
+    const auto p = filtered::sandwich::pairs(box, cyl, 4.0);
+    ASSERT_TRUE(p);
+    EXPECT_EQ(p->inner_box.extents, (Vec3<double>{0, 1, 0x1p-118}));  // τ itself is not tiny
+    EXPECT_EQ(p->outer_box.extents, (Vec3<double>{tau, 1, 0x1p-118}));
+    EXPECT_EQ(p->inner_cyl.radius, 0.0);
+    EXPECT_EQ(p->outer_cyl.radius, tau);
+    EXPECT_EQ(p->inner_cyl.height, 4.0);
+    EXPECT_FALSE(filtered::sandwich::pairs(p->inner_box, p->inner_cyl, 4.0));
+    EXPECT_FALSE(filtered::sandwich::pairs(p->outer_box, p->outer_cyl, 4.0));
+    // An aligned box's width: [min, min] inside, [−τ, τ] outside, only where both ends lie within τ.
+    const AlignedBox<double> thin{{-0x1p-1074, -1, 0x1p-200}, {0, 1, 0x1.0000000000001p-200}};
+    const auto a = filtered::sandwich::pairs(thin, Cylinder<double>{{0, 0, 0}, {1, 0, 0}, 1, 1}, 4.0);
+    ASSERT_TRUE(a);
+    EXPECT_EQ(a->inner_box.min, thin.min);
+    EXPECT_EQ(a->inner_box.max, (Vec3<double>{-0x1p-1074, 1, 0x1p-200}));
+    EXPECT_EQ(a->outer_box.min, (Vec3<double>{-tau, -1, -tau}));
+    EXPECT_EQ(a->outer_box.max, (Vec3<double>{tau, 1, tau}));
+    EXPECT_FALSE(filtered::sandwich::pairs(a->outer_box, Cylinder<double>{{0, 0, 0}, {1, 0, 0}, 1, 1}, 4.0));
+    // Nothing tiny, or a scale whose τ is not normal: no pairs.
+    EXPECT_FALSE(filtered::sandwich::pairs(OrientedBox<double>{box.center, box.axes, {1, 1, 1}},
+                                           Cylinder<double>{{2, 0, 0}, {0, 0, 1}, 1, 4}, 4.0));
+    EXPECT_FALSE(filtered::sandwich::pairs(box, cyl, 0x1p-903));
+}
+
+// Queries of the magnitudes profile's one-ulp pairs that only the exact stage decided (50 to 400 µs),
+// now decided by the tiny sizes' pairs, in every rounding mode; the answers are the oracle's.
+TEST(Schedule, TinySizesDecideTwoScaleBoundaryPairs) {
+    const std::array<Vec3<double>, 3> axes0{Vec3<double>{-0x1.66d09039c9f9p-3, -0x1.205c2dad96825p-2, 0x1.e30565c7e17acp-1},
+                                            Vec3<double>{0x1.9163f19aaf54p-1, -0x1.3d367dba67f84p-1, -0x1.424a584c55fd8p-5},
+                                            Vec3<double>{0x1.30ee5e70e671ep-1, 0x1.77248e9d488dp-1, 0x1.5137a45f91286p-2}};
+    const OrientedBox<double> miss_box{{0, 0, 0}, axes0, {0x1.66b405f8225f2p-32, 0x1.8568e755aa122p-9, 0x0.00000000993abp-1022}};
+    const Cylinder<double> miss_cyl{{0x1.149364f4fe991p-9, 0x1.b59daa2cee24fp-13, -0x1.7503aaa01a9d9p-9},
+                                    {0x1.cd35cc7dc078ep-1, -0x1.0fc54b017255p-1, -0x1.d89d6b0f1ef9ap-2},
+                                    0x1.26d9b9d18613ep-9, 0x1.6f3e4316b330bp-8};
+    const std::array<Vec3<double>, 3> axes1{Vec3<double>{0x1.f47f6cc8b2a16p-2, 0x1.34107f443544ap-6, -0x1.be928255ce53ap-1},
+                                            Vec3<double>{0x1.fac40514692c2p-6, 0x1.ff5e379b660c9p-1, 0x1.3e5f1fbcaa504p-5},
+                                            Vec3<double>{0x1.be652e3872496p-1, -0x1.789cf24734042p-5, 0x1.f348d1b34cdc8p-2}};
+    const OrientedBox<double> hit_box{{0, 0, 0}, axes1, {0x0.0000000050eep-1022, 0x1.56e1fc2f8f359p-997, 0x0.0000000099c59p-1022}};
+    const Cylinder<double> hit_cyl{{0x1.16d3b5849b009p+0, 0x1.bb1eb5af1e4d8p+0, -0x1.f4af90aba4ba3p+1},
+                                   {0x1.bdd9a1d773bbep-1, 0x1.3b20956d5f538p-1, -0x1.a7ced7dacf31p-1},
+                                   0x1.0aea59891b503p+1, 0x1.3ed9d967ac844p+3};
+    ASSERT_FALSE(oracle::intersects(to_exact(miss_box), to_exact(miss_cyl)));
+    ASSERT_TRUE(oracle::intersects(to_exact(hit_box), to_exact(hit_cyl)));
+    for (int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+        const RoundingMode guard(mode);
+        filtered::Stats stats;
+        EXPECT_FALSE(filtered::query(miss_box, miss_cyl, stats).intersect) << mode_name(mode);
+        EXPECT_TRUE(filtered::query(hit_box, hit_cyl, stats).intersect) << mode_name(mode);
+        EXPECT_EQ(stats[filtered::RowId::tiny_sizes].misses, 1u) << mode_name(mode);
+        EXPECT_EQ(stats[filtered::RowId::tiny_sizes].hits, 1u) << mode_name(mode);
+        EXPECT_EQ(stats[filtered::RowId::exact].tried, 0u) << mode_name(mode);
+    }
 }
 
 // The statistics: a query through the front door with QueryOptions::stats counts one query, one

@@ -228,8 +228,8 @@ public:
     // (told from the input as given, so that stage 0's problem is computed once); one beyond stage 0's
     // range of scales is scaled to about 1, exactly where that can be.
     BOXCYL_FORCE_INLINE Prepared(const Box& b, const Cylinder<double>& c)
-        : in_range(false),
-          scaled_(prepare(b, c, p, in_range, rescaled_)),
+        : in_range(near_origin(b, c, p)),
+          scaled_(in_range ? std::nullopt : prepare(b, c, p, in_range, rescaled_)),
           box(scaled_ ? scaled_->first : b),
           cyl(scaled_ ? scaled_->second : c) {}
     Prepared(const Prepared&) = delete;
@@ -259,13 +259,23 @@ private:
         return far_from_origin(2 * std::max(std::max(position, c.radius), c.height), size);
     }
 
+    static constexpr bool movable = !std::is_same_v<Box, CanonicalBox<double>>;  // (a canonical box is at the origin)
+
+    // Nearly every query: in stage 0's range and near the origin for its size, taken as given. Kept
+    // inline (prepare() below is not), since it is most of stage 0's path.
+    BOXCYL_FORCE_INLINE static bool near_origin(const Box& b, const Cylinder<double>& c, semi_static::Problem& p) {
+        if constexpr (movable) {
+            if (looks_far(b, c)) return false;
+        }
+        return semi_static::problem(b, c, p) && !far_from_origin(p);
+    }
+
     // Stage 0's problem for the query as the rows will see it (in_range: whether it has one), and that
     // query when it is not the caller's: moved where it looks far from the origin, else as given, and
     // then moved or rescaled where its problem says so.
     static std::optional<std::pair<Box, Cylinder<double>>> prepare(const Box& b, const Cylinder<double>& c,
                                                                    semi_static::Problem& p, bool& in_range,
                                                                    bool& rescaled) {
-        constexpr bool movable = !std::is_same_v<Box, CanonicalBox<double>>;  // (a canonical box is at the origin)
         bool far = false;
         if constexpr (movable) {
             far = looks_far(b, c);

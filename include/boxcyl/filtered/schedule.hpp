@@ -20,6 +20,7 @@
 #include "boxcyl/filtered/enclosed.hpp"
 #include "boxcyl/filtered/parallelepiped.hpp"
 #include "boxcyl/filtered/prepared.hpp"
+#include "boxcyl/filtered/sandwich.hpp"
 #include "boxcyl/filtered/semi_static.hpp"
 #include "boxcyl/filtered/stats.hpp"
 #include "boxcyl/filtered/witness_search.hpp"
@@ -100,6 +101,15 @@ inline constexpr auto hull_dd = [](auto& q) -> Verdict {
     if constexpr (is_oriented<box_of<decltype(q)>>) return enclosed::hull(q.box, q.cyl, q.facts().k);
     return std::nullopt;
 };
+// A pair asked of the whole pipeline, as a call (defined below the runner).
+template <class Box>
+bool sub_query(const Box& box, const Cylinder<double>& cyl);
+// Tiny sizes: the answers of the pairs with them shrunk to 0 and grown to τ (filtered/sandwich.hpp).
+inline constexpr auto sandwiched = [](auto& q) -> Verdict {
+    using Box = box_of<decltype(q)>;
+    return sandwich::decide(q.box, q.cyl, q.facts().scale,
+                            [](const Box& b, const Cylinder<double>& c) { return sub_query(b, c); });
+};
 template <exact::Tier tier>
 inline constexpr auto exact_stage = [](auto& q) -> Verdict { return exact::answer(q.box, q.cyl, tier); };
 
@@ -153,6 +163,7 @@ inline constexpr std::tuple box_schedule{
     Row{R::inequalities_interval, M::directed, always, inequalities<Interval>},
     Row{R::thorough_search, M::nearest, flat_in_range, thorough},
     Row{R::thorough_search, M::directed, in_range, thorough},
+    Row{R::tiny_sizes, M::any, always, sandwiched},
     Row{R::exact, M::any, always, exact_stage<exact::Tier::full>},
 };
 
@@ -229,6 +240,16 @@ template <class Box, class Recorder>
 BOXCYL_FORCE_INLINE inline Verdict walk(Prepared<Box>& q, Recorder& stats, RowId& by) {
     constexpr std::size_t rows = std::tuple_size_v<std::remove_cvref_t<decltype(schedule<Box>())>>;
     return walk(q, stats, by, std::make_index_sequence<rows>{});
+}
+
+// The sandwich's pairs: none has a tiny size (sandwich.hpp), so this recursion is one level deep. Not
+// inlined: the runner is, and the walk it holds would otherwise hold itself.
+template <class Box>
+[[gnu::noinline]] bool sub_query(const Box& box, const Cylinder<double>& cyl) {
+    Prepared<Box> q(box, cyl);
+    NoStats none;
+    RowId by = RowId::exact;
+    return *walk(q, none, by);
 }
 
 }  // namespace boxcyl::filtered

@@ -21,6 +21,7 @@ namespace boxcyl::filtered {
 enum class RowId : std::uint8_t {
     semi_static, exact_narrow, search, inequalities_bounded, exact_series_narrow, clipped, hull_double_double,
     inequalities_dd, clipped_flat, exact_series, inequalities_bounded_late, inequalities_interval, thorough_search,
+    tiny_sizes,
     pp_fixed, pp_frame, pp_search, pp_frame_interval, pp_candidates_interval, exact,
 };
 inline constexpr std::size_t row_count = static_cast<std::size_t>(RowId::exact) + 1;
@@ -31,8 +32,8 @@ constexpr std::string_view name(RowId row) {
         "semi_static",     "exact_narrow",         "search",          "inequalities_bounded",
         "exact_series_narrow", "clipped",          "hull_double_double", "inequalities_dd",
         "clipped_flat",    "exact_series",         "inequalities_bounded_late", "inequalities_interval",
-        "thorough_search", "pp_fixed",             "pp_frame",        "pp_search",
-        "pp_frame_interval", "pp_candidates_interval", "exact"};
+        "thorough_search", "tiny_sizes",           "pp_fixed",        "pp_frame",
+        "pp_search",       "pp_frame_interval",    "pp_candidates_interval", "exact"};
     return names[static_cast<std::size_t>(row)];
 }
 
