@@ -321,7 +321,19 @@ TEST(Schedule, TinySizesDecideTwoScaleBoundaryPairs) {
         EXPECT_EQ(stats[filtered::RowId::tiny_sizes].misses, 1u) << mode_name(mode);
         EXPECT_EQ(stats[filtered::RowId::tiny_sizes].hits, 1u) << mode_name(mode);
         EXPECT_EQ(stats[filtered::RowId::exact].tried, 0u) << mode_name(mode);
+        // In round to nearest the pairs are decided in double-double; in the directed modes, whose rows
+        // have no double-double, by the exact stage, and the query says so.
+        EXPECT_EQ(filtered::query(miss_box, miss_cyl).exact_used, mode != FE_TONEAREST) << mode_name(mode);
     }
+    // Exactly touching with a tiny width: the inner pair touches exactly too, which only the exact stage
+    // decides, and the query says so.
+    const AlignedBox<double> thin{{0, 0, -0x1p-1074}, {1, 1, 0}};
+    const Cylinder<double> touching{{3, 0.5, 0}, {0, 0, 1}, 2, 1};
+    filtered::Stats stats;
+    const filtered::Result r = filtered::query(thin, touching, stats);
+    EXPECT_TRUE(r.intersect);
+    EXPECT_TRUE(r.exact_used);
+    EXPECT_EQ(stats[filtered::RowId::tiny_sizes].hits, 1u);
 }
 
 // The statistics: a query through the front door with QueryOptions::stats counts one query, one

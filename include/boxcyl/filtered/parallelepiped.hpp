@@ -372,6 +372,7 @@ public:
     parallelepiped::Approx approx;              // the search's rounded problem
     parallelepiped::Problem<double> plain;      // the certificates' preselection in plain double
     parallelepiped::Candidates fixed, searched;  // the candidates, fixed and searched (filled by its row)
+    bool exact_in_pairs = false;                 // (the schedule has no tiny sizes' row)
 
     const parallelepiped::Problem<Bounded>& bounded() { return enclosed_problem(bounded_); }
     const parallelepiped::Problem<Interval>& interval() { return enclosed_problem(interval_); }

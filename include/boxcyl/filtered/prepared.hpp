@@ -348,6 +348,9 @@ public:
         });
     }
 
+    // The tiny sizes' row (filtered/sandwich.hpp) asked a pair that the exact stage answered.
+    bool exact_in_pairs = false;
+
 private:
     std::optional<Facts> facts_;
     std::int8_t nearest_ = -1, near_ = -1, looks_near_ = -1;

@@ -101,14 +101,23 @@ inline constexpr auto hull_dd = [](auto& q) -> Verdict {
     if constexpr (is_oriented<box_of<decltype(q)>>) return enclosed::hull(q.box, q.cyl, q.facts().k);
     return std::nullopt;
 };
-// A pair asked of the whole pipeline, as a call (defined below the runner).
+// A pair asked of the whole pipeline, as a call (defined below the runner): its answer, and whether
+// the exact stage gave it.
+struct PairAnswer {
+    bool intersect;
+    bool exact_used;
+};
 template <class Box>
-bool sub_query(const Box& box, const Cylinder<double>& cyl);
+PairAnswer sub_query(const Box& box, const Cylinder<double>& cyl);
 // Tiny sizes: the answers of the pairs with them shrunk to 0 and grown to τ (filtered/sandwich.hpp).
+// The query counts as answered by the exact stage when a pair was.
 inline constexpr auto sandwiched = [](auto& q) -> Verdict {
     using Box = box_of<decltype(q)>;
-    return sandwich::decide(q.box, q.cyl, q.facts().scale,
-                            [](const Box& b, const Cylinder<double>& c) { return sub_query(b, c); });
+    return sandwich::decide(q.box, q.cyl, q.facts().scale, [&q](const Box& b, const Cylinder<double>& c) {
+        const PairAnswer a = sub_query(b, c);
+        q.exact_in_pairs |= a.exact_used;
+        return a.intersect;
+    });
 };
 template <exact::Tier tier>
 inline constexpr auto exact_stage = [](auto& q) -> Verdict { return exact::answer(q.box, q.cyl, tier); };
@@ -144,12 +153,14 @@ inline constexpr auto pp_clipped = [](auto& q) -> Verdict {
 using R = RowId;
 using M = Modes;
 
-// Aligned, canonical and oriented boxes.
+// Aligned, canonical and oriented boxes. Tiny sizes come before the enclosure rows: those fail on a
+// size far below the others at several µs each, and decide the pairs, of one scale, for less.
 inline constexpr std::tuple box_schedule{
     Row{R::semi_static, M::any, always, semi_static_tests},
     Row{R::exact_narrow, M::any, hint_narrow, exact_stage<exact::Tier::fixed>},
     Row{R::search, M::nearest, hint_search, searched},
     Row{R::search, M::directed, in_range, searched},
+    Row{R::tiny_sizes, M::any, always, sandwiched},
     Row{R::inequalities_bounded, M::nearest, hint_not_near, inequalities<Bounded>},
     Row{R::exact_series_narrow, M::nearest, hint_narrow_two_scale, exact_stage<exact::Tier::series>},
     Row{R::clipped, M::nearest, turned, clipped_dd},
@@ -163,7 +174,6 @@ inline constexpr std::tuple box_schedule{
     Row{R::inequalities_interval, M::directed, always, inequalities<Interval>},
     Row{R::thorough_search, M::nearest, flat_in_range, thorough},
     Row{R::thorough_search, M::directed, in_range, thorough},
-    Row{R::tiny_sizes, M::any, always, sandwiched},
     Row{R::exact, M::any, always, exact_stage<exact::Tier::full>},
 };
 
@@ -245,11 +255,12 @@ BOXCYL_FORCE_INLINE inline Verdict walk(Prepared<Box>& q, Recorder& stats, RowId
 // The sandwich's pairs: none has a tiny size (sandwich.hpp), so this recursion is one level deep. Not
 // inlined: the runner is, and the walk it holds would otherwise hold itself.
 template <class Box>
-[[gnu::noinline]] bool sub_query(const Box& box, const Cylinder<double>& cyl) {
+[[gnu::noinline]] PairAnswer sub_query(const Box& box, const Cylinder<double>& cyl) {
     Prepared<Box> q(box, cyl);
     NoStats none;
     RowId by = RowId::exact;
-    return *walk(q, none, by);
+    const bool intersect = *walk(q, none, by);
+    return {intersect, is_exact_row(by)};
 }
 
 }  // namespace boxcyl::filtered
