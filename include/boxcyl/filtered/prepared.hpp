@@ -184,6 +184,13 @@ bool has_zero_size(const Box& b, const Cylinder<double>& c) {
 
 // ---- Speed hints: they choose the order of rows, never an answer. ----
 
+// The plain-double linear-inequalities answer: wrong near touching, a hint only.
+template <class Box>
+bool plain_answer(const Box& box, const Cylinder<double>& cyl) {
+    const CanonicalQuery<double> q = to_canonical(box, to_unit(cyl));
+    return algo::linear_inequalities(q.box, q.cylinder);
+}
+
 // Whether the plain-double linear-inequalities answer changes between the cylinder grown and shrunk by
 // 2^-30 of the query's scale m (radius and half-height ± δ). It catches the contacts whose gap no single
 // separating axis or axis distance shows (a cap's rim on a box edge, a side on a vertex).

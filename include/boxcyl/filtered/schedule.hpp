@@ -113,7 +113,8 @@ PairAnswer sub_query(const Box& box, const Cylinder<double>& cyl);
 // The query counts as answered by the exact stage when a pair was.
 inline constexpr auto sandwiched = [](auto& q) -> Verdict {
     using Box = box_of<decltype(q)>;
-    return sandwich::decide(q.box, q.cyl, q.facts().scale, [&q](const Box& b, const Cylinder<double>& c) {
+    return sandwich::decide(q.box, q.cyl, q.facts().scale, plain_answer(q.box, q.cyl),
+                            [&q](const Box& b, const Cylinder<double>& c) {
         const PairAnswer a = sub_query(b, c);
         q.exact_in_pairs |= a.exact_used;
         return a.intersect;
