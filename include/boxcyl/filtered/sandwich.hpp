@@ -11,7 +11,8 @@
 // pairs have one scale, and the rows before the exact stage decide them (a flat shape, a size of τ).
 // They differ from the given pair by at most τ·√3 in every point, so only a pair within about that of
 // touching is left to the exact stage. Sound in every rounding mode: τ is built from its bits, the sizes
-// are compared, never computed, and each pair is asked of the whole pipeline in the caller's mode.
+// are compared, never computed, and each pair is asked of the rows before the exact stage in the
+// caller's mode.
 #pragma once
 
 #include <bit>       // std::bit_cast: τ from its bits
@@ -94,18 +95,19 @@ std::optional<Pairs<Box>> pairs(const Box& b, const Cylinder<double>& c, double 
     return p;
 }
 
-// The verdict from the pairs: `ask(box, cyl)` answers a pair exactly (the whole pipeline). The pair
-// that can prove the likely answer is asked first (`likely_hit`: a hint, which orders, never decides):
-// on one-ulp pairs, where each pair costs microseconds, asking the inner pair first spent one on every
-// miss.
-template <class Box, class Ask>
-std::optional<bool> decide(const Box& b, const Cylinder<double>& c, double scale, bool likely_hit, Ask&& ask) {
+// The verdict from the pairs: `ask(box, cyl)` answers a pair exactly, or nullopt. The pair that can
+// prove the likely answer is asked first (`likely_hit()`: a hint, which orders, never decides; called
+// only where there are pairs): on one-ulp pairs, where each pair costs microseconds, asking the inner
+// pair first spent one on every miss.
+template <class Box, class Hint, class Ask>
+std::optional<bool> decide(const Box& b, const Cylinder<double>& c, double scale, Hint&& likely_hit, Ask&& ask) {
     const std::optional<Pairs<Box>> p = pairs(b, c, scale);
     if (!p) return std::nullopt;
-    auto inner_hits = [&] { return ask(p->inner_box, p->inner_cyl); };
-    auto outer_misses = [&] { return !ask(p->outer_box, p->outer_cyl); };
-    if (likely_hit ? inner_hits() : outer_misses()) return likely_hit;
-    if (likely_hit ? outer_misses() : inner_hits()) return !likely_hit;
+    auto inner_hits = [&] { return ask(p->inner_box, p->inner_cyl) == true; };
+    auto outer_misses = [&] { return ask(p->outer_box, p->outer_cyl) == false; };
+    const bool hit_first = likely_hit();
+    if (hit_first ? inner_hits() : outer_misses()) return hit_first;
+    if (hit_first ? outer_misses() : inner_hits()) return !hit_first;
     return std::nullopt;
 }
 

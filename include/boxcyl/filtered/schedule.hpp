@@ -101,10 +101,11 @@ inline constexpr auto hull_dd = [](auto& q) -> Verdict {
     if constexpr (is_oriented<box_of<decltype(q)>>) return enclosed::hull(q.box, q.cyl, q.facts().k);
     return std::nullopt;
 };
-// A pair asked of the whole pipeline, as a call (defined below the runner): its answer, and whether
-// the exact stage gave it.
+// A pair asked of the pipeline without its last row, the exact stage (which the given query would
+// reach next at no more cost), as a call (defined below the runner): its answer, nullopt where only
+// the exact stage would give it, and whether one of the exact tiers for narrow inputs gave it.
 struct PairAnswer {
-    bool intersect;
+    Verdict intersect;
     bool exact_used;
 };
 template <class Box>
@@ -113,12 +114,13 @@ PairAnswer sub_query(const Box& box, const Cylinder<double>& cyl);
 // The query counts as answered by the exact stage when a pair was.
 inline constexpr auto sandwiched = [](auto& q) -> Verdict {
     using Box = box_of<decltype(q)>;
-    return sandwich::decide(q.box, q.cyl, q.facts().scale, plain_answer(q.box, q.cyl),
-                            [&q](const Box& b, const Cylinder<double>& c) {
-        const PairAnswer a = sub_query(b, c);
-        q.exact_in_pairs |= a.exact_used;
-        return a.intersect;
-    });
+    return sandwich::decide(
+        q.box, q.cyl, q.facts().scale, [&q] { return plain_answer(q.box, q.cyl); },
+        [&q](const Box& b, const Cylinder<double>& c) {
+            const PairAnswer a = sub_query(b, c);
+            q.exact_in_pairs |= a.exact_used;
+            return a.intersect;
+        });
 };
 template <exact::Tier tier>
 inline constexpr auto exact_stage = [](auto& q) -> Verdict { return exact::answer(q.box, q.cyl, tier); };
@@ -154,14 +156,14 @@ inline constexpr auto pp_clipped = [](auto& q) -> Verdict {
 using R = RowId;
 using M = Modes;
 
-// Aligned, canonical and oriented boxes. Tiny sizes come before the enclosure rows: those fail on a
-// size far below the others at several µs each, and decide the pairs, of one scale, for less.
+// Aligned, canonical and oriented boxes. Tiny sizes come last before the exact stage: earlier, their
+// pairs cost more than the rows after them on the queries those decide (the narrow two-scale inputs of
+// exact_series_narrow among them).
 inline constexpr std::tuple box_schedule{
     Row{R::semi_static, M::any, always, semi_static_tests},
     Row{R::exact_narrow, M::any, hint_narrow, exact_stage<exact::Tier::fixed>},
     Row{R::search, M::nearest, hint_search, searched},
     Row{R::search, M::directed, in_range, searched},
-    Row{R::tiny_sizes, M::any, always, sandwiched},
     Row{R::inequalities_bounded, M::nearest, hint_not_near, inequalities<Bounded>},
     Row{R::exact_series_narrow, M::nearest, hint_narrow_two_scale, exact_stage<exact::Tier::series>},
     Row{R::clipped, M::nearest, turned, clipped_dd},
@@ -175,6 +177,7 @@ inline constexpr std::tuple box_schedule{
     Row{R::inequalities_interval, M::directed, always, inequalities<Interval>},
     Row{R::thorough_search, M::nearest, flat_in_range, thorough},
     Row{R::thorough_search, M::directed, in_range, thorough},
+    Row{R::tiny_sizes, M::any, always, sandwiched},
     Row{R::exact, M::any, always, exact_stage<exact::Tier::full>},
 };
 
@@ -255,13 +258,21 @@ BOXCYL_FORCE_INLINE inline Verdict walk(Prepared<Box>& q, Recorder& stats, RowId
 
 // The sandwich's pairs: none has a tiny size (sandwich.hpp), so this recursion is one level deep. Not
 // inlined: the runner is, and the walk it holds would otherwise hold itself.
+template <class Box, std::size_t... I>
+Verdict walk_before_exact(Prepared<Box>& q, RowId& by, std::index_sequence<I...>) {
+    NoStats none;
+    Verdict verdict;
+    ((std::get<I>(schedule<Box>()).id != RowId::exact && try_row(std::get<I>(schedule<Box>()), q, none, verdict, by)) ||
+     ...);
+    return verdict;
+}
 template <class Box>
 [[gnu::noinline]] PairAnswer sub_query(const Box& box, const Cylinder<double>& cyl) {
+    constexpr std::size_t rows = std::tuple_size_v<std::remove_cvref_t<decltype(schedule<Box>())>>;
     Prepared<Box> q(box, cyl);
-    NoStats none;
     RowId by = RowId::exact;
-    const bool intersect = *walk(q, none, by);
-    return {intersect, is_exact_row(by)};
+    const Verdict v = walk_before_exact(q, by, std::make_index_sequence<rows>{});
+    return {v, v && is_exact_row(by)};
 }
 
 }  // namespace boxcyl::filtered

@@ -19,9 +19,9 @@ namespace boxcyl::filtered {
 
 // Every row of every schedule, in the order the schedules run them (docs/pipeline.md describes each).
 enum class RowId : std::uint8_t {
-    semi_static, exact_narrow, search, tiny_sizes, inequalities_bounded, exact_series_narrow, clipped,
-    hull_double_double, inequalities_dd, clipped_flat, exact_series, inequalities_bounded_late, inequalities_interval,
-    thorough_search,
+    semi_static, exact_narrow, search, inequalities_bounded, exact_series_narrow, clipped, hull_double_double,
+    inequalities_dd, clipped_flat, exact_series, inequalities_bounded_late, inequalities_interval, thorough_search,
+    tiny_sizes,
     pp_fixed, pp_frame, pp_search, pp_frame_interval, pp_candidates_interval, exact,
 };
 inline constexpr std::size_t row_count = static_cast<std::size_t>(RowId::exact) + 1;
@@ -29,10 +29,10 @@ inline constexpr std::size_t row_count = static_cast<std::size_t>(RowId::exact) 
 // The name the docs and the statistics table use for a row.
 constexpr std::string_view name(RowId row) {
     constexpr std::string_view names[row_count] = {
-        "semi_static",     "exact_narrow",         "search",          "tiny_sizes",
-        "inequalities_bounded", "exact_series_narrow", "clipped",     "hull_double_double",
-        "inequalities_dd", "clipped_flat",         "exact_series",    "inequalities_bounded_late",
-        "inequalities_interval", "thorough_search", "pp_fixed",       "pp_frame",
+        "semi_static",     "exact_narrow",         "search",          "inequalities_bounded",
+        "exact_series_narrow", "clipped",          "hull_double_double", "inequalities_dd",
+        "clipped_flat",    "exact_series",         "inequalities_bounded_late", "inequalities_interval",
+        "thorough_search", "tiny_sizes",           "pp_fixed",        "pp_frame",
         "pp_search",       "pp_frame_interval",    "pp_candidates_interval", "exact"};
     return names[static_cast<std::size_t>(row)];
 }
