@@ -144,8 +144,11 @@ Distance refined(const Box& box, const Cylinder<double>& cyl, bool touching) {
     // The witnesses: the refined box point (the double search's where the refinement declines) and the
     // cylinder point nearest it, as values (they need no proof; in a directed rounding mode they are
     // a few ulps less accurate).
-    if (r.found || search.found) {
-        const sep::refined::DV X = r.found ? r.witness : sep::refined::lift(search.p);
+    if (r.found) {
+        out.on_box = round(r.witness);
+        out.on_cylinder = round(r.witness + r.toward);
+    } else if (search.found) {
+        const sep::refined::DV X = sep::refined::lift(search.p);
         out.on_box = round(X);
         out.on_cylinder = round(sep::refined::nearest_on_cylinder(sep::refined::cylinder(cyl), X));
     }

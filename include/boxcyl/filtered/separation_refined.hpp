@@ -120,15 +120,33 @@ inline D sqrt_nonnegative(const D& x) {
     return D::range(0, boxcyl::detail::next_up(std::sqrt(hi)));
 }
 
-// X's distance to the cylinder, enclosed.
-inline D point_distance(const Cyl& k, const DV& X) {
+// X's distance to the cylinder, enclosed, and the step from X to the cylinder point nearest it,
+// Y − X = (clamp(t) − t)·u + (min(r/ρ, 1) − 1)·P (P = Z − t·u the part of Z = X − C across the axis):
+// a value, for the lower bound's direction and the witness, formed from the same Z and t and without
+// Y's cancellation against X. `toward` is not finite where the parts leave double's range.
+struct AtPoint {
+    D distance;
+    DV toward;
+};
+inline AtPoint at_point(const Cyl& k, const DV& X) {
     const DV Z = X - k.C;
     const DV Zxu = cross(Z, k.u);
     const D rho = sqrt_nonnegative(dot(Zxu, Zxu));
+    const D t = dot(Z, k.u);
     const D dr = positive_part(rho - k.r);
-    const D da = positive_part(enclosure_abs(dot(Z, k.u)) - k.half_h);
-    return sqrt_nonnegative(dr * dr + da * da);
+    const D da = positive_part(enclosure_abs(t) - k.half_h);
+    AtPoint out{sqrt_nonnegative(dr * dr + da * da), {}};
+    const DV u = value(k.u);
+    const D tv = value(t), rv = value(rho), r = value(k.r), hh = value(k.half_h);
+    const DV P = value(value(Z) - DV{tv * u[0], tv * u[1], tv * u[2]});
+    D axial(0.0), radial(0.0);
+    if (approx(tv) > approx(hh)) axial = value(hh - tv);
+    else if (approx(tv) < -approx(hh)) axial = value(-hh - tv);
+    if (approx(rv) > approx(r)) radial = value((r - rv) / rv);
+    for (std::size_t i = 0; i < 3; ++i) out.toward[i] = value(axial * u[i] + radial * P[i]);
+    return out;
 }
+inline D point_distance(const Cyl& k, const DV& X) { return at_point(k, X).distance; }
 
 // The gap along n (any nonzero vector), over |n|: a lower bound of the distance when positive.
 inline D gap(const Box& box, const Cyl& k, const DV& n) {
@@ -167,6 +185,17 @@ inline double squared_distance(const CylOf<double>& k, const Vec3<double>& X) {
     const Vec3<double> Zxu = cross(Z, k.u);
     const double dr = std::max(0.0, std::sqrt(dot(Zxu, Zxu)) - k.r), da = std::max(0.0, std::abs(t) - k.half_h);
     return dr * dr + da * da;
+}
+
+// The gap along n (from the box towards the cylinder) in double, over |n|: no proof, it orders the
+// directions whose gaps are proved.
+inline double gap_in_double(const BoxOf<double>& box, const CylOf<double>& k, const Vec3<double>& n) {
+    const double nn = dot(n, n);
+    if (!(nn > 0)) return -1;
+    const Vec3<double> nxu = cross(n, k.u);
+    const double L = dot(n, k.C - box.center) - std::abs(dot(n, box.half[0])) - std::abs(dot(n, box.half[1])) -
+                     std::abs(dot(n, box.half[2])) - k.half_h * std::abs(dot(n, k.u)) - k.r * std::sqrt(dot(nxu, nxu));
+    return L / std::sqrt(nn);
 }
 
 // The box coordinates μ (|μi| ≤ 1, doubles) of a box point near P: the least-squares coordinates of P
@@ -378,6 +407,7 @@ struct RefinedBounds {
     DoubleDouble lower, upper;
     bool found;  // false: declined (not round to nearest, or no search to start from)
     refined::DV witness{};  // the box point whose distance is `upper` (its value; exactly in the box)
+    refined::DV toward{};   // from the witness to the cylinder point nearest it (a value)
 };
 
 namespace refined {
@@ -410,8 +440,8 @@ inline Cyl cylinder(const Cylinder<double>& c) {
     Cyl k;
     k.C = lift(c.center);
     const DV D_axis = lift(rim::scaled_axis(c.axis));
-    const D len = sqrt(dot(D_axis, D_axis));
-    k.u = {D_axis[0] / len, D_axis[1] / len, D_axis[2] / len};
+    const D inverse = D(1.0) / sqrt(dot(D_axis, D_axis));  // one quotient, not three
+    k.u = {D_axis[0] * inverse, D_axis[1] * inverse, D_axis[2] * inverse};
     k.r = D(c.radius);
     k.half_h = D(c.height) * D(0.5);
     return k;
@@ -463,8 +493,8 @@ inline void kinks(const refined::Box& box, const refined::Cyl& k, const std::arr
             // rounds to ±1 is taken as exactly ±1 (the point must lie in the box).
             at[i] = std::abs(sq) == 1 ? D(sq) : roots[q];
             const DV X = point(box, at);
-            const D up = point_distance(k, X);
-            if (upper_end_below(up, out.upper)) out.upper = up, out.witness = value(X);
+            const AtPoint up = at_point(k, X);
+            if (upper_end_below(up.distance, out.upper)) out.upper = up.distance, out.witness = value(X), out.toward = up.toward;
             // The normal cone at the crossing: the cap's normal sgn(t)·u and the radial direction.
             const DV Z = value(X - k.C);
             const D t = value(dot(Z, u));
@@ -563,13 +593,21 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
         if (lower_end_above(g, out.lower)) out.lower = g;
     };
     // The bounds at the box point μ: its distance to the cylinder, and the gap along the direction to
-    // its nearest cylinder point (each kept where better).
-    auto bounds_at = [&](const std::array<D, 3>& m) {
+    // its nearest cylinder point (each kept where better). The direction is read from the step to that
+    // point, or, where its parts come near the ends of double's range, from the cylinder point itself
+    // (nearest_on_cylinder scales).
+    auto upper_at = [&](const std::array<D, 3>& m) {
         const DV X = point(box, m);
-        const D up = point_distance(k, X);
-        if (first || upper_end_below(up, out.upper)) out.upper = up, out.witness = value(X);
+        const AtPoint up = at_point(k, X);
+        if (first || upper_end_below(up.distance, out.upper)) out.upper = up.distance, out.witness = value(X), out.toward = up.toward;
         first = false;
-        lower(value(nearest_on_cylinder(k, X) - X));
+        const Vec3<double> n = approx(up.toward);
+        const double big = std::max({std::abs(n[0]), std::abs(n[1]), std::abs(n[2])});
+        if (big >= 0x1p-900 && big <= 0x1p900) return up.toward;
+        return value(nearest_on_cylinder(k, X) - X);
+    };
+    auto bounds_at = [&](const std::array<D, 3>& m) {
+        lower(upper_at(m));
         return enough();
     };
     // Newton's method in double first, where its steps are cheap and converge to double's resolution:
@@ -577,21 +615,25 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
     // double-double from where it ended, for the last bits: one or two steps where it converges
     // quadratically, at most dd_steps (more only crawl along a nearly flat valley of the distance, a
     // face nearly parallel to the axis, where the foot and the kinks below do better).
+    const BoxOf<double> box_d = rounded(box);
+    const CylOf<double> k_d = rounded(k);
     std::array<double, 3> mu_double{approx(mu[0]), approx(mu[1]), approx(mu[2])};
-    refine(rounded(box), rounded(k), mu_double, free, newton_steps);
+    refine(box_d, k_d, mu_double, free, newton_steps);
     mu = {D(mu_double[0]), D(mu_double[1]), D(mu_double[2])};
-    bounds_at(mu);
-    // The double search's best direction (a face normal, the axis, an edge crossed with the axis):
-    // exact for face, cap and side contacts, where the refined direction is only nearly so. Tried at
-    // once where its gap in double is about as large as the refined one, else only if needed.
-    bool searched = false;
-    auto search_direction = [&] {
-        if (!searched) lower(lift(a.direction));
-        searched = true;
-    };
-    if (a.lower >= approx(out.lower) * (1 - 0x1p-30)) search_direction();
-    if (enough()) return out;
-    search_direction();
+    const DV toward = upper_at(mu);
+    // Two directions for the lower bound: the refined pair's, and the double search's best (a face
+    // normal, the axis, an edge crossed with the axis: exact for face, cap and side contacts, where the
+    // refined direction is only nearly so). Each gap costs as much as the upper bound, so the one whose
+    // gap in double is the larger goes first, and the other only where the first does not suffice (for
+    // the distance: where it leaves the enclosure wider than one double, so that the second direction
+    // still tightens what the first proves to within four).
+    const DV search = lift(a.direction);
+    // At a vertex (every coordinate at ±1) the refined direction is the exact one wherever both agree.
+    const bool vertex = std::abs(mu_double[0]) == 1 && std::abs(mu_double[1]) == 1 && std::abs(mu_double[2]) == 1;
+    const bool search_first = !vertex && a.lower >= gap_in_double(box_d, k_d, approx(toward)) * (1 - 0x1p-30);
+    lower(search_first ? search : toward);
+    if (enough() && (enough_doubles == 0 || refined::within_doubles(out, 1))) return out;
+    lower(search_first ? toward : search);
     if (enough()) return out;
     // The margin inside bounds within 2^-80 of it (double-double's evaluations leave about 2^-94): the
     // distance is at the margin, most likely exactly (a contact at exactly the margin, which only the
@@ -611,8 +653,8 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
     // sees no curvature, and that rim point's foot is the nearest box point).
     if (out.upper.hi() - out.lower.lo() > 0x1p-50 * out.upper.hi()) {
         const DV X2 = point(box, foot(a.box, algo::gjk::detail::support(algo::gjk::Cylinder{c.center, a.u, c.radius, 0.5 * c.height}, -a.direction)));
-        const D upper2 = point_distance(k, X2);
-        if (upper_end_below(upper2, out.upper)) out.upper = upper2, out.witness = value(X2);
+        const AtPoint upper2 = at_point(k, X2);
+        if (upper_end_below(upper2.distance, out.upper)) out.upper = upper2.distance, out.witness = value(X2), out.toward = upper2.toward;
     }
     if (enough()) return out;
     if (out.upper.hi() - out.lower.lo() > 0x1p-80 * out.upper.hi()) kinks(box, k, mu, out);
