@@ -100,6 +100,7 @@ inline double value(double x) { return x; }
 inline Vec3<double> value(const Vec3<double>& v) { return v; }
 inline double approx(double x) { return x; }
 inline Vec3<double> approx(const DV& v) { return {approx(v[0]), approx(v[1]), approx(v[2])}; }
+inline const Vec3<double>& approx(const Vec3<double>& v) { return v; }
 inline BoxOf<double> rounded(const Box& b) { return {approx(b.center), {approx(b.half[0]), approx(b.half[1]), approx(b.half[2])}}; }
 inline CylOf<double> rounded(const Cyl& k) { return {approx(k.C), approx(k.u), approx(k.r), approx(k.half_h)}; }
 
@@ -238,7 +239,7 @@ inline std::array<D, 3> foot(const algo::gjk::Box& b, const Vec3<double>& P) {
 // and the Hessian 2[∇ρ∇ρᵀ + (ρ − r)₊·∇²ρ] (where ρ > r) + 2uuᵀ (where |t| > h/2), with ∇ρ = P/ρ (P the
 // part of X − C across the axis) and ∇²ρ = (I − uuᵀ − ∇ρ∇ρᵀ)/ρ; the free coordinates see them through
 // the half axes. A step that leaves [−1, 1] is clamped, and that coordinate fixed.
-template <class N>
+template <class N, class H = N>
 void refine(const BoxOf<N>& box, const CylOf<N>& k, std::array<N, 3>& mu, std::array<bool, 3>& free, int steps) {
     using V = Vec3<N>;
     using std::sqrt;
@@ -274,11 +275,22 @@ void refine(const BoxOf<N>& box, const CylOf<N>& k, std::array<N, 3>& mu, std::a
             uu[i] = value(dot(u, box.half[i]));
             grad[i] = value(N(2.0) * (over_r * gr[i] + over_h * sgn * uu[i]));
         }
+        // The Hessian and the step's linear algebra in H: N, or double for N = double-double. From a
+        // point within about an ulp of double of the minimum, a step with the gradient in N and the
+        // Hessian to double's precision lands within about its square; only where the distance's
+        // valley is nearly flat (a face within 2^-40 or so of parallel to the axis) does the Hessian
+        // itself need double-double.
+        auto in_h = [](const auto& x) {
+            if constexpr (std::is_same_v<H, double>) return approx(x);
+            else return value(x);
+        };
+        const H rho_h = in_h(rho), over_r_h = in_h(over_r);
         auto hessian = [&](std::size_t i, std::size_t j) {
-            N h(0.0);
-            if (side) h = gr[i] * gr[j] + over_r * (dot(box.half[i], box.half[j]) - uu[i] * uu[j] - gr[i] * gr[j]) / rho;
-            if (cap) h = h + uu[i] * uu[j];
-            return value(N(2.0) * h);
+            H h(0.0);
+            const H gi = in_h(gr[i]), gj = in_h(gr[j]), ui = in_h(uu[i]), uj = in_h(uu[j]);
+            if (side) h = gi * gj + over_r_h * (dot(in_h(box.half[i]), in_h(box.half[j])) - ui * uj - gi * gj) / rho_h;
+            if (cap) h = h + ui * uj;
+            return in_h(H(2.0) * h);
         };
         // A coordinate held at ±1 is released where g decreases into the box (the feature guessed
         // from the double search may be one too low: an edge where the nearest point is on a face).
@@ -303,35 +315,35 @@ void refine(const BoxOf<N>& box, const CylOf<N>& k, std::array<N, 3>& mu, std::a
         //     the side (every point of the contact region is nearest, and Newton's model has its minimum
         //     far away or points out of the box).
         const std::size_t i0 = idx[0], i1 = idx[nfree == 2 ? 1 : 0];
-        const N g_value = value(over_r * over_r + over_h * over_h);
-        const N g0 = grad[i0], g1 = nfree == 2 ? grad[i1] : N(0.0);
-        const N hg00 = hessian(i0, i0), hg01 = nfree == 2 ? hessian(i0, i1) : N(0.0), hg11 = nfree == 2 ? hessian(i1, i1) : N(0.0);
-        auto newton = [&](bool of_d, std::array<N, 2>& delta) {
+        const H g_value = in_h(over_r * over_r + over_h * over_h);
+        const H g0 = in_h(grad[i0]), g1 = nfree == 2 ? in_h(grad[i1]) : H(0.0);
+        const H hg00 = hessian(i0, i0), hg01 = nfree == 2 ? hessian(i0, i1) : H(0.0), hg11 = nfree == 2 ? hessian(i1, i1) : H(0.0);
+        auto newton = [&](bool of_d, std::array<H, 2>& delta) {
             if (of_d && !(approx(g_value) > 0)) return false;
-            const N two_g = N(2.0) * g_value;
-            const N h00 = of_d ? value(hg00 - g0 * g0 / two_g) : hg00;
+            const H two_g = H(2.0) * g_value;
+            const H h00 = of_d ? in_h(hg00 - g0 * g0 / two_g) : hg00;
             if (nfree == 1) {
                 if (!(approx(h00) > 0)) return false;
-                delta = {value(-g0 / h00), N(0.0)};
+                delta = {in_h(-g0 / h00), H(0.0)};
                 return approx(delta[0]) == approx(delta[0]);
             }
-            const N h01 = of_d ? value(hg01 - g0 * g1 / two_g) : hg01, h11 = of_d ? value(hg11 - g1 * g1 / two_g) : hg11;
-            const N det = h00 * h11 - h01 * h01;
+            const H h01 = of_d ? in_h(hg01 - g0 * g1 / two_g) : hg01, h11 = of_d ? in_h(hg11 - g1 * g1 / two_g) : hg11;
+            const H det = h00 * h11 - h01 * h01;
             if (!(approx(det) > 0 && approx(h00) > 0)) return false;
-            delta = {value((h01 * g1 - h11 * g0) / det), value((h01 * g0 - h00 * g1) / det)};
+            delta = {in_h((h01 * g1 - h11 * g0) / det), in_h((h01 * g0 - h00 * g1) / det)};
             return approx(delta[0]) == approx(delta[0]) && approx(delta[1]) == approx(delta[1]);  // NaN: a quotient undecided
         };
-        auto gradient_line = [&](std::array<N, 2>& delta) {
-            const N gHg = g0 * g0 * hg00 + N(2.0) * g0 * g1 * hg01 + g1 * g1 * hg11;
+        auto gradient_line = [&](std::array<H, 2>& delta) {
+            const H gHg = g0 * g0 * hg00 + H(2.0) * g0 * g1 * hg01 + g1 * g1 * hg11;
             if (!(approx(gHg) > 0)) return false;
-            const N s = value(-(g0 * g0 + g1 * g1) / gHg);
-            delta = {value(s * g0), value(s * g1)};
+            const H step = in_h(-(g0 * g0 + g1 * g1) / gHg);
+            delta = {in_h(step * g0), in_h(step * g1)};
             return approx(delta[0]) == approx(delta[0]) && approx(delta[1]) == approx(delta[1]);
         };
         const double g_now = squared_distance(k, X);
         bool taken = false, last = false;
         for (int candidate = 0; candidate < 3 && !taken; ++candidate) {
-            std::array<N, 2> delta{N(0.0), N(0.0)};
+            std::array<H, 2> delta{H(0.0), H(0.0)};
             if (!(candidate < 2 ? newton(candidate == 0, delta) : gradient_line(delta))) continue;
             // A step leaving the box is cut back to the first bound it crosses (clamping each coordinate
             // alone would leave the step's direction, and no halving of a far step would come back).
@@ -346,7 +358,7 @@ void refine(const BoxOf<N>& box, const CylOf<N>& k, std::array<N, 3>& mu, std::a
                 if (a < alpha) alpha = a, hit = j;
             }
             if (alpha < 1)
-                for (N& d : delta) d = value(d * N(alpha));
+                for (H& d : delta) d = in_h(d * H(alpha));
             // Converged: a whole step below double-double's resolution of μ changes nothing.
             const bool tiny = std::abs(approx(delta[0])) <= resolution && std::abs(approx(delta[1])) <= resolution;
             if (tiny && hit < 0) return;
@@ -360,7 +372,7 @@ void refine(const BoxOf<N>& box, const CylOf<N>& k, std::array<N, 3>& mu, std::a
                 std::array<bool, 3> next_free = free;
                 for (int j = 0; j < nfree; ++j) {
                     const std::size_t i = idx[static_cast<std::size_t>(j)];
-                    N v = value(mu[i] + delta[static_cast<std::size_t>(j)]);
+                    N v = value(mu[i] + N(delta[static_cast<std::size_t>(j)]));
                     if (approx(v) != approx(v)) return;  // NaN (an underflowed quotient): keep the last point
                     if (j == hit && halving == 0) v = N(approx(delta[static_cast<std::size_t>(j)]) > 0 ? 1.0 : -1.0);
                     if (approx(v) >= 1) v = N(1.0), next_free[i] = false;
@@ -376,7 +388,7 @@ void refine(const BoxOf<N>& box, const CylOf<N>& k, std::array<N, 3>& mu, std::a
                     last = candidate < 2 && alpha == 1 && halving == 0 &&
                            std::max(std::abs(approx(delta[0])), std::abs(approx(delta[1]))) <= last_step;
                 } else {
-                    for (N& d : delta) d = value(d * N(0.5));
+                    for (H& d : delta) d = in_h(d * H(0.5));
                 }
             }
         }
@@ -639,15 +651,20 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
     // distance is at the margin, most likely exactly (a contact at exactly the margin, which only the
     // exact stages decide), and the steps below would cost several times the bounds so far for nothing.
     if (decide_at > 0 && refined::width(out) <= 0x1p-80 * decide_at) return out;
-    const std::array<D, 3> before = mu;
     constexpr int dd_steps = 4;
-    refine(box, k, mu, free, std::min(newton_steps, dd_steps));
-    auto moved = [&] {
+    auto moved = [&](const std::array<D, 3>& before) {
         for (std::size_t i = 0; i < 3; ++i)
             if (mu[i].high() != before[i].high() || mu[i].low() != before[i].low()) return true;
         return false;
     };
-    if (moved() && bounds_at(mu)) return out;
+    // The steps' Hessian in double first (a few times cheaper), then in double-double where that
+    // leaves the bounds open (a nearly flat valley).
+    std::array<D, 3> before = mu;
+    refine<D, double>(box, k, mu, free, std::min(newton_steps, dd_steps));
+    if (moved(before) && bounds_at(mu)) return out;
+    before = mu;
+    refine<D, D>(box, k, mu, free, std::min(newton_steps, dd_steps));
+    if (moved(before) && bounds_at(mu)) return out;
     // A second box point where the bounds still differ in double: the foot of the cylinder's point
     // extreme along the best direction (where a face lies nearly parallel to a cap, Newton's model
     // sees no curvature, and that rim point's foot is the nearest box point).
