@@ -526,6 +526,40 @@ inline void kinks(const refined::Box& box, const refined::Cyl& k, const std::arr
     }
 }
 
+// Edges against the side, where Newton's method stops short: along a face within about 2^-40 of
+// parallel to the axis the distance's valley is so flat that the refinement's point stays inside the
+// face, while the nearest point is on one of its edges. Each edge's point nearest the axis line (from
+// the lines' closest pair in double, clamped to the edge) is a candidate for the upper bound, and each
+// edge direction crossed with the axis one for the lower bound.
+inline void edges_against_axis(const refined::Box& box, const refined::Cyl& k, RefinedBounds& out) {
+    using namespace refined;
+    const BoxOf<double> b = rounded(box);
+    const CylOf<double> kd = rounded(k);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const std::size_t j = (i + 1) % 3, l = (i + 2) % 3;
+        const Vec3<double>& E = b.half[i];
+        const double A = dot(E, E), B = dot(E, kd.u), den = A - B * B;
+        if (!(den > 0)) continue;  // a flat box, or an edge along the axis
+        for (const double sj : {-1.0, 1.0})
+            for (const double sl : {-1.0, 1.0}) {
+                const Vec3<double> w = b.center + sj * b.half[j] + sl * b.half[l] - kd.C;
+                const double s = (B * dot(kd.u, w) - dot(E, w)) / den;  // minimises |w + s·E − t·u|
+                if (s != s) continue;
+                std::array<D, 3> mu;
+                mu[i] = D(std::clamp(s, -1.0, 1.0)), mu[j] = D(sj), mu[l] = D(sl);
+                const DV X = point(box, mu);
+                const AtPoint up = at_point(k, X);
+                if (upper_end_below(up.distance, out.upper)) out.upper = up.distance, out.witness = value(X), out.toward = up.toward;
+            }
+        const DV n = value(cross(box.half[i], k.u));
+        for (const DV& nn : {n, value(-n)}) {  // from the box towards the cylinder: either sign
+            if (!(approx(dot(nn, nn)) > 0)) continue;
+            const D g = gap(box, k, nn);
+            if (lower_end_above(g, out.lower)) out.lower = g;
+        }
+    }
+}
+
 namespace refined {
 // The doubles the enclosures prove: the least double certainly ≥ the upper bound's value, the greatest
 // certainly ≤ the lower bound's (compare() decides against a double to about 2⁻¹⁰⁰).
@@ -682,6 +716,8 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
     if (out.upper.hi() - out.lower.lo() > 0x1p-80 * out.upper.hi())
         for (const double x : {-1.0, 1.0})
             for (const double y : {-1.0, 1.0}) kinks(box, k, {D(x), D(y), D(x * y)}, out);
+    if (enough()) return out;
+    if (out.upper.hi() - out.lower.lo() > 0x1p-80 * out.upper.hi()) edges_against_axis(box, k, out);
     return out;
 }
 
