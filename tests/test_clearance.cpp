@@ -206,7 +206,7 @@ TEST(Clearance, ShoulderDecidesACornerInTheRimRegion) {
     const AlignedBox<double> box{{1.6, -1, 1.6}, {3, 1, 3}};
     const detail::clearance::Grown g = detail::clearance::grown(kUnit, 1.0);
     const auto verdicts = detail::clearance::stage0_verdicts<false>(box, g).cylinders;
-    EXPECT_EQ(verdicts[1], true);   // outer: a hit, which decides nothing
+    EXPECT_EQ(verdicts[1], std::nullopt);  // outer: its misses alone, and none holds (a hit decides nothing)
     EXPECT_EQ(verdicts[3 + 1], true);  // the 45° shoulder: a hit
     detail::clearance::Pair<AlignedBox<double>> q(box, kUnit, 1.0);
     EXPECT_EQ(detail::clearance::shoulders(q), true);
