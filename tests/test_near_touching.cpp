@@ -5,7 +5,8 @@
 //    tiny, huge; double-doubles with a low part; operands that already carry an error) keeps the exact
 //    result within [lo(), hi()] (GMP rationals, Q(√d) for sqrt); long random chains too; exact sums and
 //    products of doubles stay exact; overflow and NaN are undecided, never wrong; comparisons decide
-//    differences far below double's ulp.
+//    differences far below double's ulp. TwoProd is exact by each of its routes (Dekker's product, the
+//    FMA chosen at run time).
 //  * The default query equals the oracle on the exactly touching shapes and their one-ulp neighbours,
 //    on the adversarial near-touching mix and on one-ulp boundary pairs (of the mixed and of the
 //    uniform profile), in all four rounding modes
@@ -167,6 +168,28 @@ TEST(DoubleDouble, ExactStaysExact) {
     EXPECT_FALSE(z < DD(0.0));
     EXPECT_TRUE(z <= DD(0.0));
     EXPECT_TRUE(scope.certain());
+}
+
+// TwoProd's error term by every route the build has: Dekker's product always, the processor's FMA where
+// the build chooses it at run time (x86-64 without -mfma) or compile time. p + e = a·b exactly, on
+// operands of random significands whose products neither overflow nor underflow.
+TEST(DoubleDouble, TwoProdIsExactByEveryRoute) {
+    std::mt19937_64 rng(7103);
+    std::uniform_real_distribution<double> significand(1.0, 2.0);
+    auto draw = [&] { return std::ldexp(significand(rng), static_cast<int>(rng() % 800) - 400) * (rng() % 2 ? 1 : -1); };
+    for (int n = 0; n < 50000; ++n) {
+        const double a = draw(), b = draw();
+        const Rational exact = q(a) * q(b);
+        double p, e;
+        detail::dd::two_prod(a, b, p, e);
+        ASSERT_EQ(q(p) + q(e), exact) << "two_prod(" << hex(a) << ", " << hex(b) << ")";
+        ASSERT_EQ(q(p) + q(detail::dd::dekker_error(a, b, p)), exact) << "dekker_error(" << hex(a) << ", " << hex(b) << ")";
+#if BOXCYL_DD_RUNTIME_FMA
+        if (detail::dd::has_fma) {
+            ASSERT_EQ(q(p) + q(detail::dd::fma_minus(a, b, p)), exact) << "fma_minus(" << hex(a) << ", " << hex(b) << ")";
+        }
+#endif
+    }
 }
 
 TEST(DoubleDouble, DecidesFarBelowAnUlp) {

@@ -16,8 +16,10 @@
 //    basic building blocks of double-word arithmetic", ACM TOMS 44(2), 2017). Each result carries
 //    rel·|hi| with rel = 2^-100 (≥ 10× those bounds, so |hi + lo| vs |hi| does not matter), plus the
 //    propagated input errors. TwoProd uses a hardware FMA where the target has one (then the compiler
-//    may contract, which the algorithms are written to survive: no plain product feeds a plain sum),
-//    and Dekker's exact product otherwise (x86 without FMA: nothing can be contracted there).
+//    may contract, which the algorithms are written to survive: no plain product feeds a plain sum);
+//    an x86-64 build for targets without one uses the processor's FMA where it has one, chosen at run
+//    time (one instruction, in inline assembly: the compiler contracts nothing there), and Dekker's
+//    exact product otherwise. Both give the same exact error term.
 //  * Underflow: TwoSum and Fast2Sum stay exact (a subnormal sum is exact); a product or an FMA whose
 //    result or error term underflows loses at most 2^-1075 per rounding: `tiny` = 2^-1066 covers the
 //    (at most eight) roundings of one multiplication, and they are never divided afterwards.
@@ -54,6 +56,15 @@
 #else
 #define BOXCYL_DD_USE_FMA 0
 #endif
+// An x86-64 build that may not assume FMA (the default: no -march) still runs on processors that have
+// it, nearly all of them: TwoProd's error term is then one FMA instruction, chosen at run time, in
+// place of Dekker's seventeen operations (a third of a double-double product's cost). BOXCYL_DD_DEKKER
+// keeps Dekker's product everywhere (the tests build it so, for processors without FMA).
+#if !BOXCYL_DD_USE_FMA && defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(BOXCYL_DD_DEKKER)
+#define BOXCYL_DD_RUNTIME_FMA 1
+#else
+#define BOXCYL_DD_RUNTIME_FMA 0
+#endif
 
 namespace boxcyl {
 
@@ -70,17 +81,41 @@ BOXCYL_FORCE_INLINE inline void fast_two_sum(double a, double b, double& s, doub
     s = a + b;
     t = b - (s - a);
 }
+#if BOXCYL_DD_RUNTIME_FMA
+// Whether the processor runs FMA3 instructions (GCC's and Clang's __builtin_cpu_supports count it only
+// where the operating system saves the AVX state they need). Read before its initialisation (from
+// another static initialiser) it is false: Dekker's product, which is exact as well.
+inline bool detect_fma() {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("fma") != 0;
+}
+inline const bool has_fma = detect_fma();
+// a·b − p with one rounding (VFMSUB231SD: acc ← a·b − acc), for a build that may not emit it itself.
+BOXCYL_FORCE_INLINE inline double fma_minus(double a, double b, double p) {
+    double acc = p;
+    asm("vfmsub231sd %2, %1, %0" : "+x"(acc) : "x"(a), "x"(b));
+    return acc;
+}
+#endif
+
+// a·b − p exactly for p = fl(a·b) (round to nearest, no overflow, no underflow of the result): Dekker's
+// product, from each operand split into halves of 26 bits.
+BOXCYL_FORCE_INLINE inline double dekker_error(double a, double b, double p) {
+    constexpr double split = 134217729.0;  // 2^27 + 1
+    const double ca = split * a, cb = split * b;
+    const double ah = ca - (ca - a), al = a - ah;
+    const double bh = cb - (cb - b), bl = b - bh;
+    return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+}
 // p + e = a·b exactly (round to nearest, no overflow, no underflow of e).
 BOXCYL_FORCE_INLINE inline void two_prod(double a, double b, double& p, double& e) {
     p = a * b;
 #if BOXCYL_DD_USE_FMA
     e = std::fma(a, b, -p);
+#elif BOXCYL_DD_RUNTIME_FMA
+    e = has_fma ? fma_minus(a, b, p) : dekker_error(a, b, p);
 #else
-    constexpr double split = 134217729.0;  // 2^27 + 1
-    const double ca = split * a, cb = split * b;
-    const double ah = ca - (ca - a), al = a - ah;
-    const double bh = cb - (cb - b), bl = b - bh;
-    e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+    e = dekker_error(a, b, p);
 #endif
 }
 // x·y + z with one rounding where the target has an FMA, else two (the bound allows either).
