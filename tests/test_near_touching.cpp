@@ -7,6 +7,7 @@
 //    products of doubles stay exact; overflow and NaN are undecided, never wrong; comparisons decide
 //    differences far below double's ulp. TwoProd is exact by each of its routes (Dekker's product, the
 //    FMA chosen at run time).
+//  * DoubleDoubleValue (number/double_double_value.hpp): DoubleDouble's values without the bound.
 //  * The default query equals the oracle on the exactly touching shapes and their one-ulp neighbours,
 //    on the adversarial near-touching mix and on one-ulp boundary pairs (of the mixed and of the
 //    uniform profile), in all four rounding modes
@@ -32,6 +33,7 @@
 
 #include "boxcyl/filtered.hpp"
 #include "boxcyl/number/double_double.hpp"
+#include "boxcyl/number/double_double_value.hpp"
 #include "support/cases.hpp"
 #include "support/enclosure.hpp"
 #include "support/fp.hpp"
@@ -190,6 +192,50 @@ TEST(DoubleDouble, TwoProdIsExactByEveryRoute) {
         }
 #endif
     }
+}
+
+// DoubleDoubleValue, the same arithmetic without the bound: +, − and × give DoubleDouble's values
+// exactly; ÷ and √ values within 2^-100 of the exact result, relatively (one correction of the
+// double's), wherever the result lies well inside the normal range.
+TEST(DoubleDoubleValue, IsDoubleDoubleWithoutTheBound) {
+    ASSERT_TRUE(detail::round_to_nearest());
+    std::mt19937_64 rng(7104);
+    using W = DoubleDoubleValue;
+    auto same = [](const W& w, const DD& d) { return w.high() == d.high() && w.low() == d.low(); };
+    auto rational = [](const W& w) -> Rational { return q(w.high()) + q(w.low()); };  // not an expression template
+    auto within = [](const Rational& x, const Rational& exact, double rel) {
+        const Rational magnitude = exact < Rational(0) ? Rational(Rational(0) - exact) : exact;
+        const Rational d = x - exact, bound = q(rel) * magnitude;
+        return d <= bound && Rational(0) - d <= bound;
+    };
+    auto normal = [](double x) { return std::fabs(x) >= 0x1p-900 && std::fabs(x) <= 0x1p900; };
+    long quotients = 0, roots = 0;
+    for (int n = 0; n < 20000; ++n) {
+        const DD da = operand(rng), db = operand(rng);
+        const DD a(da.high(), da.low(), 0.0), b(db.high(), db.low(), 0.0);
+        const W wa(a), wb(b);
+        const std::string ops = show(a) + ", " + show(b);
+        if (finite(a + b)) {
+            EXPECT_TRUE(same(wa + wb, a + b)) << "sum of " << ops;
+        }
+        if (finite(a - b)) {
+            EXPECT_TRUE(same(wa - wb, a - b)) << "difference of " << ops;
+        }
+        if (finite(a * b)) {
+            EXPECT_TRUE(same(wa * wb, a * b)) << "product of " << ops;
+        }
+        if (normal(a.high()) && normal(b.high()) && normal(a.high() / b.high())) {
+            ++quotients;
+            EXPECT_TRUE(within(rational(wa / wb), value(a) / value(b), 0x1p-100)) << "quotient of " << ops;
+        }
+        if (a.high() > 0 && normal(a.high())) {
+            ++roots;
+            const Rational s = rational(sqrt(wa));  // |s − √a| ≤ 2^-100·√a ⇐ |s² − a| ≤ 2^-99·a, about
+            EXPECT_TRUE(within(s * s, value(a), 0x1p-98)) << "square root of " << show(a);
+        }
+    }
+    EXPECT_GT(quotients, 1000);
+    EXPECT_GT(roots, 1000);
 }
 
 TEST(DoubleDouble, DecidesFarBelowAnUlp) {

@@ -40,6 +40,7 @@
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
 #include "boxcyl/number/double_double.hpp"
+#include "boxcyl/number/double_double_value.hpp"
 #include "boxcyl/number/traits.hpp"  // abs_value
 
 namespace boxcyl::filtered::separation {
@@ -48,6 +49,9 @@ namespace refined {
 
 using D = DoubleDouble;
 using DV = Vec3<DoubleDouble>;
+// Values without bounds (W), for the Newton steps: no proof is needed there.
+using W = DoubleDoubleValue;
+using WV = Vec3<DoubleDoubleValue>;
 
 inline DV lift(const Vec3<double>& v) { return {D(v[0]), D(v[1]), D(v[2])}; }
 // The value alone, its error bound dropped: for the search, whose results need no proof.
@@ -95,7 +99,18 @@ struct CylOf {
 };
 using Cyl = CylOf<D>;
 
-// Their values rounded to double, for the search's first steps.
+// Their values rounded to double, for the search's first steps; as values without bounds, for the later
+// ones.
+inline const W& value(const W& x) { return x; }
+inline const WV& value(const WV& v) { return v; }
+inline double approx(const W& x) { return x.high() + x.low(); }
+inline Vec3<double> approx(const WV& v) { return {approx(v[0]), approx(v[1]), approx(v[2])}; }
+inline W unbounded(const D& x) { return W(x); }
+inline WV unbounded(const DV& v) { return {W(v[0]), W(v[1]), W(v[2])}; }
+inline BoxOf<W> unbounded(const Box& b) {
+    return {unbounded(b.center), {unbounded(b.half[0]), unbounded(b.half[1]), unbounded(b.half[2])}};
+}
+inline CylOf<W> unbounded(const Cyl& k) { return {unbounded(k.C), unbounded(k.u), W(k.r), W(k.half_h)}; }
 inline double value(double x) { return x; }
 inline Vec3<double> value(const Vec3<double>& v) { return v; }
 inline double approx(double x) { return x; }
@@ -169,13 +184,13 @@ Vec3<N> point(const BoxOf<N>& box, const std::array<N, 3>& mu) {
 // g(X) = dist(X, cylinder)², approximately (the search's measure of progress), from double-double
 // values: ρ − r cancels where the distance is far below the coordinates (near touching), and in double
 // it would be noise there.
-inline double squared_distance(const Cyl& k, const DV& X) {
-    const DV Z = value(X - k.C);
-    const D t = value(dot(Z, k.u));
-    const DV Zxu = value(cross(Z, k.u));
-    const D pp = value(dot(Zxu, Zxu));
-    const D rho = approx(pp) > 0 ? value(sqrt(pp)) : D(0.0);
-    const double dr = std::max(0.0, approx(rho - k.r)), da = std::max(0.0, approx(enclosure_abs(t) - k.half_h));
+inline double squared_distance(const CylOf<W>& k, const WV& X) {
+    const WV Z = X - k.C;
+    const W t = dot(Z, k.u);
+    const WV Zxu = cross(Z, k.u);
+    const W pp = dot(Zxu, Zxu);
+    const W rho = approx(pp) > 0 ? sqrt(pp) : W(0.0);
+    const double dr = std::max(0.0, approx(rho - k.r)), da = std::max(0.0, approx(abs_value(t) - k.half_h));
     return dr * dr + da * da;
 }
 // The same in double, for the first steps (noise where the distance is far below the coordinates: the
@@ -652,8 +667,12 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
         if (big >= 0x1p-900 && big <= 0x1p900) return up.toward;
         return value(nearest_on_cylinder(k, X) - X);
     };
+    // The upper bound alone decides dist ≤ decide_at where it holds: the gap is computed only where it
+    // does not (half of the pairs at their margin are within it).
     auto bounds_at = [&](const std::array<D, 3>& m) {
-        lower(upper_at(m));
+        const DV n = upper_at(m);
+        if (enough()) return true;
+        lower(n);
         return enough();
     };
     // Newton's method in double first, where its steps are cheap and converge to double's resolution:
@@ -667,6 +686,7 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
     refine(box_d, k_d, mu_double, free, newton_steps);
     mu = {D(mu_double[0]), D(mu_double[1]), D(mu_double[2])};
     const DV toward = upper_at(mu);
+    if (enough()) return out;
     // Two directions for the lower bound: the refined pair's, and the double search's best (a face
     // normal, the axis, an edge crossed with the axis: exact for face, cap and side contacts, where the
     // refined direction is only nearly so). Each gap costs as much as the upper bound, so the one whose
@@ -693,12 +713,18 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
     };
     // The steps' Hessian in double first (a few times cheaper), then in double-double where that
     // leaves the bounds open (a nearly flat valley).
-    std::array<D, 3> before = mu;
-    refine<D, double>(box, k, mu, free, std::min(newton_steps, dd_steps));
-    if (moved(before) && bounds_at(mu)) return out;
-    before = mu;
-    refine<D, D>(box, k, mu, free, std::min(newton_steps, dd_steps));
-    if (moved(before) && bounds_at(mu)) return out;
+    // The steps on values without bounds (the bounds at their point are proved from it as given).
+    const BoxOf<W> box_v = unbounded(box);
+    const CylOf<W> k_v = unbounded(k);
+    std::array<W, 3> mu_v{unbounded(mu[0]), unbounded(mu[1]), unbounded(mu[2])};
+    auto steps = [&](auto hessian_in) {
+        const std::array<D, 3> before = mu;
+        refine<W, decltype(hessian_in)>(box_v, k_v, mu_v, free, std::min(newton_steps, dd_steps));
+        mu = {mu_v[0].exact(), mu_v[1].exact(), mu_v[2].exact()};
+        return moved(before);
+    };
+    if (steps(0.0) && bounds_at(mu)) return out;
+    if (steps(W(0.0)) && bounds_at(mu)) return out;
     // A second box point where the bounds still differ in double: the foot of the cylinder's point
     // extreme along the best direction (where a face lies nearly parallel to a cap, Newton's model
     // sees no curvature, and that rim point's foot is the nearest box point).
