@@ -365,7 +365,7 @@ TEST(Clearance, ProbesStageZeroAgreesWithTheExactProbes) {
                             if (!verdicts[k]) continue;
                             ++decided;
                             const Cylinder<double> probe =
-                                k < probes.size() ? probes[k].cylinder : detail::clearance::shoulder(g, k - probes.size());
+                                k < probes.size() ? *probes[k].cylinder : detail::clearance::shoulder(g, k - probes.size());
                             EXPECT_EQ(*verdicts[k], intersects(box, probe))
                                 << describe(c) << "\nmargin " << hex(m) << ", stage 0 cylinder " << k << ", rounding "
                                 << mode_name(mode);

@@ -212,10 +212,11 @@ inline constexpr std::array<std::size_t, 3> kBatchProbeOrder{1, 0, 2};
 // sizes overflow is left out.
 inline Clearance clearance(const Cylinder<double>& cyl, double m) {
     Clearance q{cyl, m, {}, {}, 0, &scalar_within<AlignedBox<double>>, &scalar_within<OrientedBox<double>>};
-    const auto probes = boxcyl::detail::clearance::probes(boxcyl::detail::clearance::grown(cyl, m));
+    const boxcyl::detail::clearance::Grown grown = boxcyl::detail::clearance::grown(cyl, m);
+    const auto probes = boxcyl::detail::clearance::probes(grown);
     for (const std::size_t k : kBatchProbeOrder)
         if (const boxcyl::detail::clearance::Probe& p = probes[k]; p.valid) {
-            q.probe[q.probes] = p.cylinder;
+            q.probe[q.probes] = *p.cylinder;
             q.decides_when[q.probes++] = p.decides_when;
         }
     return q;
