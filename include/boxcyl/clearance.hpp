@@ -288,6 +288,77 @@ struct Stage0Verdicts {
     std::array<std::optional<bool>, kStage0Cylinders> cylinders{};
     std::optional<Cylinder<double>> rim_shoulder;
 };
+
+// Stage 0 of the three probes interleaved, cheapest certificate first, where the probes' own order
+// would run one probe's whole test before the next's: the outer probe's misses along the face normals
+// and the axis; the fat and tall probes' hits at the cylinder centre and the first witness; the outer
+// probe's misses along d × E_i; then for the fat and the tall probe, its misses and its remaining hits.
+// A pair farther than the margin then costs one miss test, not the fat probe's tests first; a pair
+// within it one or two hit tests. Each test is stage 0's own for its probe's sizes, so each answer is
+// that probe's (sound in every rounding mode), and the verdicts left are those of stage 0 on each probe
+// (semi_static::decide finds a miss or a hit, never both). Returns the verdicts' answer: false (outer
+// misses), true (fat or tall holds a box point), or nullopt.
+template <class Box>
+std::optional<bool> probes_interleaved(filtered::Prepared<Box>& prep, const Grown& g,
+                                       std::array<std::optional<bool>, kStage0Cylinders>& verdicts) {
+    namespace ss = filtered::semi_static;
+    ss::Problem& p = prep.p;
+    const ss::Kappas& k = ss::kappas_of<Box>;
+    auto witness = [&](int w) {
+        if constexpr (std::is_same_v<Box, AlignedBox<double>>)
+            return ss::witness_offset(p, w, prep.box, prep.cyl);
+        else
+            return ss::witness_offset(p, w);
+    };
+    auto sizes = [&](const Cylinder<double>& c) { ss::set_sizes_of<Box>(p, c.radius, c.height); };
+    // The hit tests of semi_static::decide, in two parts: the cylinder centre in the box and the first
+    // witness; the other witnesses and the cylinder points in the box.
+    auto first_hits = [&](const Cylinder<double>& c) {
+        sizes(c);
+        if (!p.has_inner) return false;
+        if (p.exact_inside) return true;
+        const double inside = ss::bound1(p, k.inside);
+        if (ss::inside_margin(p.c[0], p.e[0]) > inside && ss::inside_margin(p.c[1], p.e[1]) > inside &&
+            ss::inside_margin(p.c[2], p.e[2]) > inside)
+            return true;
+        return ss::box_point_inside(p, k, witness(0));
+    };
+    auto other_hits = [&](const Cylinder<double>& c) {
+        sizes(c);
+        if (p.has_inner)
+            for (int w = 1; w < 3; ++w)
+                if (ss::box_point_inside(p, k, witness(w))) return true;
+        if (const std::optional<double> t = ss::axial_parameter(p)) {
+            const Vec3<double> zero{0, 0, 0};
+            if (ss::cylinder_point_inside(p, k, *t, zero, false)) return true;
+            if (const std::optional<double> mid = ss::chord_middle(p); mid && ss::cylinder_point_inside(p, k, *mid, zero, false))
+                return true;
+            if (ss::cylinder_point_inside(p, k, *t, ss::towards_centre(p, *t))) return true;
+        }
+        return false;
+    };
+    constexpr std::size_t fat = 0, outer = 1, tall = 2;
+    auto answer = [&](std::size_t probe, bool v) {
+        verdicts[probe] = v;
+        return std::optional<bool>(v);
+    };
+    sizes(g.outer);
+    if (ss::faces_or_axis_separate(p, k)) return answer(outer, false);
+    if (first_hits(g.fat)) return answer(fat, true);
+    if (first_hits(g.tall)) return answer(tall, true);
+    sizes(g.outer);
+    if (ss::edges_separate(p, k)) return answer(outer, false);
+    // The fat and tall probes' misses before their remaining hit tests (divisions and a square root),
+    // as in semi_static::decide: a proved miss skips them (most pairs at the margin miss one of them).
+    for (const std::size_t probe : {fat, tall}) {
+        const Cylinder<double>& c = probe == fat ? g.fat : g.tall;
+        sizes(c);
+        verdicts[probe] = ss::decide_miss<Box>(p);
+        if (!verdicts[probe] && other_hits(c)) return answer(probe, true);
+    }
+    return std::nullopt;
+}
+
 template <bool all, class Box>
 Stage0Verdicts stage0_verdicts(const Box& box, const Grown& g, bool shoulders = true) {
     Stage0Verdicts verdicts;
@@ -297,12 +368,14 @@ Stage0Verdicts stage0_verdicts(const Box& box, const Grown& g, bool shoulders = 
         if (!ps[1].valid) return verdicts;
         filtered::Prepared<Box> prep(box, *ps[1].cylinder);
         if (!prep.in_range || prep.rescaled()) return verdicts;
-        for (std::size_t k = 0; k < ps.size(); ++k) {
-            const Cylinder<double> c{prep.cyl.center, prep.cyl.axis, ps[k].cylinder->radius, ps[k].cylinder->height};
-            filtered::semi_static::set_sizes_of<Box>(prep.p, c.radius, c.height);
-            verdicts.cylinders[k] = !all && !ps[k].decides_when ? filtered::semi_static::decide_miss<Box>(prep.p)
-                                                                : filtered::semi_static::decide(prep.p, prep.box, c);
-            if (!all && verdicts.cylinders[k] == ps[k].decides_when) return verdicts;
+        if constexpr (!all) {
+            if (probes_interleaved(prep, g, verdicts.cylinders)) return verdicts;
+        } else {
+            for (std::size_t k = 0; k < ps.size(); ++k) {
+                const Cylinder<double> c{prep.cyl.center, prep.cyl.axis, ps[k].cylinder->radius, ps[k].cylinder->height};
+                filtered::semi_static::set_sizes_of<Box>(prep.p, c.radius, c.height);
+                verdicts.cylinders[k] = filtered::semi_static::decide(prep.p, prep.box, c);
+            }
         }
         if (shoulders && shoulder_verdicts<all>(prep, g, verdicts.cylinders) && !all) return verdicts;
         verdicts.rim_shoulder = rim_witness_shoulder(prep, g);
