@@ -280,10 +280,11 @@ std::optional<Cylinder<double>> rim_witness_shoulder(filtered::Prepared<Box>& pr
 // with each cylinder's sizes set in turn (the reduction to the box's frame, most of stage 0's cost, is
 // shared). Each cylinder's verdict, probes() then, with `shoulders`, the fixed shoulders (nullopt:
 // undecided, or not asked: the outer one left out, a query that stage 0 takes only rescaled, a
-// parallelepiped), then the rim witnesses' shoulder when one holds a witness (a hit); unless `all`, it
-// stops at the first answer, and the outer probe, whose hit decides nothing, gets stage 0's misses alone
-// (its hit tests would only cost). The query asks the fixed shoulders later (shoulders()): the quick bounds
-// answer most pairs they would, and the others for less than their three tests cost.
+// parallelepiped), then the rim witnesses' shoulder when one holds a witness (a hit); unless `all`, the
+// probes' tests run interleaved (probes_interleaved, below) and stop at the first answer, and the outer
+// probe, whose hit decides nothing, gets stage 0's misses alone (its hit tests would only cost). The
+// query asks the fixed shoulders later (shoulders()): the quick bounds answer most pairs they would, and
+// the others for less than their three tests cost.
 struct Stage0Verdicts {
     std::array<std::optional<bool>, kStage0Cylinders> cylinders{};
     std::optional<Cylinder<double>> rim_shoulder;
