@@ -10,6 +10,7 @@
 // bounding-box range checks); cell_queries = those on single cells; queries/cell = queries ÷ cells;
 // corner_inside = queries settled by a box corner inside the cylinder (no general query needed);
 // blocks_inside = blocks of several cells reported whole (inside the cylinder); range_widened must be 0.
+// margin_2.5_cells: for_each_cell_within, every cell within 2.5 cells of the same cylinder.
 #include <benchmark/benchmark.h>
 
 #include <cstddef>  // std::size_t
@@ -32,12 +33,17 @@ const Cylinder<double> kThinAxisAligned{{500.5, 500.5, 500}, {0, 0, 1}, 2, 1000}
 // For scale: a fat one (radius 20 cells, 200 long), whose inside is most of its cells.
 const Cylinder<double> kFatOblique{{500.3, 499.7, 500.1}, {0.8, 0.5, 0.33}, 20, 200};
 
-void grid_query(benchmark::State& state, const Cylinder<double>& c) {
+// margin > 0: the clearance form, for_each_cell_within (every cell within `margin` of the cylinder).
+void grid_query(benchmark::State& state, const Cylinder<double>& c, double margin = 0) {
     GridStats last;
     for (auto _ : state) {
         GridStats s;
         std::int64_t found = 0;
-        for_each_cell(kGrid, c, [&](std::int64_t, std::int64_t, std::int64_t) { ++found; }, &s);
+        auto count = [&](std::int64_t, std::int64_t, std::int64_t) { ++found; };
+        if (margin > 0)
+            for_each_cell_within(kGrid, c, margin, count, &s);
+        else
+            for_each_cell(kGrid, c, count, &s);
         benchmark::DoNotOptimize(found);
         last = s;
     }
@@ -90,6 +96,9 @@ BENCHMARK_CAPTURE(grid_query, thin_diagonal, kThinDiagonal)->Unit(benchmark::kMi
 BENCHMARK_CAPTURE(grid_query, thin_oblique, kThinOblique)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(grid_query, thin_axis_aligned, kThinAxisAligned)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(grid_query, fat_oblique, kFatOblique)->Unit(benchmark::kMillisecond);
+// The clearance form on the same cylinders, at a margin of 2.5 cells (beside the runs above).
+BENCHMARK_CAPTURE(grid_query, thin_oblique/margin_2.5_cells, kThinOblique, 2.5)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(grid_query, fat_oblique/margin_2.5_cells, kFatOblique, 2.5)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(grid_cells_sorted, thin_diagonal, kThinDiagonal)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(cell_query, near/thin_diagonal, kThinDiagonal, true)->Unit(benchmark::kNanosecond);
 BENCHMARK_CAPTURE(cell_query, near/thin_oblique, kThinOblique, true)->Unit(benchmark::kNanosecond);

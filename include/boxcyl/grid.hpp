@@ -150,10 +150,23 @@ inline bool inside(const Vec3<double>& p, const Cylinder<double>& c) {
     return inside_in<Rational>(p, c);
 }
 
+// What a walk reports: the cells that meet `cylinder` (margin 0) or come within `margin` of it. The
+// walk descends on `bound`, a cylinder holding every point it reports (the cylinder itself, or the
+// clearance query's outer probe: a block that misses it has nothing to report), and reports a block
+// whole when its corners lie in `inside`, a cylinder held by what it reports (the cylinder itself, or
+// the fat probe, inside the rounded cylinder). Small blocks are answered by the batch API's form of the
+// same question.
+struct GridTarget {
+    const Cylinder<double>& cylinder;
+    double margin;
+    const Cylinder<double>& bound;
+    const Cylinder<double>& inside;
+};
+
 template <class F>
 class GridWalk {
 public:
-    GridWalk(const Grid& g, const Cylinder<double>& c, F& f, GridStats& s) : g_(g), c_(c), f_(f), s_(s) {}
+    GridWalk(const Grid& g, const GridTarget& t, F& f, GridStats& s) : g_(g), t_(t), c_(t.bound), f_(f), s_(s) {}
 
     void run() {
         for (std::size_t a = 0; a < 3; ++a)
@@ -218,16 +231,17 @@ private:
         return {(m & 1) ? b.max[0] : b.min[0], (m & 2) ? b.max[1] : b.min[1], (m & 4) ? b.max[2] : b.min[2]};
     }
 
-    // Whether the block lo ≤ index < hi lies inside the cylinder: its 8 corners do (both are convex).
+    // Whether the block lo ≤ index < hi lies inside the target's `inside` cylinder: its 8 corners do
+    // (both are convex).
     bool block_inside(const CellIndex& lo, const CellIndex& hi) const {
         const AlignedBox<double> b = block_box(g_, lo, hi);
         std::array<Vec3<double>, 8> corners;
         for (std::size_t m = 0; m < 8; ++m) {
             corners[m] = corner(b, m);
-            if (!likely_inside(corners[m], c_)) return false;
+            if (!likely_inside(corners[m], t_.inside)) return false;
         }
         for (const Vec3<double>& p : corners)
-            if (!inside(p, c_)) return false;
+            if (!inside(p, t_.inside)) return false;
         return true;
     }
 
@@ -245,7 +259,11 @@ private:
                 longest = len;
             }
         }
-        if (axis == 3) {  // a single cell, and it meets the cylinder
+        if (axis == 3) {  // a single cell, and it meets `bound`: for a margin, asked
+            if (t_.margin > 0) {
+                ++s_.queries, ++s_.cell_queries;
+                if (!within_distance_unchecked(block_box(g_, lo, hi), t_.cylinder, t_.margin)) return;
+            }
             ++s_.cells;
             f_(lo[0], lo[1], lo[2]);
             return;
@@ -314,9 +332,10 @@ private:
                     col[3][m] = bound[0][x + 1], col[4][m] = bound[1][y + 1], col[5][m] = bound[2][z + 1];
                 }
         const std::span<std::uint64_t> mask(mask_.data(), batch::mask_words(cells));
-        const batch::Stats st = batch::intersects(
-            c_, batch::AlignedBoxes<double>{{col[0], cells}, {col[1], cells}, {col[2], cells}, {col[3], cells}, {col[4], cells}, {col[5], cells}},
-            mask, {1});
+        const batch::AlignedBoxes<double> boxes{{col[0], cells}, {col[1], cells}, {col[2], cells},
+                                                {col[3], cells}, {col[4], cells}, {col[5], cells}};
+        const batch::Stats st = t_.margin > 0 ? batch::within_distance(t_.cylinder, boxes, t_.margin, mask, {1})
+                                              : batch::intersects(t_.cylinder, boxes, mask, {1});
         s_.queries += static_cast<std::int64_t>(st.exact_lanes);
         s_.cell_queries += static_cast<std::int64_t>(st.exact_lanes);
         s_.batched_cells += n;
@@ -334,7 +353,8 @@ private:
     std::vector<double> column_;
     std::vector<std::uint64_t> mask_;
     const Grid& g_;
-    const Cylinder<double>& c_;
+    const GridTarget& t_;
+    const Cylinder<double>& c_;  // t_.bound: the cylinder of the exact block queries
     F& f_;
     GridStats& s_;
 };
@@ -351,7 +371,8 @@ void for_each_cell(const Grid& g, const Cylinder<double>& c, F&& f, GridStats* s
     assert(validate(g).ok() && "boxcyl::for_each_cell: invalid grid (see boxcyl::validate)");
     assert(validate(c).ok() && "boxcyl::for_each_cell: invalid cylinder (see boxcyl::validate)");
     GridStats local;
-    detail::GridWalk<std::remove_reference_t<F>> walk(g, c, f, stats ? *stats : local);
+    const detail::GridTarget target{c, 0, c, c};
+    detail::GridWalk<std::remove_reference_t<F>> walk(g, target, f, stats ? *stats : local);
     walk.run();
 }
 
@@ -370,28 +391,27 @@ template <class F>
 void cells_within_walk(const Grid& g, const Cylinder<double>& c, double margin, F& f, GridStats* stats) {
     if (!is_valid_margin(margin)) throw std::invalid_argument(validate_margin(margin).message());
     GridStats local;
-    auto walk = [&](const Cylinder<double>& cylinder, auto& visit) {
-        detail::GridWalk<std::remove_reference_t<decltype(visit)>> w(g, cylinder, visit, stats ? *stats : local);
+    auto walk = [&](const detail::GridTarget& target) {
+        detail::GridWalk<F> w(g, target, f, stats ? *stats : local);
         w.run();
     };
-    if (margin == 0) return walk(c, f);
-    auto ask = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
-        if (within_distance_unchecked(cell_box(g, {i, j, k}), c, margin)) f(i, j, k);
-    };
+    if (margin == 0) return walk({c, 0, c, c});
     const detail::clearance::Grown grown = detail::clearance::grown(c, margin);
-    if (grown.outer_valid) return walk(grown.outer, ask);
-    // Sizes beyond the double range: every cell is a candidate.
+    if (grown.outer_valid) return walk({c, margin, grown.outer, grown.fat});
+    // Sizes beyond the double range: every cell is asked.
     for (std::int64_t i = 0; i < g.counts[0]; ++i)
         for (std::int64_t j = 0; j < g.counts[1]; ++j)
-            for (std::int64_t k = 0; k < g.counts[2]; ++k) ask(i, j, k);
+            for (std::int64_t k = 0; k < g.counts[2]; ++k)
+                if (within_distance_unchecked(cell_box(g, {i, j, k}), c, margin)) f(i, j, k);
 }
 }  // namespace detail
 
 // Calls f(i, j, k) once for every cell of `g` within distance `margin` of the closed cylinder `c`:
 // exactly the cells for which within_distance(cell_box(g, cell), c, margin) holds (clearance.hpp).
-// The candidates are the cells of a cylinder that holds the rounded one (the grid query above, as
-// output-sensitive), each then asked; margin 0 is for_each_cell. Order as for_each_cell's; `stats`
-// counts the walk over those candidates (GridStats::cells: the candidates).
+// The walk of for_each_cell, on the clearance query's probes: it descends on the outer one (a block
+// that misses it has no cell within the margin), reports a block whole when its corners lie in the fat
+// one (inside the rounded cylinder), and answers small blocks through batch::within_distance; margin 0
+// is for_each_cell. Order as for_each_cell's.
 // Preconditions: validate(g).ok() and validate(c).ok(); a margin that is negative, NaN or infinite
 // throws std::invalid_argument.
 template <class F>
