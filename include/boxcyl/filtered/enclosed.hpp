@@ -15,7 +15,6 @@
 #include <optional>   // undecided
 #include <type_traits>  // std::is_same_v
 
-#include "boxcyl/algo/convex_hull.hpp"
 #include "boxcyl/algo/linear_inequalities.hpp"
 #include "boxcyl/filtered/clipped_candidates.hpp"
 #include "boxcyl/filtered/prepared.hpp"
@@ -580,47 +579,7 @@ std::optional<bool> inequalities(Prepared<Box>& q) {
         return inequalities<N>(q.box, q.cyl, f.k, scale);
 }
 
-// ---- The middle stage's other methods (round to nearest; double-double enclosures) ----
-
-// The convex-hull method on the exact parallelepiped, every length an enclosure: if no comparison was
-// undecided, the exact computation takes the same branches (the hull's sort included: an undecided
-// comparison answers by the order of the values, so the sort always sees a strict weak order).
-inline std::optional<bool> hull(const OrientedBox<double>& b, const Cylinder<double>& c, int k) {
-    using N = DoubleDouble;
-    algo::Parallelepiped<N> p;
-    UnitCylinder<N> u;
-    for (int i = 0; i < 3; ++i) {
-        p.center[i] = scaled<N>(b.center[i], k);
-        u.center[i] = scaled<N>(c.center[i], k);
-        const N e = scaled_nonneg<N>(b.extents[i], k);
-        for (int j = 0; j < 3; ++j) p.half_edges[i][j] = e * N(b.axes[i][j]);
-    }
-    u.radius = scaled_nonneg<N>(c.radius, k);
-    u.half_height = scaled_nonneg<N>(c.height, k - 1);
-    auto run = [&p](const UnitCylinder<N>& cyl) -> std::optional<bool> {
-        UncertaintyScope scope;
-        const bool answer = algo::convex_hull(p, cyl);
-        if (!scope.certain()) return std::nullopt;
-        return answer;
-    };
-    // Axis components below 2^-200 of the largest: zeroed, with the sizes spread by η (as decide_axis).
-    Vec3<double> a0;
-    if (tiny_components_zeroed(c.axis, a0, -200)) {
-        UnitCylinder<N> z = u;
-        z.direction = unit_direction<N>(a0);
-        bool thin = false;
-        if (spread_sizes_by_eta(z.radius, z.half_height, thin)) {
-            const std::optional<bool> r = run(z);
-            if (r && (!*r || !thin)) return r;
-        }
-    }
-    {
-        UncertaintyScope scope;
-        u.direction = unit_direction<N>(c.axis);
-        if (!scope.certain()) return std::nullopt;
-    }
-    return run(u);
-}
+// ---- The middle stage's other method (round to nearest; double-double enclosures) ----
 
 // The box's part of the clipped-candidates problem (filtered/clipped_candidates.hpp): G = K − C and the
 // half-edge vectors, for each box kind (every length times 2^k).
