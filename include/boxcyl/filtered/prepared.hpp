@@ -119,18 +119,46 @@ void for_each_position(Box& b, Cylinder<double>& c, int i, F&& f) {
 // integer multiples of 2^g (g: the least granularity of the axis' values), so x − t is, and it is a
 // double exactly when |x − t| < 2^(g+53): rounding is monotone and 2^(g+53) a double, so the computed
 // difference tells, in every rounding mode.
+// The common case first, in one pass without branches (the axes computed together): every difference
+// passes that test, with no position 0 to stay.
+inline bool moved_within_a_factor_2(AlignedBox<double>& b, Cylinder<double>& c) {
+    Vec3<double> hi, centre;
+    int ok = 1;
+    for (int i = 0; i < 3; ++i) {
+        const double t = b.min[i], at = std::fabs(t);
+        hi[i] = b.max[i] - t;
+        centre[i] = c.center[i] - t;
+        ok &= (std::fabs(hi[i]) < std::min(std::fabs(b.max[i]), at)) & (std::fabs(centre[i]) < std::min(std::fabs(c.center[i]), at));
+    }
+    if (!ok) return false;
+    b.min = {0, 0, 0}, b.max = hi, c.center = centre;
+    return true;
+}
+template <class Box>  // OrientedBox, Parallelepiped
+bool moved_within_a_factor_2(Box& b, Cylinder<double>& c) {
+    Vec3<double> centre;
+    int ok = 1;
+    for (int i = 0; i < 3; ++i) {
+        centre[i] = c.center[i] - b.center[i];
+        ok &= std::fabs(centre[i]) < std::min(std::fabs(c.center[i]), std::fabs(b.center[i]));
+    }
+    if (!ok) return false;
+    b.center = {0, 0, 0}, c.center = centre;
+    return true;
+}
 template <class Box>
 bool translated_exactly(Box& box, Cylinder<double>& cyl) {
+    if (moved_within_a_factor_2(box, cyl)) return true;
     std::array<double, 3> t{};
     for (int i = 0; i < 3; ++i) {
         bool first = true, sterbenz = true;
         for_each_position(box, cyl, i, [&](double& x) {
             if (first) t[i] = x, first = false;
-            // Sterbenz's lemma: x − t is exact when x lies between t/2 and 2t (positions close together
-            // far from the origin: nearly always). 2|x| and 2|t| are exact, or past the range where the
-            // comparison holds anyway, in every rounding mode.
-            const double ax = std::fabs(x), at = std::fabs(t[i]);
-            sterbenz &= (std::signbit(x) == std::signbit(t[i])) & (2 * ax >= at) & (ax <= 2 * at);
+            // Sterbenz's lemma: x − t is exact when x and t have one sign and lie within a factor 2 of
+            // each other (positions close together far from the origin: nearly always), which is when
+            // |x − t| < min(|x|, |t|). Computed, the test is sound in every rounding mode: rounding is
+            // monotone and ±min a double, so a computed |x − t| below min means an exact one below it.
+            sterbenz &= std::fabs(x - t[i]) < std::min(std::fabs(x), std::fabs(t[i]));
         });
         if (t[i] == 0 || sterbenz) continue;  // nothing to move, or exact
         int g = std::numeric_limits<int>::max();
@@ -235,14 +263,17 @@ public:
     // (told from the input as given, so that stage 0's problem is computed once); one beyond stage 0's
     // range of scales is scaled to about 1, exactly where that can be.
     BOXCYL_FORCE_INLINE Prepared(const Box& b, const Cylinder<double>& c)
-        : in_range(near_origin(b, c, p)),
-          scaled_(in_range ? std::nullopt : prepare(b, c, p, in_range, rescaled_)),
+        : in_range(near_origin(b, c, p, far_)),
+          scaled_(in_range ? std::nullopt : prepare(b, c, p, far_, in_range, rescaled_)),
           box(scaled_ ? scaled_->first : b),
           cyl(scaled_ ? scaled_->second : c) {}
     Prepared(const Prepared&) = delete;
     Prepared& operator=(const Prepared&) = delete;
 
     semi_static::Problem p;  // stage 0's problem; valid when in_range
+private:
+    bool far_ = false;       // the query as given looks far from the origin (looks_far; before in_range: set by it)
+public:
     bool in_range;           // within stage 0's range of scales
 
 private:
@@ -270,24 +301,26 @@ private:
 
     // Nearly every query: in stage 0's range and near the origin for its size, taken as given. Kept
     // inline (prepare() below is not), since it is most of stage 0's path.
-    BOXCYL_FORCE_INLINE static bool near_origin(const Box& b, const Cylinder<double>& c, semi_static::Problem& p) {
+    BOXCYL_FORCE_INLINE static bool near_origin(const Box& b, const Cylinder<double>& c, semi_static::Problem& p,
+                                                bool& far) {
         if constexpr (movable) {
-            if (looks_far(b, c)) return false;
+            far = looks_far(b, c);
+            if (far) return false;
         }
         return semi_static::problem(b, c, p) && !far_from_origin(p);
     }
 
     // Stage 0's problem for the query as the rows will see it (in_range: whether it has one), and that
-    // query when it is not the caller's: moved where it looks far from the origin, else as given, and
-    // then moved or rescaled where its problem says so.
+    // query when it is not the caller's: moved where it looks far from the origin (`far`, as
+    // near_origin found), else as given, and then moved or rescaled where its problem says so.
+    // One object returned on every path (no copy of it on the way out).
     static std::optional<std::pair<Box, Cylinder<double>>> prepare(const Box& b, const Cylinder<double>& c,
-                                                                   semi_static::Problem& p, bool& in_range,
+                                                                   semi_static::Problem& p, bool far, bool& in_range,
                                                                    bool& rescaled) {
-        bool far = false;
+        std::optional<std::pair<Box, Cylinder<double>>> s;
         if constexpr (movable) {
-            far = looks_far(b, c);
             if (far) {
-                std::optional<std::pair<Box, Cylinder<double>>> s(std::in_place, b, c);
+                s.emplace(b, c);
                 // Moved whenever the query as given is in range, even where the moved one is not (the
                 // later rows are better conditioned near the origin); out of range both ways, rescaled.
                 if (translated_exactly(s->first, s->second)) {
@@ -297,17 +330,21 @@ private:
                         return s;
                     }
                 }
+                s.reset();
             }
         }
         in_range = semi_static::problem(b, c, p);
-        if (in_range && (far || !far_from_origin(p))) return std::nullopt;  // (far: moving it failed above)
-        std::pair<Box, Cylinder<double>> s{b, c};
+        if (in_range && (far || !far_from_origin(p))) return s;  // as given (far: moving it failed above)
+        s.emplace(b, c);
         bool exact = false;
-        if (!in_range) exact = rescaled_exactly(s.first, s.second, largest_length(b, c));
-        else if constexpr (movable) exact = translated_exactly(s.first, s.second);
-        if (!exact) return std::nullopt;
+        if (!in_range) exact = rescaled_exactly(s->first, s->second, largest_length(b, c));
+        else if constexpr (movable) exact = translated_exactly(s->first, s->second);
+        if (!exact) {
+            s.reset();
+            return s;
+        }
         rescaled = !in_range;
-        in_range = semi_static::problem(s.first, s.second, p);
+        in_range = semi_static::problem(s->first, s->second, p);
         return s;
     }
     bool rescaled_ = false;  // (before scaled_: prepare() sets it)
