@@ -305,38 +305,16 @@ std::optional<bool> probes_interleaved(filtered::Prepared<Box>& prep, const Grow
     namespace ss = filtered::semi_static;
     ss::Problem& p = prep.p;
     const ss::Kappas& k = ss::kappas_of<Box>;
-    auto witness = [&](int w) {
-        if constexpr (std::is_same_v<Box, AlignedBox<double>>)
-            return ss::witness_offset(p, w, prep.box, prep.cyl);
-        else
-            return ss::witness_offset(p, w);
-    };
     auto sizes = [&](const Cylinder<double>& c) { ss::set_sizes_of<Box>(p, c.radius, c.height); };
-    // The hit tests of semi_static::decide, in two parts: the cylinder centre in the box and the first
-    // witness; the other witnesses and the cylinder points in the box.
+    // semi_static::decide's hit tests in its two parts, on a probe's sizes (the witnesses hang on the
+    // centre alone, which the probes share).
     auto first_hits = [&](const Cylinder<double>& c) {
         sizes(c);
-        if (!p.has_inner) return false;
-        if (p.exact_inside) return true;
-        const double inside = ss::bound1(p, k.inside);
-        if (ss::inside_margin(p.c[0], p.e[0]) > inside && ss::inside_margin(p.c[1], p.e[1]) > inside &&
-            ss::inside_margin(p.c[2], p.e[2]) > inside)
-            return true;
-        return ss::box_point_inside(p, k, witness(0));
+        return ss::first_hits(p, prep.box, prep.cyl);
     };
     auto other_hits = [&](const Cylinder<double>& c) {
         sizes(c);
-        if (p.has_inner)
-            for (int w = 1; w < 3; ++w)
-                if (ss::box_point_inside(p, k, witness(w))) return true;
-        if (const std::optional<double> t = ss::axial_parameter(p)) {
-            const Vec3<double> zero{0, 0, 0};
-            if (ss::cylinder_point_inside(p, k, *t, zero, false)) return true;
-            if (const std::optional<double> mid = ss::chord_middle(p); mid && ss::cylinder_point_inside(p, k, *mid, zero, false))
-                return true;
-            if (ss::cylinder_point_inside(p, k, *t, ss::towards_centre(p, *t))) return true;
-        }
-        return false;
+        return ss::other_hits(p, prep.box, prep.cyl);
     };
     constexpr std::size_t fat = 0, outer = 1, tall = 2;
     auto answer = [&](std::size_t probe, bool v) {

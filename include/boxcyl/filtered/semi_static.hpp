@@ -450,21 +450,22 @@ BOXCYL_FORCE_INLINE inline bool edges_separate(const Problem& p, const Kappas& k
     return false;
 }
 
+// The hit tests, in two parts: the cylinder centre in the box and the first witness box point; the
+// other witnesses and the cylinder points in the box. (The clearance query's stage 0 runs them
+// interleaved across its probe cylinders, clearance.hpp.)
 template <class Witness>
-BOXCYL_FORCE_INLINE inline std::optional<bool> decide(const Problem& p, const Kappas& k, Witness&& witness) {
+BOXCYL_FORCE_INLINE inline bool first_hits(const Problem& p, const Kappas& k, Witness&& witness) {
+    if (!p.has_inner) return false;
+    if (p.exact_inside) return true;
     const Vec3<double>& c = p.c;
     const Vec3<double>& e = p.e;
-    if (faces_or_axis_separate(p, k)) return false;
-    if (p.has_inner) {
-        if (p.exact_inside) return true;
-        const double inside = bound1(p, k.inside);
-        if (inside_margin(c[0], e[0]) > inside && inside_margin(c[1], e[1]) > inside && inside_margin(c[2], e[2]) > inside)
-            return true;
-        if (box_point_inside(p, k, witness(0))) return true;
-    }
-    // The d × E_i misses before the remaining hit tests: those cost divisions and a square root, and on
-    // bench_query's random set the edge tests decide more queries (6%) than all of them together (4%).
-    if (edges_separate(p, k)) return false;
+    const double inside = bound1(p, k.inside);
+    if (inside_margin(c[0], e[0]) > inside && inside_margin(c[1], e[1]) > inside && inside_margin(c[2], e[2]) > inside)
+        return true;
+    return box_point_inside(p, k, witness(0));
+}
+template <class Witness>
+BOXCYL_FORCE_INLINE inline bool other_hits(const Problem& p, const Kappas& k, Witness&& witness) {
     if (p.has_inner)
         for (int w = 1; w < 3; ++w)
             if (box_point_inside(p, k, witness(w))) return true;
@@ -477,6 +478,17 @@ BOXCYL_FORCE_INLINE inline std::optional<bool> decide(const Problem& p, const Ka
             return true;
         if (cylinder_point_inside(p, k, *t, towards_centre(p, *t))) return true;
     }
+    return false;
+}
+
+template <class Witness>
+BOXCYL_FORCE_INLINE inline std::optional<bool> decide(const Problem& p, const Kappas& k, Witness&& witness) {
+    if (faces_or_axis_separate(p, k)) return false;
+    if (first_hits(p, k, witness)) return true;
+    // The d × E_i misses before the remaining hit tests: those cost divisions and a square root, and on
+    // bench_query's random set the edge tests decide more queries (6%) than all of them together (4%).
+    if (edges_separate(p, k)) return false;
+    if (other_hits(p, k, witness)) return true;
     return std::nullopt;
 }
 
@@ -641,6 +653,14 @@ inline Vec3<double> witness_offset(const Problem& p, int w, const AlignedBox<dou
     for (int i = 0; i < 3; ++i) v[i] = clamp_to(target[i], b.min[i], b.max[i]) - cyl.center[i];
     return v;
 }
+// witness(w): the box kind's witness offsets (by reference: the caller keeps p, b and cyl alive).
+template <class Box>
+BOXCYL_FORCE_INLINE inline auto witnesses_of(const Problem& p, const Box& b, const Cylinder<double>& cyl) {
+    if constexpr (std::is_same_v<Box, AlignedBox<double>>)
+        return [&p, &b, &cyl](int w) { return witness_offset(p, w, b, cyl); };
+    else
+        return [&p](int w) { return witness_offset(p, w); };
+}
 
 // ---- Stage 0: the answer, or nullopt when undecided. ----
 
@@ -663,10 +683,16 @@ BOXCYL_FORCE_INLINE inline void set_sizes_of(Problem& p, double radius, double h
 // through the generic decide() above.
 template <class Box>
 BOXCYL_FORCE_INLINE inline std::optional<bool> decide(const Problem& p, const Box& b, const Cylinder<double>& cyl) {
-    if constexpr (std::is_same_v<Box, AlignedBox<double>>)
-        return decide(p, aligned_kappas, [&](int w) { return witness_offset(p, w, b, cyl); });
-    else
-        return decide(p, kappas_of<Box>, [&p](int w) { return witness_offset(p, w); });
+    return decide(p, kappas_of<Box>, witnesses_of(p, b, cyl));
+}
+// The two parts of the hit tests alone, for the box kind.
+template <class Box>
+BOXCYL_FORCE_INLINE inline bool first_hits(const Problem& p, const Box& b, const Cylinder<double>& cyl) {
+    return first_hits(p, kappas_of<Box>, witnesses_of(p, b, cyl));
+}
+template <class Box>
+BOXCYL_FORCE_INLINE inline bool other_hits(const Problem& p, const Box& b, const Cylinder<double>& cyl) {
+    return other_hits(p, kappas_of<Box>, witnesses_of(p, b, cyl));
 }
 // Stage 0's misses alone (false, or nullopt: undecided), for a cylinder whose hit would decide nothing:
 // a cylinder that holds another (clearance.hpp's outer probe), whose hit tests are skipped.
