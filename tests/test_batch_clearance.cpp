@@ -213,14 +213,15 @@ TEST_P(BatchClearance, RandomSetsAgreeWithScalar) {
     fo.print("random sets, oriented (float)");
 }
 
-// Batches of several blocks, the last one partial (613 boxes: nine full blocks and 37 boxes), so that
-// the later probes gather the open lanes of a group of blocks, and a group ends on a short block.
+// Batches of more blocks than one group takes (kernel.hpp's kGroupBlocks), the last one partial (37
+// boxes), so that the passes after the first gather the open lanes of a group of blocks, a second group
+// follows, and it ends on a short block.
 TEST_P(BatchClearance, GroupsOfBlocksAgreeWithScalar) {
     Count ca, co, cp;
     std::mt19937_64 rng(0xC1EB);
     for (long k = 0; k < scaled(6); ++k) {
         const std::uint64_t seed = 0xBA7C6000 + static_cast<std::uint64_t>(k);
-        const BatchSet s = random_batch(seed, 9 * 64 + 37, k % 3 == 2 ? Profile::degenerate : Profile::mixed);
+        const BatchSet s = random_batch(seed, (batch::detail::kGroupBlocks + 1) * 64 + 37, k % 3 == 2 ? Profile::degenerate : Profile::mixed);
         const double m = random_margin(rng, reach_of(s.cylinder));
         check_set(s.cylinder, s.aligned, s.oriented, m, "groups, seed " + std::to_string(seed) + " margin " + hex(m), ca, co, cp);
     }
