@@ -26,6 +26,10 @@
 // margin_3_voxels: the clearance form, batch::within_distance, on the same 10M sets at a margin of three
 // voxel sides (3/64 of the cylinder's reach): beside voxels/threads_1/automatic etc., the cost of the
 // margin is one run's ratio; exact_pct there is the share left to the scalar clearance query.
+// margin_pair: the same two calls paired, one thread: each iteration times batch::intersects and
+// batch::within_distance (3 voxel sides) on the same set back to back, in alternating order, so that
+// both see the same minute of a shared machine; counters plain_ns_per_box, margin_ns_per_box and their
+// ratio (the total times'), the figure scripts/bench.sh reports.
 //
 // Aligned boxes are timed in both forms of the batch API: `aligned` the six arrays, `aligned_rows` an
 // array of AlignedBox<double> (the [min, max] rows, read in place) holding the same boxes.
@@ -308,6 +312,40 @@ void large_batch(benchmark::State& state, bool voxels, unsigned threads, batch::
     state.SetLabel(batch::name(ran));
 }
 
+// batch::within_distance beside batch::intersects on the same set (see margin_pair above), one thread.
+void margin_pair(benchmark::State& state, bool voxels) {
+    const Large& l = large(voxels);
+    std::vector<std::uint64_t> mask(batch::mask_words(kLarge));
+    const double margin = 3.0 * (l.cylinder.radius + l.cylinder.height * 0.5) / 64;
+    const batch::Options opt{1u, batch::Kernel::automatic};
+    double plain_s = 0, margin_s = 0;
+    std::size_t exact = 0;
+    batch::Kernel ran = opt.kernel;
+    bool margin_first = false;
+    // Untimed, once each: the first pass over freshly generated arrays ran many times slower.
+    batch::intersects(l.cylinder, l.soa.view(), std::span<std::uint64_t>(mask), opt);
+    batch::within_distance(l.cylinder, l.soa.view(), margin, std::span<std::uint64_t>(mask), opt);
+    for (auto _ : state) {
+        for (int k = 0; k < 2; ++k) {
+            const bool with_margin = (k == 0) == margin_first;
+            const auto t0 = std::chrono::steady_clock::now();
+            const batch::Stats st = with_margin ? batch::within_distance(l.cylinder, l.soa.view(), margin, std::span<std::uint64_t>(mask), opt)
+                                                : batch::intersects(l.cylinder, l.soa.view(), std::span<std::uint64_t>(mask), opt);
+            benchmark::DoNotOptimize(mask.data());
+            (with_margin ? margin_s : plain_s) += seconds_since(t0);
+            if (with_margin) exact += st.exact_lanes;
+            ran = st.kernel;
+        }
+        margin_first = !margin_first;
+    }
+    const double n = static_cast<double>(state.iterations()) * kLarge;
+    state.counters["plain_ns_per_box"] = plain_s * 1e9 / n;
+    state.counters["margin_ns_per_box"] = margin_s * 1e9 / n;
+    state.counters["ratio"] = margin_s / plain_s;
+    state.counters["exact_pct"] = 100.0 * static_cast<double>(exact) / n;
+    state.SetLabel(batch::name(ran));
+}
+
 // The scalar exact default on the first million boxes of the same 10M set, one thread: the goal
 // "batch ≤ 1/4 of the scalar per box" on these data, against large_batch/.../threads_1's ns_per_box.
 void large_scalar(benchmark::State& state, bool voxels) {
@@ -379,5 +417,7 @@ BENCHMARK_CAPTURE(large_batch, random/margin_3_voxels/threads_1/automatic, false
     ->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(large_batch, random/margin_3_voxels/threads_all/automatic, false, 0u, kAuto, false, 3.0)
     ->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(margin_pair, voxels, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(margin_pair, random, false)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();
