@@ -30,9 +30,12 @@
 #include "boxcyl/exact/integer_inequalities.hpp"
 #include "boxcyl/exact/answer.hpp"
 #include "boxcyl/exact/integer_parallelepiped.hpp"
+#include "boxcyl/exact/point.hpp"
 #include "boxcyl/filtered.hpp"
 #include "boxcyl/number/qfield.hpp"
+#include "boxcyl/number/rational.hpp"
 #include "support/cases.hpp"
+#include "support/fp.hpp"
 #include "support/near_touching.hpp"
 #include "support/runner.hpp"
 #include "support/touching.hpp"
@@ -52,7 +55,7 @@ std::optional<bool> integer_answer(const Case& c) {
 }
 
 struct StageTally {
-    long cases = 0, judged = 0, judged_parallelepiped = 0, hits = 0, exact_stage = 0, wrong = 0;
+    long cases = 0, judged = 0, judged_parallelepiped = 0, hits = 0, point_hits = 0, exact_stage = 0, wrong = 0;
     void check(const Case& c, const std::string& where) {
         ++cases;
         const bool want = oracle_answer(c);
@@ -70,6 +73,11 @@ struct StageTally {
                 ADD_FAILURE() << where << ": parallelepiped stage answered " << got << ", oracle " << want << "\n  "
                               << describe(c);
         }
+        const bool point_hit =
+            with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return exact::hit_at_a_point(b, cyl); });
+        point_hits += point_hit;
+        if (point_hit && !want && ++wrong <= 10)
+            ADD_FAILURE() << where << ": hit_at_a_point claimed a hit, oracle a miss\n  " << describe(c);
         const filtered::Result r =
             with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return filtered::query(b, cyl); });
         exact_stage += r.exact_used;
@@ -78,9 +86,9 @@ struct StageTally {
                           << describe(c);
     }
     void print(const char* what) const {
-        std::printf("%s: %ld cases, %ld judged by §4 in integers, %ld by the parallelepiped test, %ld hits, %ld reached "
-                    "the exact stage, %ld wrong\n",
-                    what, cases, judged, judged_parallelepiped, hits, exact_stage, wrong);
+        std::printf("%s: %ld cases, %ld judged by §4 in integers, %ld by the parallelepiped test, %ld hits (%ld proved "
+                    "by one point in double), %ld reached the exact stage, %ld wrong\n",
+                    what, cases, judged, judged_parallelepiped, hits, point_hits, exact_stage, wrong);
     }
 };
 
@@ -218,6 +226,9 @@ TEST(ExactStage, HandMadeTouchingCases) {
         ASSERT_EQ(oracle_answer(c), k.hit) << k.what << " (the case itself is wrong): " << describe(c);
         EXPECT_EQ(exact::integer::answer(unit, k.cyl), k.hit) << k.what << ": " << describe(c);
         EXPECT_EQ(filtered::intersects(unit, k.cyl), k.hit) << k.what << ": " << describe(c);
+        if (exact::hit_at_a_point(unit, k.cyl)) {
+            EXPECT_TRUE(k.hit) << k.what << ": hit_at_a_point";
+        }
         // The same as a canonical box (centre moved by −(0.5, 0.5, 0.5), exact) and a signed permutation.
         Cylinder<double> moved = k.cyl;
         for (int i = 0; i < 3; ++i) moved.center[i] -= 0.5;
@@ -227,6 +238,121 @@ TEST(ExactStage, HandMadeTouchingCases) {
                                          {0.5, 0.5, 0.5}};
         EXPECT_EQ(exact::integer::answer(turned, k.cyl), std::optional<bool>(k.hit)) << k.what << " oriented";
     }
+}
+
+// One point tested exactly in double (exact/point.hpp): points on the surface of a cylinder decided
+// in every rounding mode, points a short step off it too, and inputs too wide for the test declined.
+TEST(ExactPoint, InsideExactlyDecidesSurfacePoints) {
+    const Cylinder<double> z_axis{{0, 0, 0}, {0, 0, 1}, 8, 16};
+    // Axis (3,4,0)/5, r = 5, h = 10: (3,4,0) is the top cap's centre, (7,1,0) on its rim.
+    const Cylinder<double> oblique{{0, 0, 0}, {3, 4, 0}, 5, 10};
+    const Cylinder<double> far{{1e6, -2e6, 4096}, {0, 0, 1}, 0.5, 3};
+    const Cylinder<double> tiny_axis{{-0x1.cp+743, 0x1.4p+743, -0x1p+740}, {0, 0x1p-517, 0}, 0x1p+742, 0x1p+743};
+    struct Known {
+        const char* what;
+        Vec3<double> p;
+        const Cylinder<double>& c;
+        std::optional<bool> inside;
+    };
+    const Known known[] = {
+        {"side", {8, 0, 5}, z_axis, true},
+        {"rim", {8, 0, 8}, z_axis, true},
+        {"cap centre", {0, 0, -8}, z_axis, true},
+        {"cap, a half off", {0, 0, 8.5}, z_axis, false},
+        {"side, a half off", {8, 0.5, 0}, z_axis, false},
+        {"oblique cap centre", {3, 4, 0}, oblique, true},
+        {"oblique rim", {7, 1, 0}, oblique, true},
+        {"oblique rim, 2^-10 off", {7 + 0x1p-10, 1, 0}, oblique, false},
+        {"oblique rim, 2^-10 in", {7 - 0x1p-10, 1, 0}, oblique, true},
+        {"far rim", {1e6 + 0.5, -2e6, 4096 + 1.5}, far, true},
+        {"far, past the rim", {1e6 + 0.5, -2e6 + 0.25, 4096}, far, false},
+        // One ulp off the rim: 53 bits, too wide for exact double arithmetic.
+        {"rim, one ulp off", {std::nextafter(8.0, 9.0), 0, 8}, z_axis, std::nullopt},
+        {"rim, a subnormal off", {8, 0x1p-1074, 8}, z_axis, std::nullopt},
+        // A tiny axis beside huge lengths: |a|² would underflow, |v|² overflow.
+        {"axis 2^-517, lengths 2^743", {0x1.8p+742, 0x1.8p+742, -0x1.4p+743}, tiny_axis, std::nullopt},
+    };
+    for (const int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+        const RoundingMode guard(mode);
+        for (const Known& k : known)
+            EXPECT_EQ(exact::inside_exactly(k.p, k.c), k.inside) << k.what << " in " << mode_name(mode);
+    }
+}
+
+// Against exact rationals: points and cylinders of small integers times one power of two, half of them
+// moved far from the origin (random, fixed seed), each answer the test gives equal to the rational one,
+// in every rounding mode.
+TEST(ExactPoint, InsideExactlyAgreesWithRationals) {
+    const std::uint64_t seed = 2131;
+    std::mt19937_64 rng(seed);
+    auto small = [&](int bits) {
+        const std::int64_t m = static_cast<std::int64_t>(rng() % (std::uint64_t{1} << bits)) - (std::int64_t{1} << (bits - 1));
+        return static_cast<double>(m);
+    };
+    auto rational_inside = [](const Vec3<double>& p, const Cylinder<double>& c) {
+        using Q = Rational;
+        Vec3<Q> a, v;
+        for (int i = 0; i < 3; ++i) a[i] = Q(c.axis[i]), v[i] = Q(p[i]) - Q(c.center[i]);
+        const Q aa = dot(a, a), av = dot(a, v), h(c.height), r(c.radius);
+        return Q(4) * av * av <= h * h * aa && aa * dot(v, v) - av * av <= r * r * aa;
+    };
+    long decided = 0, inside = 0;
+    const long n = scaled(20000);
+    for (long i = 0; i < n; ++i) {
+        const int bits = 2 + static_cast<int>(rng() % 10);
+        const double unit = std::ldexp(1.0, static_cast<int>(rng() % 41) - 20);
+        Cylinder<double> c{{small(bits) * unit, small(bits) * unit, small(bits) * unit},
+                           {small(3), small(3), small(3)},
+                           std::abs(small(bits)) * unit,
+                           std::abs(small(bits)) * unit};
+        if (c.axis[0] == 0 && c.axis[1] == 0 && c.axis[2] == 0) c.axis[2] = 1;
+        Vec3<double> p{small(bits) * unit, small(bits) * unit, small(bits) * unit};
+        if (i % 2 == 1)  // half of them far from the origin: only the offsets p − C count
+            for (int j = 0; j < 3; ++j) {
+                const double shift = small(30) * unit;
+                p[j] += shift, c.center[j] += shift;
+            }
+        const bool want = rational_inside(p, c);
+        for (const int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+            const RoundingMode guard(mode);
+            const std::optional<bool> got = exact::inside_exactly(p, c);
+            if (!got) continue;
+            decided += mode == FE_TONEAREST;
+            inside += mode == FE_TONEAREST && *got;
+            ASSERT_EQ(*got, want) << "seed " << seed << " case " << i << " in " << mode_name(mode)
+                                  << ": exact::inside_exactly(Vec3<double>" << hex(p) << ", Cylinder<double>{"
+                                  << hex(c.center) << ", " << hex(c.axis) << ", " << hex(c.radius) << ", "
+                                  << hex(c.height) << "})";
+        }
+    }
+    std::printf("inside_exactly: %ld of %ld decided, %ld inside\n", decided, n, inside);
+    EXPECT_GT(decided, n * 9 / 10);
+    EXPECT_GT(inside, decided / 40);
+}
+
+// The voxels beside a cylinder whose caps and side touch cell faces exactly (the unit cells of
+// [-10, 11]³, radius 8, height 16, axis z at the grid node 0): each cell the point proves is a hit by
+// the oracle, and the cells touching a cap, the side or a rim are proved.
+TEST(ExactPoint, HitsTouchingVoxels) {
+    const Cylinder<double> c{{0, 0, 0}, {0, 0, 1}, 8, 16};
+    long proved = 0;
+    for (int i = -10; i < 11; ++i)
+        for (int j = -10; j < 11; ++j)
+            for (int k = -10; k < 11; ++k) {
+                Case q;
+                q.kind = BoxKind::aligned;
+                q.aligned = {{double(i), double(j), double(k)}, {i + 1.0, j + 1.0, k + 1.0}};
+                q.cylinder = c;
+                if (!exact::hit_at_a_point(q.aligned, c)) continue;
+                ++proved;
+                ASSERT_TRUE(oracle_answer(q)) << describe(q);
+            }
+    std::printf("hit_at_a_point: %ld voxels proved\n", proved);
+    const AlignedBox<double> cap{{2, 3, 8}, {3, 4, 9}}, side{{8, 0, 3}, {9, 1, 4}}, rim{{8, 0, 8}, {9, 1, 9}},
+        below_rim{{8, -1, -9}, {9, 0, -8}};
+    for (const AlignedBox<double>& b : {cap, side, rim, below_rim}) EXPECT_TRUE(exact::hit_at_a_point(b, c));
+    EXPECT_TRUE(exact::hit_at_a_point(CanonicalBox<double>{{1, 1, 1}}, Cylinder<double>{{9, 0, 0}, {0, 0, 1}, 8, 2}));
+    EXPECT_FALSE(exact::hit_at_a_point(AlignedBox<double>{{9, 0, 0}, {10, 1, 1}}, c));
 }
 
 TEST(ExactStage, DyadicDecompositionIsExact) {

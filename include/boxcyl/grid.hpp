@@ -19,10 +19,11 @@
 // cylinder. That is exact: a cylinder that misses the union misses every cell of it. A block that
 // meets the cylinder is halved along its longest side, down to single cells; when its lower half
 // misses, its upper half meets the cylinder without asking (the halves tile the block). A block whose
-// eight corners all lie in the closed cylinder (an exact test: intervals, else rationals) lies inside
-// it, cylinder and box being convex, and all its cells are reported without descending. A block of at
-// most 512 cells is answered cell by cell through the batch API (batch.hpp), whose SIMD filter decides
-// most cells near the surface far cheaper than exact queries would. The number of exact queries
+// eight corners all lie in the closed cylinder (an exact test: plain double where its operands make it
+// exact, else intervals, else rationals) lies inside it, cylinder and box being convex, and all its
+// cells are reported without descending. A block of at most 512 cells, or of up to 8192 that the
+// cylinder may fill half of, is answered cell by cell through the batch API (batch.hpp), whose SIMD
+// filter decides most cells near the surface far cheaper than exact queries would. The number of exact queries
 // therefore grows with the number of cells near the cylinder's surface (times a logarithmic factor for
 // the descent), not with the grid's size nor with the cylinder's volume.
 //
@@ -40,13 +41,16 @@
 #include "boxcyl/compiled.hpp"
 #else
 
-#include <algorithm>  // std::max, std::sort
+#include <algorithm>  // std::max, std::sort, std::fill_n, std::copy_n
+#include <bit>        // std::countr_zero
 #include <array>      // cell indices
 #include <cassert>    // debug-build precondition checks
 #include <cmath>      // std::fma, std::hypot, std::ldexp, std::nextafter, std::ilogb
 #include <cstddef>    // std::size_t
 #include <cstdint>    // std::int64_t
+#include <cstring>    // std::memcpy
 #include <limits>     // infinities, denorm_min
+#include <optional>   // exact::inside_exactly's answer
 #include <span>       // the batch API's columns
 #include <stdexcept>  // a bad margin
 #include <string>     // validation messages
@@ -63,6 +67,7 @@
 #include "boxcyl/clearance.hpp"  // for_each_cell_within
 #include "boxcyl/number/interval.hpp"
 #if defined(BOXCYL_HAS_EXACT)
+#include "boxcyl/exact/point.hpp"
 #include "boxcyl/number/rational.hpp"
 #endif
 
@@ -140,8 +145,11 @@ bool inside_in(const Vec3<double>& p, const Cylinder<double>& c) {
     return N(4) * ad * ad <= h * h * n2 && n2 * dot(d, d) - ad * ad <= r * r * n2;
 }
 
-// Whether p lies in the closed cylinder, exactly: intervals decide when they can, rationals otherwise.
+// Whether p lies in the closed cylinder, exactly: plain double where the operands make it exact (a
+// grid's corners touching the cylinder, exact/point.hpp), else intervals where they decide, else
+// rationals.
 inline bool inside(const Vec3<double>& p, const Cylinder<double>& c) {
+    if (const std::optional<bool> r = exact::inside_exactly(p, c)) return *r;
     {
         UncertaintyScope scope;
         const bool r = inside_in<Interval>(p, c);
@@ -245,6 +253,22 @@ private:
         return true;
     }
 
+    // Whether the cylinder (`bound`) may fill half the block or more: the volume of a piece of it as long
+    // as the block's diagonal (or the whole, if shorter) against the block's, on blocks at least
+    // kDenseSide cells thick (a thin cylinder along a grid axis fills its narrow blocks, whose halves
+    // are then often inside it whole). A speed hint only.
+    bool dense(const CellIndex& lo, const CellIndex& hi) const {
+        double volume = 1, diagonal2 = 0;
+        for (std::size_t a = 0; a < 3; ++a)
+            if (hi[a] - lo[a] < kDenseSide) return false;
+        for (std::size_t a = 0; a < 3; ++a) {
+            const double side = static_cast<double>(hi[a] - lo[a]) * g_.cell_size[a];
+            volume *= side, diagonal2 += side * side;
+        }
+        const double piece = 3.14159 * c_.radius * c_.radius * std::min(c_.height, std::sqrt(diagonal2));
+        return piece >= 0.5 * volume;
+    }
+
     // Precondition: the block is non-empty and its box meets the cylinder.
     void walk(const CellIndex& lo, const CellIndex& hi) {
         // Halve the side that is longest in space (ties: the lower axis), so blocks stay compact.
@@ -285,7 +309,7 @@ private:
                     }
             return;
         }
-        if (small && n <= kBatchCells) {
+        if (small && (n <= kBatchCells || (n <= kBatchDense && dense(lo, hi)))) {
             batched(lo, hi, n);
             return;
         }
@@ -305,11 +329,17 @@ private:
     // each (the rest go to the same exact query), where subdividing further would cost an exact query
     // per half, and blocks lying across the surface rarely have halves the cylinder misses or covers.
     // Blocks of more than kBatchAlways cells are first tested for lying inside (eight corner tests,
-    // cheaper than a batch over them). 512 rather than 64 made every cylinder of bench/bench_grid.cpp and
-    // the voxels of bench/bench_pipeline.cpp faster (by a fifth to two fifths); 4096 doubled the thin
-    // cylinders' time.
+    // cheaper than a batch over them). A block of up to kBatchDense cells that the cylinder may fill
+    // half of (dense()) is batched whole too: its halves would all meet the cylinder, and each would
+    // cost an exact query. Measured on bench/bench_grid.cpp's cylinders and the voxels of
+    // bench/bench_pipeline.cpp: 512 rather than 64 made every one faster (by a fifth to two fifths),
+    // and 4096 for every block doubled the thin cylinders' time; the dense blocks took a seventh off the
+    // voxels' time and a tenth off the cylinders' with a margin, and left the others as they were (on
+    // blocks thinner than kDenseSide they slowed the thin cylinder along a grid axis by a quarter).
     static constexpr std::int64_t kBatchAlways = 64;
     static constexpr std::int64_t kBatchCells = 512;
+    static constexpr std::int64_t kBatchDense = 8192;
+    static constexpr std::int64_t kDenseSide = 8;
     static constexpr std::int64_t kBatchSide = 64;  // no side longer (the per-axis bound tables below)
     void batched(const CellIndex& lo, const CellIndex& hi, std::int64_t n) {
         // The cells' bounds, one table per axis: each bound rounded once (grid_bound), shared by the
@@ -322,15 +352,21 @@ private:
         if (mask_.size() < batch::mask_words(cells)) mask_.resize(batch::mask_words(cells));
         double* col[6];
         for (std::size_t a = 0; a < 6; ++a) col[a] = column_.data() + a * cells;
-        std::size_t m = 0;
-        for (std::int64_t i = lo[0]; i < hi[0]; ++i)
-            for (std::int64_t j = lo[1]; j < hi[1]; ++j)
-                for (std::int64_t k = lo[2]; k < hi[2]; ++k, ++m) {
-                    const std::size_t x = static_cast<std::size_t>(i - lo[0]), y = static_cast<std::size_t>(j - lo[1]),
-                                      z = static_cast<std::size_t>(k - lo[2]);
-                    col[0][m] = bound[0][x], col[1][m] = bound[1][y], col[2][m] = bound[2][z];
-                    col[3][m] = bound[0][x + 1], col[4][m] = bound[1][y + 1], col[5][m] = bound[2][z + 1];
-                }
+        // The columns by copies (a batched block's cells cost about as much to lay out one store at a
+        // time as the filter costs them): the y and z bounds repeat in every x-slab, the x bounds are
+        // constant over one.
+        const auto ni = static_cast<std::size_t>(hi[0] - lo[0]), nj = static_cast<std::size_t>(hi[1] - lo[1]),
+                   nk = static_cast<std::size_t>(hi[2] - lo[2]), slab = nj * nk;
+        for (std::size_t y = 0; y < nj; ++y) {
+            std::fill_n(col[1] + y * nk, nk, bound[1][y]);
+            std::fill_n(col[4] + y * nk, nk, bound[1][y + 1]);
+            std::copy_n(bound[2].data(), nk, col[2] + y * nk);
+            std::copy_n(bound[2].data() + 1, nk, col[5] + y * nk);
+        }
+        for (std::size_t x = 1; x < ni; ++x)
+            for (const std::size_t a : {1, 2, 4, 5}) std::memcpy(col[a] + x * slab, col[a], slab * sizeof(double));
+        for (std::size_t x = 0; x < ni; ++x)
+            for (const std::size_t a : {0, 3}) fill_by_doubling(col[a] + x * slab, slab, bound[0][x + (a == 3)]);
         const std::span<std::uint64_t> mask(mask_.data(), batch::mask_words(cells));
         const batch::AlignedBoxes<double> boxes{{col[0], cells}, {col[1], cells}, {col[2], cells},
                                                 {col[3], cells}, {col[4], cells}, {col[5], cells}};
@@ -339,14 +375,31 @@ private:
         s_.queries += static_cast<std::int64_t>(st.exact_lanes);
         s_.cell_queries += static_cast<std::int64_t>(st.exact_lanes);
         s_.batched_cells += n;
-        m = 0;
+        // The answers row by row, each row's bits read a word at a time.
+        std::size_t m = 0;
         for (std::int64_t i = lo[0]; i < hi[0]; ++i)
-            for (std::int64_t j = lo[1]; j < hi[1]; ++j)
-                for (std::int64_t k = lo[2]; k < hi[2]; ++k, ++m)
-                    if ((mask[m / 64] >> (m % 64)) & 1u) {
+            for (std::int64_t j = lo[1]; j < hi[1]; ++j, m += nk)
+                for (std::size_t k = 0; k < nk;) {
+                    const std::size_t at = m + k, shift = at % 64, take = std::min<std::size_t>(64 - shift, nk - k);
+                    std::uint64_t bits = mask[at / 64] >> shift;
+                    if (take < 64) bits &= (std::uint64_t{1} << take) - 1;
+                    for (; bits != 0; bits &= bits - 1) {
                         ++s_.cells;
-                        f_(i, j, k);
+                        f_(i, j, lo[2] + static_cast<std::int64_t>(k) + std::countr_zero(bits));
                     }
+                    k += take;
+                }
+    }
+
+    // p[0, n) = v: a few stores, then copies of what is already there.
+    static void fill_by_doubling(double* p, std::size_t n, double v) {
+        std::size_t done = std::min<std::size_t>(n, 8);
+        std::fill_n(p, done, v);
+        while (done < n) {
+            const std::size_t more = std::min(done, n - done);
+            std::memcpy(p + done, p, more * sizeof(double));
+            done += more;
+        }
     }
 
     // The batched blocks' columns and answers, kept from one block to the next.
@@ -363,8 +416,8 @@ private:
 
 // Calls f(i, j, k) (std::int64_t each) once for every cell of `g` that the closed cylinder `c`
 // intersects, exactly (see the top of this file). Order: deterministic, depth-first over the
-// subdivision (a block's lower half before its upper half; a block inside the cylinder, or one of at
-// most 512 cells, in lexicographic order), not lexicographic overall — cells() sorts.
+// subdivision (a block's lower half before its upper half; a block inside the cylinder, or one answered
+// through the batch API, in lexicographic order), not lexicographic overall — cells() sorts.
 // Preconditions: validate(g).ok() and validate(c).ok() (asserted in debug builds).
 template <class F>
 void for_each_cell(const Grid& g, const Cylinder<double>& c, F&& f, GridStats* stats = nullptr) {

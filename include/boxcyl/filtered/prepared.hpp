@@ -113,14 +113,8 @@ template <class Box, class F>  // OrientedBox, Parallelepiped
 void for_each_position(Box& b, Cylinder<double>& c, int i, F&& f) {
     f(b.center[i]), f(c.center[i]);
 }
-// The same question with every position moved by −t on each axis (t: the box's first position there),
-// when every difference is exact: shapes small and far from the origin (a block model in UTM
-// coordinates, a part in machine coordinates) then get error bounds of their own size. x and t are
-// integer multiples of 2^g (g: the least granularity of the axis' values), so x − t is, and it is a
-// double exactly when |x − t| < 2^(g+53): rounding is monotone and 2^(g+53) a double, so the computed
-// difference tells, in every rounding mode.
-// The common case first, in one pass without branches (the axes computed together): every difference
-// passes that test, with no position 0 to stay.
+// translated_exactly's common case, in one pass without branches (the axes computed together): every
+// position within a factor 2 of the box's first one (Sterbenz's lemma; the test is translated_exactly's).
 inline bool moved_within_a_factor_2(AlignedBox<double>& b, Cylinder<double>& c) {
     Vec3<double> hi, centre;
     int ok = 1;
@@ -128,7 +122,8 @@ inline bool moved_within_a_factor_2(AlignedBox<double>& b, Cylinder<double>& c) 
         const double t = b.min[i], at = std::fabs(t);
         hi[i] = b.max[i] - t;
         centre[i] = c.center[i] - t;
-        ok &= (std::fabs(hi[i]) < std::min(std::fabs(b.max[i]), at)) & (std::fabs(centre[i]) < std::min(std::fabs(c.center[i]), at));
+        ok &= static_cast<int>(std::fabs(hi[i]) < std::min(std::fabs(b.max[i]), at)) &
+              static_cast<int>(std::fabs(centre[i]) < std::min(std::fabs(c.center[i]), at));
     }
     if (!ok) return false;
     b.min = {0, 0, 0}, b.max = hi, c.center = centre;
@@ -146,6 +141,12 @@ bool moved_within_a_factor_2(Box& b, Cylinder<double>& c) {
     b.center = {0, 0, 0}, c.center = centre;
     return true;
 }
+// The same question with every position moved by −t on each axis (t: the box's first position there),
+// when every difference is exact: shapes small and far from the origin (a block model in UTM
+// coordinates, a part in machine coordinates) then get error bounds of their own size. x and t are
+// integer multiples of 2^g (g: the least granularity of the axis' values), so x − t is, and it is a
+// double exactly when |x − t| < 2^(g+53): rounding is monotone and 2^(g+53) a double, so the computed
+// difference tells, in every rounding mode.
 template <class Box>
 bool translated_exactly(Box& box, Cylinder<double>& cyl) {
     if (moved_within_a_factor_2(box, cyl)) return true;

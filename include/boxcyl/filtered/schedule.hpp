@@ -17,6 +17,7 @@
 #include <utility>    // std::index_sequence
 
 #include "boxcyl/exact/answer.hpp"
+#include "boxcyl/exact/point.hpp"
 #include "boxcyl/filtered/enclosed.hpp"
 #include "boxcyl/filtered/parallelepiped.hpp"
 #include "boxcyl/filtered/prepared.hpp"
@@ -122,6 +123,13 @@ inline constexpr auto sandwiched = [](auto& q) -> Verdict {
 };
 template <exact::Tier tier>
 inline constexpr auto exact_stage = [](auto& q) -> Verdict { return exact::answer(q.box, q.cyl, tier); };
+// Narrow inputs: one box point tested exactly in double first (exact/point.hpp: a few dozen
+// operations, where such shapes mostly touch exactly on a cap, a side or a rim), then the exact stage in
+// fixed-width integers.
+inline constexpr auto exact_narrow_stage = [](auto& q) -> Verdict {
+    if (exact::hit_at_a_point(q.box, q.cyl)) return true;
+    return exact::answer(q.box, q.cyl, exact::Tier::fixed);
+};
 
 // Parallelepipeds.
 inline constexpr auto pp_candidates = [](auto& q) -> Verdict {
@@ -163,7 +171,7 @@ using M = Modes;
 // frames, decided none of 263,400 queries of every generator's sets there, at 13 to 100 µs a try.
 inline constexpr std::tuple box_schedule{
     Row{R::semi_static, M::any, always, semi_static_tests},
-    Row{R::exact_narrow, M::any, hint_narrow, exact_stage<exact::Tier::fixed>},
+    Row{R::exact_narrow, M::any, hint_narrow, exact_narrow_stage},
     Row{R::search, M::nearest, hint_search, searched},
     Row{R::search, M::directed, in_range, searched},
     Row{R::inequalities_bounded, M::nearest, hint_not_near, inequalities<Bounded>},
