@@ -341,20 +341,29 @@ TEST(ExactPoint, InsideExactlyAgreesWithRationals) {
 // The voxels beside a cylinder whose caps and side touch cell faces exactly (the unit cells of
 // [-10, 11]³, radius 8, height 16, axis z at the grid node 0): each cell the point proves is a hit by
 // the oracle, and the cells touching a cap, the side or a rim are proved.
-TEST(ExactPoint, HitsTouchingVoxels) {
-    const Cylinder<double> c{{0, 0, 0}, {0, 0, 1}, 8, 16};
-    long proved = 0;
+const Cylinder<double> kVoxelCylinder{{0, 0, 0}, {0, 0, 1}, 8, 16};
+std::vector<Case> voxel_cases() {
+    std::vector<Case> out;
     for (int i = -10; i < 11; ++i)
         for (int j = -10; j < 11; ++j)
             for (int k = -10; k < 11; ++k) {
                 Case q;
                 q.kind = BoxKind::aligned;
                 q.aligned = {{double(i), double(j), double(k)}, {i + 1.0, j + 1.0, k + 1.0}};
-                q.cylinder = c;
-                if (!exact::hit_at_a_point(q.aligned, c)) continue;
-                ++proved;
-                ASSERT_TRUE(oracle_answer(q)) << describe(q);
+                q.cylinder = kVoxelCylinder;
+                out.push_back(q);
             }
+    return out;
+}
+
+TEST(ExactPoint, HitsTouchingVoxels) {
+    const Cylinder<double>& c = kVoxelCylinder;
+    long proved = 0;
+    for (const Case& q : voxel_cases()) {
+        if (!exact::hit_at_a_point(q.aligned, c)) continue;
+        ++proved;
+        ASSERT_TRUE(oracle_answer(q)) << describe(q);
+    }
     std::printf("hit_at_a_point: %ld voxels proved\n", proved);
     const AlignedBox<double> cap{{2, 3, 8}, {3, 4, 9}}, side{{8, 0, 3}, {9, 1, 4}}, rim{{8, 0, 8}, {9, 1, 9}},
         below_rim{{8, -1, -9}, {9, 0, -8}};
@@ -367,23 +376,17 @@ TEST(ExactPoint, HitsTouchingVoxels) {
 // touching voxel set (hits and misses), in every rounding mode, against the oracle; hand-made cases along
 // each axis, with a negative or longer axis vector, far from the origin, and operands too wide.
 TEST(ExactPoint, AlongAnAxisDecidesEveryVoxel) {
-    const Cylinder<double> c{{0, 0, 0}, {0, 0, 1}, 8, 16};
+    const Cylinder<double>& c = kVoxelCylinder;
     long cells = 0;
-    for (int i = -10; i < 11; ++i)
-        for (int j = -10; j < 11; ++j)
-            for (int k = -10; k < 11; ++k) {
-                Case q;
-                q.kind = BoxKind::aligned;
-                q.aligned = {{double(i), double(j), double(k)}, {i + 1.0, j + 1.0, k + 1.0}};
-                q.cylinder = c;
-                const bool want = oracle_answer(q);
-                ++cells;
-                for (const int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
-                    const RoundingMode guard(mode);
-                    ASSERT_EQ(exact::decide_along_an_axis(q.aligned, c), std::optional<bool>(want))
-                        << mode_name(mode) << ": " << describe(q);
-                }
-            }
+    for (const Case& q : voxel_cases()) {
+        const bool want = oracle_answer(q);
+        ++cells;
+        for (const int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+            const RoundingMode guard(mode);
+            ASSERT_EQ(exact::decide_along_an_axis(q.aligned, c), std::optional<bool>(want))
+                << mode_name(mode) << ": " << describe(q);
+        }
+    }
     EXPECT_EQ(cells, 9261);
     struct Known {
         const char* what;

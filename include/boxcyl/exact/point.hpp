@@ -84,6 +84,17 @@ inline double snap(double y, double lo, double hi) {
     return static_cast<double>(static_cast<std::int64_t>(scaled)) * power_of_two(g);
 }
 
+// An aligned or canonical box's bounds; nullopt for a turned box.
+struct Bounds {
+    Vec3<double> lo, hi;
+};
+template <class Box>
+std::optional<Bounds> bounds_of(const Box& b) {
+    if constexpr (std::is_same_v<Box, AlignedBox<double>>) return Bounds{b.min, b.max};
+    else if constexpr (std::is_same_v<Box, CanonicalBox<double>>) return Bounds{-b.extents, b.extents};
+    else return std::nullopt;
+}
+
 }  // namespace point_detail
 
 // Whether p lies in the closed cylinder c, when the operands' spans make the test exact (see the top);
@@ -113,14 +124,9 @@ inline std::optional<bool> inside_exactly(const Vec3<double>& p, const Cylinder<
 // beside the cylinder) that point is a touching point. False: not proved (never a miss).
 template <class Box>
 bool hit_at_a_point(const Box& b, const Cylinder<double>& c) {
-    Vec3<double> lo, hi;
-    if constexpr (std::is_same_v<Box, AlignedBox<double>>) {
-        lo = b.min, hi = b.max;
-    } else if constexpr (std::is_same_v<Box, CanonicalBox<double>>) {
-        lo = -b.extents, hi = b.extents;
-    } else {
-        return false;  // a turned box's points are not doubles
-    }
+    const std::optional<point_detail::Bounds> bounds = point_detail::bounds_of(b);
+    if (!bounds) return false;  // a turned box's points are not doubles
+    const auto& [lo, hi] = *bounds;
     const Vec3<double> mid{0.5 * lo[0] + 0.5 * hi[0], 0.5 * lo[1] + 0.5 * hi[1], 0.5 * lo[2] + 0.5 * hi[2]};
     const double aa = dot(c.axis, c.axis);
     const double half = 0.5 * c.height / std::sqrt(aa);
@@ -141,14 +147,9 @@ bool hit_at_a_point(const Box& b, const Cylinder<double>& c) {
 // 2^1023). nullopt otherwise (another axis, another box kind, operands too wide).
 template <class Box>
 std::optional<bool> decide_along_an_axis(const Box& b, const Cylinder<double>& c) {
-    Vec3<double> lo, hi;
-    if constexpr (std::is_same_v<Box, AlignedBox<double>>) {
-        lo = b.min, hi = b.max;
-    } else if constexpr (std::is_same_v<Box, CanonicalBox<double>>) {
-        lo = -b.extents, hi = b.extents;
-    } else {
-        return std::nullopt;  // a turned box is no product along the axis
-    }
+    const std::optional<point_detail::Bounds> bounds = point_detail::bounds_of(b);
+    if (!bounds) return std::nullopt;  // a turned box is no product along the axis
+    const auto& [lo, hi] = *bounds;
     int z = -1;
     for (int i = 0; i < 3; ++i)
         if (c.axis[i] != 0) {
