@@ -55,7 +55,8 @@ std::optional<bool> integer_answer(const Case& c) {
 }
 
 struct StageTally {
-    long cases = 0, judged = 0, judged_parallelepiped = 0, hits = 0, point_hits = 0, exact_stage = 0, wrong = 0;
+    long cases = 0, judged = 0, judged_parallelepiped = 0, hits = 0, point_hits = 0, axis_decided = 0, exact_stage = 0,
+         wrong = 0;
     void check(const Case& c, const std::string& where) {
         ++cases;
         const bool want = oracle_answer(c);
@@ -73,6 +74,12 @@ struct StageTally {
                 ADD_FAILURE() << where << ": parallelepiped stage answered " << got << ", oracle " << want << "\n  "
                               << describe(c);
         }
+        const std::optional<bool> along =
+            with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return exact::decide_along_an_axis(b, cyl); });
+        axis_decided += along.has_value();
+        if (along && *along != want && ++wrong <= 10)
+            ADD_FAILURE() << where << ": decide_along_an_axis answered " << *along << ", oracle " << want << "\n  "
+                          << describe(c);
         const bool point_hit =
             with_box(c, [](const auto& b, const Cylinder<double>& cyl) { return exact::hit_at_a_point(b, cyl); });
         point_hits += point_hit;
@@ -86,9 +93,10 @@ struct StageTally {
                           << describe(c);
     }
     void print(const char* what) const {
-        std::printf("%s: %ld cases, %ld judged by §4 in integers, %ld by the parallelepiped test, %ld hits (%ld proved "
-                    "by one point in double), %ld reached the exact stage, %ld wrong\n",
-                    what, cases, judged, judged_parallelepiped, hits, point_hits, exact_stage, wrong);
+        std::printf("%s: %ld cases, %ld judged by §4 in integers, %ld by the parallelepiped test, %ld decided along a "
+                    "coordinate axis in double, %ld hits (%ld proved by one point in double), %ld reached the exact "
+                    "stage, %ld wrong\n",
+                    what, cases, judged, judged_parallelepiped, axis_decided, hits, point_hits, exact_stage, wrong);
     }
 };
 
@@ -333,26 +341,91 @@ TEST(ExactPoint, InsideExactlyAgreesWithRationals) {
 // The voxels beside a cylinder whose caps and side touch cell faces exactly (the unit cells of
 // [-10, 11]³, radius 8, height 16, axis z at the grid node 0): each cell the point proves is a hit by
 // the oracle, and the cells touching a cap, the side or a rim are proved.
-TEST(ExactPoint, HitsTouchingVoxels) {
-    const Cylinder<double> c{{0, 0, 0}, {0, 0, 1}, 8, 16};
-    long proved = 0;
+const Cylinder<double> kVoxelCylinder{{0, 0, 0}, {0, 0, 1}, 8, 16};
+std::vector<Case> voxel_cases() {
+    std::vector<Case> out;
     for (int i = -10; i < 11; ++i)
         for (int j = -10; j < 11; ++j)
             for (int k = -10; k < 11; ++k) {
                 Case q;
                 q.kind = BoxKind::aligned;
                 q.aligned = {{double(i), double(j), double(k)}, {i + 1.0, j + 1.0, k + 1.0}};
-                q.cylinder = c;
-                if (!exact::hit_at_a_point(q.aligned, c)) continue;
-                ++proved;
-                ASSERT_TRUE(oracle_answer(q)) << describe(q);
+                q.cylinder = kVoxelCylinder;
+                out.push_back(q);
             }
+    return out;
+}
+
+TEST(ExactPoint, HitsTouchingVoxels) {
+    const Cylinder<double>& c = kVoxelCylinder;
+    long proved = 0;
+    for (const Case& q : voxel_cases()) {
+        if (!exact::hit_at_a_point(q.aligned, c)) continue;
+        ++proved;
+        ASSERT_TRUE(oracle_answer(q)) << describe(q);
+    }
     std::printf("hit_at_a_point: %ld voxels proved\n", proved);
     const AlignedBox<double> cap{{2, 3, 8}, {3, 4, 9}}, side{{8, 0, 3}, {9, 1, 4}}, rim{{8, 0, 8}, {9, 1, 9}},
         below_rim{{8, -1, -9}, {9, 0, -8}};
     for (const AlignedBox<double>& b : {cap, side, rim, below_rim}) EXPECT_TRUE(exact::hit_at_a_point(b, c));
     EXPECT_TRUE(exact::hit_at_a_point(CanonicalBox<double>{{1, 1, 1}}, Cylinder<double>{{9, 0, 0}, {0, 0, 1}, 8, 2}));
     EXPECT_FALSE(exact::hit_at_a_point(AlignedBox<double>{{9, 0, 0}, {10, 1, 1}}, c));
+}
+
+// A cylinder along a coordinate axis beside an aligned box, decided whole in double: every voxel of the
+// touching voxel set (hits and misses), in every rounding mode, against the oracle; hand-made cases along
+// each axis, with a negative or longer axis vector, far from the origin, and operands too wide.
+TEST(ExactPoint, AlongAnAxisDecidesEveryVoxel) {
+    const Cylinder<double>& c = kVoxelCylinder;
+    long cells = 0;
+    for (const Case& q : voxel_cases()) {
+        const bool want = oracle_answer(q);
+        ++cells;
+        for (const int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+            const RoundingMode guard(mode);
+            ASSERT_EQ(exact::decide_along_an_axis(q.aligned, c), std::optional<bool>(want))
+                << mode_name(mode) << ": " << describe(q);
+        }
+    }
+    EXPECT_EQ(cells, 9261);
+    struct Known {
+        const char* what;
+        AlignedBox<double> box;
+        Cylinder<double> cyl;
+        std::optional<bool> answer;
+    };
+    const AlignedBox<double> unit{{0, 0, 0}, {1, 1, 1}};
+    const Known known[] = {
+        {"side on face, axis -3z", unit, {{3, 0.5, 0.5}, {0, 0, -3}, 2, 1}, true},
+        {"side on face, axis 2x", unit, {{0.5, 2.5, 0.5}, {2, 0, 0}, 1.5, 1}, true},
+        {"side a quarter off, axis 2x", unit, {{0.5, 2.5, 0.5}, {2, 0, 0}, 1.25, 1}, false},
+        {"apart along the axis y", unit, {{4, 5, 0.5}, {0, 1, 0}, 5, 1}, false},
+        {"rim on vertex, axis y", unit, {{4, 0.5, 5}, {0, 1, 0}, 5, 1}, true},
+        {"rim short of vertex, axis y", unit, {{4, 0.5, 5}, {0, 1, 0}, 4.5, 1}, false},
+        {"cap on face", unit, {{0.5, 0.5, 2}, {0, 0, 1}, 0.25, 2}, true},
+        {"cap a quarter off", unit, {{0.5, 0.5, 2.25}, {0, 0, 1}, 0.25, 2}, false},
+        {"segment through the box", unit, {{0.5, 0.5, 0.5}, {0, 0, 1}, 0, 4}, true},
+        {"segment beside the box", unit, {{1.5, 0.5, 0.5}, {0, 0, 1}, 0, 4}, false},
+        {"drill hole in a UTM block", {{500000, 4200000, 1190}, {500001, 4200001, 1191}},
+         {{500000.5, 4200000.25, 1200}, {0, 0, 1}, 0.0625, 20}, true},
+        {"drill hole beside a UTM block", {{500001, 4200000, 1190}, {500002, 4200001, 1191}},
+         {{500000.5, 4200000.25, 1200}, {0, 0, 1}, 0.0625, 20}, false},
+        {"tilted axis", unit, {{0.5, 0.5, 2}, {0, 0x1p-30, 1}, 0.25, 2}, std::nullopt},
+        {"radius one ulp off", unit, {{3, 0.5, 0.5}, {0, 0, 1}, std::nextafter(2.0, 3.0), 1}, std::nullopt},
+    };
+    for (const Known& k : known) {
+        Case q;
+        q.kind = BoxKind::aligned;
+        q.aligned = k.box;
+        q.cylinder = k.cyl;
+        if (k.answer) {
+            ASSERT_EQ(oracle_answer(q), *k.answer) << k.what << " (the case itself is wrong): " << describe(q);
+        }
+        for (const int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+            const RoundingMode guard(mode);
+            EXPECT_EQ(exact::decide_along_an_axis(k.box, k.cyl), k.answer) << k.what << " in " << mode_name(mode);
+        }
+    }
 }
 
 TEST(ExactStage, DyadicDecompositionIsExact) {

@@ -1,4 +1,9 @@
-// One point tested exactly in plain double: whether a point of doubles lies in the closed cylinder,
+// Exact decisions in plain double for inputs of few bits. First, a cylinder whose axis lies along a
+// coordinate axis beside an aligned or canonical box (a drill hole, a voxel, a tool along z): both are
+// products of an interval along that axis and a plane shape across it, so they meet exactly when the
+// intervals overlap and the box's cross-section rectangle comes within r of the axis — a complete
+// decision, hits and misses alike (decide_along_an_axis). Then one point tested exactly in plain double:
+// whether a point of doubles lies in the closed cylinder,
 // decided without rounding where the inputs are integers of few bits times one power of two (voxels,
 // integer and binary-fraction coordinates). There every operation of the test is exact, in every
 // rounding mode, so a point ON the surface is decided too — the case of shapes that touch exactly,
@@ -79,6 +84,17 @@ inline double snap(double y, double lo, double hi) {
     return static_cast<double>(static_cast<std::int64_t>(scaled)) * power_of_two(g);
 }
 
+// An aligned or canonical box's bounds; nullopt for a turned box.
+struct Bounds {
+    Vec3<double> lo, hi;
+};
+template <class Box>
+std::optional<Bounds> bounds_of(const Box& b) {
+    if constexpr (std::is_same_v<Box, AlignedBox<double>>) return Bounds{b.min, b.max};
+    else if constexpr (std::is_same_v<Box, CanonicalBox<double>>) return Bounds{-b.extents, b.extents};
+    else return std::nullopt;
+}
+
 }  // namespace point_detail
 
 // Whether p lies in the closed cylinder c, when the operands' spans make the test exact (see the top);
@@ -108,14 +124,9 @@ inline std::optional<bool> inside_exactly(const Vec3<double>& p, const Cylinder<
 // beside the cylinder) that point is a touching point. False: not proved (never a miss).
 template <class Box>
 bool hit_at_a_point(const Box& b, const Cylinder<double>& c) {
-    Vec3<double> lo, hi;
-    if constexpr (std::is_same_v<Box, AlignedBox<double>>) {
-        lo = b.min, hi = b.max;
-    } else if constexpr (std::is_same_v<Box, CanonicalBox<double>>) {
-        lo = -b.extents, hi = b.extents;
-    } else {
-        return false;  // a turned box's points are not doubles
-    }
+    const std::optional<point_detail::Bounds> bounds = point_detail::bounds_of(b);
+    if (!bounds) return false;  // a turned box's points are not doubles
+    const auto& [lo, hi] = *bounds;
     const Vec3<double> mid{0.5 * lo[0] + 0.5 * hi[0], 0.5 * lo[1] + 0.5 * hi[1], 0.5 * lo[2] + 0.5 * hi[2]};
     const double aa = dot(c.axis, c.axis);
     const double half = 0.5 * c.height / std::sqrt(aa);
@@ -125,6 +136,48 @@ bool hit_at_a_point(const Box& b, const Cylinder<double>& c) {
     for (int i = 0; i < 3; ++i) p[i] = point_detail::snap(c.center[i] + s * c.axis[i], lo[i], hi[i]);
     const std::optional<bool> in = inside_exactly(p, c);
     return in && *in;
+}
+
+// The decision for an aligned or canonical box and a cylinder whose axis has one nonzero component z:
+// they meet iff [lo_z, hi_z] meets [C_z − h/2, C_z + h/2] and the rectangle's point nearest the axis,
+// q = clamp(C, lo, hi) − C across z, has |q|² ≤ r². Exact where, on each coordinate, lo, hi and C span at
+// most 52 bits (the differences d = lo − C, hi − C are then doubles: integers below 2^53 in their unit),
+// the doubling 2d is exact (|d| below 2^1021), and q and r together span at most 25 bits, so that
+// q_x² + q_y² and r² are integers below 2^52 in the square of their unit (kept above 2^-1074 and below
+// 2^1023). nullopt otherwise (another axis, another box kind, operands too wide).
+template <class Box>
+std::optional<bool> decide_along_an_axis(const Box& b, const Cylinder<double>& c) {
+    const std::optional<point_detail::Bounds> bounds = point_detail::bounds_of(b);
+    if (!bounds) return std::nullopt;  // a turned box is no product along the axis
+    const auto& [lo, hi] = *bounds;
+    int z = -1;
+    for (int i = 0; i < 3; ++i)
+        if (c.axis[i] != 0) {
+            if (z >= 0) return std::nullopt;
+            z = i;
+        }
+    if (z < 0) return std::nullopt;
+    using point_detail::Span;
+    Vec3<double> dlo, dhi;
+    for (int i = 0; i < 3; ++i) {
+        Span s;
+        s.add(lo[i]), s.add(hi[i]), s.add(c.center[i]);
+        if (s.bits() > 52 || s.top > 1020 || (!s.empty() && s.low < -1074)) return std::nullopt;
+        dlo[i] = lo[i] - c.center[i], dhi[i] = hi[i] - c.center[i];
+    }
+    if (!(2 * dlo[z] <= c.height && 2 * dhi[z] >= -c.height)) return false;  // apart along the axis
+    Span across;
+    double q[2];
+    int n = 0;
+    for (int i = 0; i < 3; ++i)
+        if (i != z) {
+            q[n] = dlo[i] > 0 ? dlo[i] : dhi[i] < 0 ? dhi[i] : 0.0;
+            across.add(q[n++]);
+        }
+    across.add(c.radius);
+    if (across.empty()) return true;  // q = 0 and r = 0: the axis passes through the box
+    if (across.bits() > 25 || 2 * across.top + 2 > 1023 || 2 * across.low < -1074) return std::nullopt;
+    return q[0] * q[0] + q[1] * q[1] <= c.radius * c.radius;
 }
 
 }  // namespace boxcyl::exact

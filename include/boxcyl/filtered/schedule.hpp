@@ -123,10 +123,12 @@ inline constexpr auto sandwiched = [](auto& q) -> Verdict {
 };
 template <exact::Tier tier>
 inline constexpr auto exact_stage = [](auto& q) -> Verdict { return exact::answer(q.box, q.cyl, tier); };
-// Narrow inputs: one box point tested exactly in double first (exact/point.hpp: a few dozen
-// operations, where such shapes mostly touch exactly on a cap, a side or a rim), then the exact stage in
-// fixed-width integers.
+// Narrow inputs: exact decisions in plain double first (exact/point.hpp: a few dozen operations) — a
+// cylinder along a coordinate axis beside an aligned box decided whole, else one box point tested, where
+// such shapes mostly touch exactly on a cap, a side or a rim — then the exact stage in fixed-width
+// integers.
 inline constexpr auto exact_narrow_stage = [](auto& q) -> Verdict {
+    if (const Verdict v = exact::decide_along_an_axis(q.box, q.cyl)) return v;
     if (exact::hit_at_a_point(q.box, q.cyl)) return true;
     return exact::answer(q.box, q.cyl, exact::Tier::fixed);
 };
