@@ -49,6 +49,7 @@
 #include <cstddef>    // std::size_t
 #include <cstdint>    // std::int64_t
 #include <cstring>    // std::memcpy
+#include <numbers>    // std::numbers::pi
 #include <limits>     // infinities, denorm_min
 #include <optional>   // exact::inside_exactly's answer
 #include <span>       // the batch API's columns
@@ -265,7 +266,7 @@ private:
             const double side = static_cast<double>(hi[a] - lo[a]) * g_.cell_size[a];
             volume *= side, diagonal2 += side * side;
         }
-        const double piece = 3.14159 * c_.radius * c_.radius * std::min(c_.height, std::sqrt(diagonal2));
+        const double piece = std::numbers::pi * c_.radius * c_.radius * std::min(c_.height, std::sqrt(diagonal2));
         return piece >= 0.5 * volume;
     }
 

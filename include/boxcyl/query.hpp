@@ -224,6 +224,7 @@ BOXCYL_FORCE_INLINE inline void require_valid(const Box& box, const Cylinder<T>&
 #define BOXCYL_DEFAULT_QUERY(box, cyl) return detail::dispatch(box, cyl, QueryOptions{})
 #else
 #define BOXCYL_DEFAULT_QUERY(box, cyl)                                                                   \
+    (void)(box), (void)(cyl);                                                                            \
     static_assert(detail::dependent_false<T>,                                                            \
                   "boxcyl: the default query is exact and needs the exact backend: link boxcyl::exact "  \
                   "(GMP), or choose the plain double path explicitly: "                                   \

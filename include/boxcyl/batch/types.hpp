@@ -52,7 +52,7 @@ struct Options {
     // is_valid. Parallelepipeds call is_valid per box.
     bool check_boxes = false;
     // Cancellation: every thread looks at it before each 64-box block (the clearance query: before
-    // each group of up to eight, whose later probes it answers together), and once a stop is requested
+    // each group of up to 32 blocks, whose later probes it answers together), and once a stop is requested
     // the call throws Stopped (the answers written so far are of whole blocks; the others are
     // unspecified). A default token never stops; looking costs a load per block.
     std::stop_token stop = {};
