@@ -270,6 +270,40 @@ void expect_answer(const Box& box, const Cylinder<double>& cyl, bool want, const
     EXPECT_EQ(intersects(box, cyl), want) << what << " (default query)";
 }
 
+// is_valid reads finiteness off the bits of floats and doubles: every non-finite value of either type is
+// refused in every field, and every finite one (subnormals, ±max, −0) accepted where the field allows it.
+template <class T>
+void expect_bitwise_finiteness() {
+    const T values[] = {std::numeric_limits<T>::quiet_NaN(), -std::numeric_limits<T>::quiet_NaN(),
+                        std::numeric_limits<T>::signaling_NaN(), std::numeric_limits<T>::infinity(),
+                        -std::numeric_limits<T>::infinity(), std::numeric_limits<T>::denorm_min(),
+                        std::numeric_limits<T>::max(), -T(0), T(2)};
+    for (const T x : values) {
+        const bool finite = std::isfinite(x);
+        for (int f = 0; f < 8; ++f) {
+            Cylinder<T> c{{0, 0, 0}, {0, 0, 1}, 1, 1};
+            if (f < 3) c.center[f] = x;
+            else if (f < 6) c.axis[f - 3] = x == T(0) ? T(1) : x;
+            else if (f == 6) c.radius = x;
+            else c.height = x;
+            EXPECT_EQ(is_valid(c), finite) << "field " << f << " = " << x;
+            Parallelepiped<T> p{{0, 0, 0}, {Vec3<T>{1, 0, 0}, Vec3<T>{0, 1, 0}, Vec3<T>{0, 0, 1}}, {1, 1, 1}};
+            if (f < 3) p.center[f] = x;
+            else if (f < 6) p.axes[1][f - 3] = x;
+            else p.extents[f - 6] = x;
+            EXPECT_EQ(is_valid(p), finite) << "field " << f << " = " << x;
+            AlignedBox<T> b{{-std::numeric_limits<T>::max(), 0, 0}, {std::numeric_limits<T>::max(), 1, 1}};
+            if (f < 6) (f < 3 ? b.min : b.max)[f % 3] = (f < 3 ? -std::fabs(x) : std::fabs(x));
+            EXPECT_EQ(is_valid(b), f >= 6 || finite) << "field " << f << " = " << x;
+        }
+    }
+}
+
+TEST(InputPolicy, FinitenessIsReadOffTheBitsOfFloatsAndDoubles) {
+    expect_bitwise_finiteness<float>();
+    expect_bitwise_finiteness<double>();
+}
+
 TEST(InputPolicy, ZeroSizesAreTheExactDegenerateSolids) {
     const double above1 = std::nextafter(1.0, 2.0);
     // radius 0 and height 0: a point, touching the box's corner, then one ulp off.

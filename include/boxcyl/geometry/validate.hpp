@@ -26,8 +26,10 @@
 #pragma once
 
 #include <array>        // OrientedBox::axes
+#include <bit>          // std::bit_cast
 #include <cmath>        // std::fabs, std::isnan, std::isinf
 #include <cstddef>      // std::size_t
+#include <cstdint>      // the bits of a float or double
 #include <cstdio>       // std::snprintf
 #include <limits>       // std::numeric_limits
 #include <string>       // field names and reasons
@@ -64,21 +66,26 @@ int finite(T x) noexcept {
     return static_cast<int>(std::fabs(x) <= std::numeric_limits<T>::max());  // 0 for NaN and ±Inf
 }
 
+// finite(x) read off the bits for float and double: the exponent field is all ones only for ±Inf and
+// NaN. Integer operations cost the same for every value; floating-point ones need not (a product with a
+// subnormal operand takes a slow path on some processors: x·0 over a query's fields, the way this was
+// done before, doubled the front door's check on inputs with subnormal sizes).
 template <class T>
-int finite3(const Vec3<T>& p) noexcept {
-    return finite(p[0]) & finite(p[1]) & finite(p[2]);
+int finite_bits(T x) noexcept {
+    if constexpr (std::is_same_v<T, double>) {
+        constexpr std::uint64_t exponent = 0x7ffULL << 52;
+        return static_cast<int>((std::bit_cast<std::uint64_t>(x) & exponent) != exponent);
+    } else if constexpr (std::is_same_v<T, float>) {
+        constexpr std::uint32_t exponent = 0xffU << 23;
+        return static_cast<int>((std::bit_cast<std::uint32_t>(x) & exponent) != exponent);
+    } else {
+        return finite(x);
+    }
 }
 
-// 1 when every value is finite: x·0 is an exact ±0 for finite x and NaN for ±Inf and NaN, in every
-// rounding mode, so a sum of them is 0 exactly when all are finite — a few vectorisable flops instead of
-// a comparison per field (the front door runs this on every query). Summed pairwise: a short chain.
 template <class T>
-T zero_if_finite(const Vec3<T>& v) noexcept {
-    return (v[0] * T(0) + v[1] * T(0)) + v[2] * T(0);
-}
-template <class T>
-int all_finite(T sum_of_zeros) noexcept {
-    return static_cast<int>(sum_of_zeros == T(0));
+int finite3(const Vec3<T>& p) noexcept {
+    return finite_bits(p[0]) & finite_bits(p[1]) & finite_bits(p[2]);
 }
 
 template <class T>
@@ -278,30 +285,29 @@ Validity describe(const Parallelepiped<T>& b, const std::string& prefix) {
 template <class T>
 bool is_valid(const Cylinder<T>& c) noexcept {
     using namespace detail;
-    const T sizes = c.radius * T(0) + c.height * T(0);
-    return (all_finite((zero_if_finite(c.center) + zero_if_finite(c.axis)) + sizes) & (is_zero3(c.axis) ^ 1) &
+    return (finite3(c.center) & finite3(c.axis) & finite_bits(c.radius) & finite_bits(c.height) & (is_zero3(c.axis) ^ 1) &
             ordered(T(0), c.radius) & ordered(T(0), c.height)) != 0;
 }
 
 template <class T>
 bool is_valid(const AlignedBox<T>& b) noexcept {
     using namespace detail;
-    return (all_finite(zero_if_finite(b.min) + zero_if_finite(b.max)) & ordered(b.min[0], b.max[0]) &
+    return (finite3(b.min) & finite3(b.max) & ordered(b.min[0], b.max[0]) &
             ordered(b.min[1], b.max[1]) & ordered(b.min[2], b.max[2])) != 0;
 }
 
 template <class T>
 bool is_valid(const CanonicalBox<T>& b) noexcept {
     using namespace detail;
-    return (all_finite(zero_if_finite(b.extents)) & ordered(T(0), b.extents[0]) & ordered(T(0), b.extents[1]) &
+    return (finite3(b.extents) & ordered(T(0), b.extents[0]) & ordered(T(0), b.extents[1]) &
             ordered(T(0), b.extents[2])) != 0;
 }
 
 template <class T>
 bool is_valid(const OrientedBox<T>& b) noexcept {
     using namespace detail;
-    const bool others = (all_finite(zero_if_finite(b.center) + zero_if_finite(b.extents)) &
-                         ordered(T(0), b.extents[0]) & ordered(T(0), b.extents[1]) & ordered(T(0), b.extents[2])) != 0;
+    const bool others = (finite3(b.center) & finite3(b.extents) & ordered(T(0), b.extents[0]) &
+                         ordered(T(0), b.extents[1]) & ordered(T(0), b.extents[2])) != 0;
     // gram_clearly_ok() implies finite, non-zero axes: a NaN or ±Inf component makes a Gram entry NaN
     // or +Inf, a zero axis makes |Ai|² zero.
     if (others && detail::gram_clearly_ok(b.axes)) return true;
@@ -314,9 +320,8 @@ bool is_valid(const OrientedBox<T>& b) noexcept {
 template <class T>
 bool is_valid(const Parallelepiped<T>& b) noexcept {
     using namespace detail;
-    const T axes = (zero_if_finite(b.axes[0]) + zero_if_finite(b.axes[1])) + zero_if_finite(b.axes[2]);
-    return (all_finite((zero_if_finite(b.center) + zero_if_finite(b.extents)) + axes) & ordered(T(0), b.extents[0]) &
-            ordered(T(0), b.extents[1]) & ordered(T(0), b.extents[2])) != 0;
+    return (finite3(b.center) & finite3(b.extents) & finite3(b.axes[0]) & finite3(b.axes[1]) & finite3(b.axes[2]) &
+            ordered(T(0), b.extents[0]) & ordered(T(0), b.extents[1]) & ordered(T(0), b.extents[2])) != 0;
 }
 
 // Names the first bad field and why. `prefix` names the object in messages ("cylinder", or
