@@ -135,15 +135,15 @@ bool gram_ok(const std::array<Vec3<T>, 3>& a) noexcept {
 template <class T>
 bool gram_clearly_ok(const std::array<Vec3<T>, 3>& a) noexcept {
     if constexpr (std::is_floating_point_v<T> && sizeof(T) <= sizeof(double)) {
-        bool clear = true;
-        for (std::size_t i = 0; i < 3; ++i)
-            for (std::size_t j = i; j < 3; ++j) {
-                const double g = static_cast<double>(a[i][0]) * static_cast<double>(a[j][0]) +
-                                 static_cast<double>(a[i][1]) * static_cast<double>(a[j][1]) +
-                                 static_cast<double>(a[i][2]) * static_cast<double>(a[j][2]);
-                clear &= std::fabs(g - (i == j ? 1.0 : 0.0)) <= 0.9 * orthonormality_tolerance;
-            }
-        return clear;
+        // The six entries written out and combined without branches: as a loop GCC kept them serial
+        // (the front door runs this on every oriented query).
+        const auto entry = [&a](int i, int j, double target) {
+            const double g = static_cast<double>(a[i][0]) * static_cast<double>(a[j][0]) +
+                             static_cast<double>(a[i][1]) * static_cast<double>(a[j][1]) +
+                             static_cast<double>(a[i][2]) * static_cast<double>(a[j][2]);
+            return static_cast<int>(std::fabs(g - target) <= 0.9 * orthonormality_tolerance);
+        };
+        return (entry(0, 0, 1) & entry(1, 1, 1) & entry(2, 2, 1) & entry(0, 1, 0) & entry(0, 2, 0) & entry(1, 2, 0)) != 0;
     } else {
         return false;
     }
