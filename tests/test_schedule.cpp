@@ -12,6 +12,7 @@
 #include <random>     // std::mt19937_64
 #include <string>     // labels
 #include <tuple>      // the schedules
+#include <type_traits>  // which table
 #include <utility>    // std::pair
 #include <vector>     // the sets
 
@@ -36,7 +37,8 @@ struct Tally {
     long tried = 0, decided = 0, wrong = 0;
 };
 
-// Runs every row of `schedule` alone on (box, cylinder), in `mode`; counts into tallies by row.
+// Runs every row of `schedule` alone on (box, cylinder), in `mode`; counts into tallies by row. The rows
+// of given_schedule read the query as given, the others the prepared query.
 template <class Schedule, class Box>
 void check_rows(const Schedule& schedule, const Box& box, const Cylinder<double>& cyl, bool want, int mode,
                 std::vector<Tally>& tallies, const std::string& where) {
@@ -48,8 +50,13 @@ void check_rows(const Schedule& schedule, const Box& box, const Cylinder<double>
                     std::optional<bool> got;
                     {
                         const RoundingMode guard(mode);
-                        filtered::Prepared<Box> q(box, cyl);
-                        got = row.certify(q);
+                        if constexpr (std::is_same_v<Schedule, std::remove_cv_t<decltype(filtered::given_schedule)>>) {
+                            const filtered::Given<Box> q{box, cyl};
+                            got = row.certify(q);
+                        } else {
+                            filtered::Prepared<Box> q(box, cyl);
+                            got = row.certify(q);
+                        }
                     }
                     Tally& t = tallies[static_cast<std::size_t>(row.id)];
                     ++t.tried;
@@ -122,11 +129,14 @@ TEST_P(ScheduleRows, EveryRowIsSoundAlone) {
     std::vector<Tally> boxes(filtered::row_count), pps(filtered::row_count);
     for (std::size_t i = 0; i < s.boxes.size(); ++i)
         with_box(s.boxes[i], [&](const auto& b, const Cylinder<double>& c) {
+            check_rows(filtered::given_schedule, b, c, s.box_want[i], mode, boxes, describe(s.boxes[i]));
             check_rows(filtered::box_schedule, b, c, s.box_want[i], mode, boxes, describe(s.boxes[i]));
             return 0;
         });
     for (std::size_t i = 0; i < s.parallelepipeds.size(); ++i) {
         const auto& [p, c] = s.parallelepipeds[i];
+        check_rows(filtered::given_schedule, p, c, s.pp_want[i], mode, pps,
+                   filtered::detail::describe(p) + ", " + filtered::detail::describe(c));
         check_rows(filtered::parallelepiped_schedule, p, c, s.pp_want[i], mode, pps,
                    filtered::detail::describe(p) + ", " + filtered::detail::describe(c));
     }
@@ -343,19 +353,28 @@ TEST(Schedule, TinySizesDecideTwoScaleBoundaryPairs) {
 TEST(Schedule, StatisticsCountWhatRan) {
     filtered::Stats stats;
     const AlignedBox<double> box{{-1, -1, -1}, {1, 1, 1}};
-    EXPECT_FALSE(intersects(box, Cylinder<double>{{5, 0, 0}, {0, 0, 1}, 1, 1}, {.stats = &stats}));  // far: stage 0
+    // Near the origin: stage 0 on its direct path (the slabs do not run).
+    EXPECT_FALSE(intersects(box, Cylinder<double>{{5, 0, 0}, {0, 0, 1}, 1, 1}, {.stats = &stats}));
     EXPECT_EQ(stats.queries, 1u);
     EXPECT_EQ(stats[filtered::RowId::semi_static].misses, 1u);
     EXPECT_EQ(stats[filtered::RowId::semi_static].tried, 1u);
+    EXPECT_EQ(stats[filtered::RowId::slabs].tried, 0u);
+    // The same far from the origin for its size: the slabs, on the query as given, before the exact move.
+    const AlignedBox<double> far{{1e6 - 1, -1, -1}, {1e6 + 1, 1, 1}};
+    EXPECT_FALSE(intersects(far, Cylinder<double>{{1e6 + 5, 0, 0}, {0, 0, 1}, 1, 1}, {.stats = &stats}));
+    EXPECT_EQ(stats[filtered::RowId::slabs].misses, 1u);
+    EXPECT_EQ(stats[filtered::RowId::slabs].tried, 1u);
+    EXPECT_EQ(stats[filtered::RowId::semi_static].tried, 1u);
     // Exactly touching, integer coordinates: the exact stage for narrow inputs decides, after stage 0.
     EXPECT_TRUE(intersects(box, Cylinder<double>{{3, 0, 0}, {0, 0, 1}, 2, 1}, {.stats = &stats}));
-    EXPECT_EQ(stats.queries, 2u);
+    EXPECT_EQ(stats.queries, 3u);
     EXPECT_EQ(stats[filtered::RowId::semi_static].tried, 2u);
     EXPECT_EQ(stats[filtered::RowId::exact_narrow].hits, 1u);
     std::uint64_t decided = 0;
     for (const auto& r : stats.rows) decided += r.hits + r.misses;
-    EXPECT_EQ(decided, 2u);
+    EXPECT_EQ(decided, 3u);
     const std::string table = stats.table();
+    EXPECT_NE(table.find("| slabs | 1 | 1 |"), std::string::npos) << table;
     EXPECT_NE(table.find("| semi_static | 2 | 1 |"), std::string::npos) << table;
     EXPECT_NE(table.find("| exact_narrow | 1 | 1 |"), std::string::npos) << table;
     // Float inputs count too (widened exactly).

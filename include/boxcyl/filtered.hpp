@@ -87,16 +87,29 @@ BOXCYL_FORCE_INLINE inline Result run(const Box& box, const Cylinder<double>& cy
         if (signed_permutation(box.axes)) [[unlikely]]
             return run(OrientedBox<double>{box.center, box.axes, box.extents}, cyl, stats);
     }
-    Prepared<Box> q(box, cyl);
+    if constexpr (Recorder::enabled) ++stats.queries;
     RowId by = RowId::exact;
-    const Verdict v = walk(q, stats, by);
+    const auto checked = [&](const Verdict& v) -> const Verdict& {
 #if defined(BOXCYL_CHECK_FILTER) && BOXCYL_CHECK_FILTER
-    if (!is_exact_row(by) && *exact::answer(box, cyl) != *v)
-        throw std::logic_error("boxcyl::filtered: row " + std::string(name(by)) + " answered " +
-                               std::string(*v ? "true" : "false") + " but the exact answer differs for " +
-                               describe(box) + ", " + describe(cyl));
+        if (!is_exact_row(by) && *exact::answer(box, cyl) != *v)
+            throw std::logic_error("boxcyl::filtered: row " + std::string(name(by)) + " answered " +
+                                   std::string(*v ? "true" : "false") + " but the exact answer differs for " +
+                                   describe(box) + ", " + describe(cyl));
 #endif
-    return {*v, is_exact_row(by) || q.exact_in_pairs};
+        return v;
+    };
+    Given<Box> given{box, cyl};
+    if constexpr (std::is_same_v<Box, Parallelepiped<double>>) {
+        if (const Verdict v = walk(given, stats, by)) return {*checked(v), false};
+        Prepared<Box> q(box, cyl);
+        const Verdict v = walk(q, stats, by);
+        return {*checked(v), is_exact_row(by)};
+    } else {
+        Prepared<Box> q(box, cyl, [&] { return walk(given, stats, by); });
+        if (q.early) return {*checked(q.early), false};
+        const Verdict v = walk(q, stats, by);
+        return {*checked(v), is_exact_row(by) || q.exact_in_pairs};
+    }
 #endif
 }
 

@@ -263,11 +263,17 @@ public:
     // rescaled. A query far from the origin for its size is moved near it, exactly where that can be
     // (told from the input as given, so that stage 0's problem is computed once); one beyond stage 0's
     // range of scales is scaled to about 1, exactly where that can be.
-    BOXCYL_FORCE_INLINE Prepared(const Box& b, const Cylinder<double>& c)
+    // Off that direct path, `before_preparing()` is asked first (the pipeline's rows on the query as
+    // given): when it decides, its answer is `early` and nothing more is prepared.
+    template <class BeforePreparing>
+    BOXCYL_FORCE_INLINE Prepared(const Box& b, const Cylinder<double>& c, BeforePreparing&& before_preparing)
         : in_range(near_origin(b, c, p, far_)),
-          scaled_(in_range ? std::nullopt : prepare(b, c, p, far_, in_range, rescaled_)),
+          early(in_range ? std::nullopt : before_preparing()),
+          scaled_(in_range || early ? std::nullopt : prepare(b, c, p, far_, in_range, rescaled_)),
           box(scaled_ ? scaled_->first : b),
           cyl(scaled_ ? scaled_->second : c) {}
+    BOXCYL_FORCE_INLINE Prepared(const Box& b, const Cylinder<double>& c)
+        : Prepared(b, c, [] { return std::optional<bool>{}; }) {}
     Prepared(const Prepared&) = delete;
     Prepared& operator=(const Prepared&) = delete;
 
@@ -276,6 +282,7 @@ private:
     bool far_ = false;       // the query as given looks far from the origin (looks_far; before in_range: set by it)
 public:
     bool in_range;           // within stage 0's range of scales
+    std::optional<bool> early;  // the answer of before_preparing(), off the direct path
 
 private:
     // Stage 0's scale L (twice the largest length) more than 2^6 times the largest size (a half extent,
@@ -299,6 +306,7 @@ private:
     }
 
     static constexpr bool movable = !std::is_same_v<Box, CanonicalBox<double>>;  // (a canonical box is at the origin)
+
 
     // Nearly every query: in stage 0's range and near the origin for its size, taken as given. Kept
     // inline (prepare() below is not), since it is most of stage 0's path.

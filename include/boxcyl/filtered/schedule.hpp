@@ -23,6 +23,7 @@
 #include "boxcyl/filtered/prepared.hpp"
 #include "boxcyl/filtered/sandwich.hpp"
 #include "boxcyl/filtered/semi_static.hpp"
+#include "boxcyl/filtered/slabs.hpp"
 #include "boxcyl/filtered/stats.hpp"
 #include "boxcyl/filtered/witness_search.hpp"
 #include "boxcyl/number/bounded.hpp"
@@ -164,6 +165,24 @@ inline constexpr auto pp_clipped = [](auto& q) -> Verdict {
 using R = RowId;
 using M = Modes;
 
+// The query as given, before anything costly is prepared: the rows whose certifiers read the caller's
+// box and cylinder alone, so that the queries they decide pay for nothing else. They run where the
+// prepared query would cost more than stage 0 itself — off stage 0's direct path (Prepared: shapes far
+// from the origin for their size, moved exactly first; beyond stage 0's range of scales, rescaled
+// first; an axis it cannot use) — and for every parallelepiped, whose rows all cost more. On the
+// direct path stage 0's own tests decide the same queries at about the same cost.
+template <class Box>
+struct Given {
+    using box_type = Box;
+    const Box& box;
+    const Cylinder<double>& cyl;
+    bool nearest() const { return boxcyl::detail::round_to_nearest(); }
+};
+inline constexpr auto slab_tests = [](const auto& q) -> Verdict { return slabs::decide(q.box, q.cyl); };
+inline constexpr std::tuple given_schedule{
+    Row{R::slabs, M::any, always, slab_tests},
+};
+
 // Aligned, canonical and oriented boxes. Tiny sizes come last before the exact stage: earlier, their
 // pairs cost more than the rows after them on the queries those decide (the narrow two-scale inputs of
 // exact_series_narrow among them). Turned frames are the exception: where the clipped row fails on
@@ -224,14 +243,14 @@ struct NoStats {
 // instructions on the random benchmark set than one hand-written function).
 
 // Whether the row runs in the query's rounding mode (probed once, on the first row that asks).
-template <class Box>
-BOXCYL_FORCE_INLINE inline bool runs_in(Modes modes, Prepared<Box>& q) {
+template <class Q>
+BOXCYL_FORCE_INLINE inline bool runs_in(Modes modes, Q& q) {
     return modes == Modes::any || (modes == Modes::nearest) == q.nearest();
 }
 
-// Runs one row; true when it decided (verdict set, `by` the row).
-template <class Box, class R, class Recorder>
-BOXCYL_FORCE_INLINE inline bool try_row(const R& row, Prepared<Box>& q, Recorder& stats, Verdict& verdict, RowId& by) {
+// Runs one row on a query (Given or Prepared); true when it decided (verdict set, `by` the row).
+template <class Q, class R, class Recorder>
+BOXCYL_FORCE_INLINE inline bool try_row(const R& row, Q& q, Recorder& stats, Verdict& verdict, RowId& by) {
     if (!runs_in(row.modes, q) || !row.when(q)) return false;
     if constexpr (Recorder::enabled) {
         const auto start = std::chrono::steady_clock::now();
@@ -254,18 +273,25 @@ constexpr bool is_exact_row(RowId r) {
     return r == RowId::exact || r == RowId::exact_narrow || r == RowId::exact_series_narrow || r == RowId::exact_series;
 }
 
-// Walks the box kind's table: the first row that decides answers (`by` says which).
-template <class Box, class Recorder, std::size_t... I>
-BOXCYL_FORCE_INLINE inline Verdict walk(Prepared<Box>& q, Recorder& stats, RowId& by, std::index_sequence<I...>) {
-    if constexpr (Recorder::enabled) ++stats.queries;
+// Walks a table: the first row that decides answers (`by` says which).
+template <class Q, class Table, class Recorder, std::size_t... I>
+BOXCYL_FORCE_INLINE inline Verdict walk(const Table& table, Q& q, Recorder& stats, RowId& by, std::index_sequence<I...>) {
     Verdict verdict;
-    (try_row(std::get<I>(schedule<Box>()), q, stats, verdict, by) || ...);
+    (try_row(std::get<I>(table), q, stats, verdict, by) || ...);
     return verdict;
+}
+template <class Q, class Table, class Recorder>
+BOXCYL_FORCE_INLINE inline Verdict walk(const Table& table, Q& q, Recorder& stats, RowId& by) {
+    return walk(table, q, stats, by, std::make_index_sequence<std::tuple_size_v<Table>>{});
+}
+// The given query's rows, then the prepared query's (the box kind's table).
+template <class Box, class Recorder>
+BOXCYL_FORCE_INLINE inline Verdict walk(Given<Box>& q, Recorder& stats, RowId& by) {
+    return walk(given_schedule, q, stats, by);
 }
 template <class Box, class Recorder>
 BOXCYL_FORCE_INLINE inline Verdict walk(Prepared<Box>& q, Recorder& stats, RowId& by) {
-    constexpr std::size_t rows = std::tuple_size_v<std::remove_cvref_t<decltype(schedule<Box>())>>;
-    return walk(q, stats, by, std::make_index_sequence<rows>{});
+    return walk(schedule<Box>(), q, stats, by);
 }
 
 // The sandwich's pairs: none has a tiny size (sandwich.hpp), so this recursion is one level deep. Not

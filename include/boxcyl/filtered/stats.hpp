@@ -19,7 +19,7 @@ namespace boxcyl::filtered {
 
 // Every row of every schedule, in the order the schedules run them (docs/pipeline.md describes each).
 enum class RowId : std::uint8_t {
-    semi_static, exact_narrow, search, inequalities_bounded, exact_series_narrow, clipped, tiny_sizes,
+    slabs, semi_static, exact_narrow, search, inequalities_bounded, exact_series_narrow, clipped, tiny_sizes,
     inequalities_dd, clipped_flat, exact_series, inequalities_bounded_late, inequalities_interval, thorough_search,
     pp_fixed, pp_frame, pp_search, pp_frame_interval, pp_candidates_interval, exact,
 };
@@ -28,7 +28,7 @@ inline constexpr std::size_t row_count = static_cast<std::size_t>(RowId::exact) 
 // The name the docs and the statistics table use for a row.
 constexpr std::string_view name(RowId row) {
     constexpr std::string_view names[row_count] = {
-        "semi_static",     "exact_narrow",         "search",          "inequalities_bounded",
+        "slabs",           "semi_static",     "exact_narrow",         "search",          "inequalities_bounded",
         "exact_series_narrow", "clipped",          "tiny_sizes",      "inequalities_dd",
         "clipped_flat",    "exact_series",         "inequalities_bounded_late", "inequalities_interval",
         "thorough_search", "pp_fixed",             "pp_frame",
