@@ -8,7 +8,10 @@
 
 #include <array>      // a frame
 #include <cfenv>      // rounding modes
+#include <cmath>      // std::nextafter
 #include <cstdio>     // std::printf
+#include <limits>     // NaN
+#include <optional>   // the slabs' verdicts
 #include <random>     // std::mt19937_64
 #include <string>     // labels
 #include <tuple>      // the schedules
@@ -346,6 +349,50 @@ TEST(Schedule, TinySizesDecideTwoScaleBoundaryPairs) {
     const filtered::Result r = filtered::query(thin, touching);
     EXPECT_TRUE(r.intersect);
     EXPECT_TRUE(r.exact_used);
+}
+
+// The row slabs on hand-made queries far from the origin: it decides a clear gap, a centre inside the
+// box and a clear gap along the cylinder's axis; it leaves exactly touching shapes and a gap of one ulp
+// (below its margin) undecided, as it does an axis whose largest component is subnormal and a NaN; in
+// every rounding mode.
+TEST(Slabs, DecideClearCasesLeaveTheRest) {
+    const double x0 = 1e6;  // a block model's easting
+    const AlignedBox<double> box{{x0, 0, 0}, {x0 + 1, 1, 1}};
+    const OrientedBox<double> turned{{x0 + 0.5, 0.5, 0.5},
+                                     {Vec3<double>{0x1.6a09e667f3bcdp-1, 0x1.6a09e667f3bcdp-1, 0},
+                                      Vec3<double>{-0x1.6a09e667f3bcdp-1, 0x1.6a09e667f3bcdp-1, 0}, Vec3<double>{0, 0, 1}},
+                                     {0.5, 0.5, 0.5}};
+    const Vec3<double> z{0, 0, 1};
+    const double one_ulp_short = std::nextafter(1.0, 0.0);
+    struct Expect {
+        Cylinder<double> cyl;
+        std::optional<bool> aligned, oriented;
+        const char* what;
+    };
+    const Expect cases[] = {
+        {{{x0 + 3, 0.5, 0.5}, z, 1, 1}, false, false, "2 beyond a face, radius 1"},
+        {{{x0 + 2, 0.5, 0.5}, z, 1, 1}, std::nullopt, std::nullopt, "touching a face (the aligned box's)"},
+        {{{x0 + 2, 0.5, 0.5}, z, one_ulp_short, 1}, std::nullopt, std::nullopt, "one ulp short of a face"},
+        {{{x0 + 0.5, 0.5, 0.5}, z, 0.1, 0.1}, true, true, "centre inside"},
+        {{{x0 + 0.5, 0.5, 9}, z, 0.1, 2}, false, false, "beyond the top along the axis"},
+        {{{x0 + 0.5, 0.5, 9}, {0x1p-1060, 0, 0x1p-1070}, 0.1, 2}, std::nullopt, std::nullopt, "subnormal axis"},
+        {{{x0 + 3, 0.5, std::numeric_limits<double>::quiet_NaN()}, z, 1, 1}, std::nullopt, std::nullopt, "NaN"},
+    };
+    for (const int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+        for (const Expect& e : cases) {
+            std::optional<bool> a, o;
+            {
+                const RoundingMode guard(mode);
+                a = filtered::slabs::decide(box, e.cyl);
+                o = filtered::slabs::decide(turned, e.cyl);
+            }
+            EXPECT_EQ(a, e.aligned) << e.what << " (" << mode_name(mode) << ")";
+            EXPECT_EQ(o, e.oriented) << e.what << " (" << mode_name(mode) << ")";
+            if (o) {
+                EXPECT_EQ(*o, oracle::intersects(to_exact(turned), to_exact(e.cyl))) << e.what;
+            }
+        }
+    }
 }
 
 // The statistics: a query through the front door with QueryOptions::stats counts one query, one
