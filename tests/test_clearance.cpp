@@ -284,10 +284,10 @@ TEST(Clearance, GrownBoxDecidesAFaceNearTheRim) {
     EXPECT_TRUE(within_distance(box, kUnit, 1.2));
 }
 
-// Random pairs (bench_clearance's set) that two steps of the quick search leave open and more steps
-// decide: a box along the rim, where alternating projections converge slowly. The quick bounds answer
-// them, as the exact query does.
-TEST(Clearance, QuickBoundsTakeMoreStepsWhereTwoLeaveThePairOpen) {
+// Random pairs (bench_clearance's set) that two steps of the quick search leave open and its Newton
+// steps decide: a box along the rim, where alternating projections converge slowly. The quick bounds
+// answer them, as the exact query does.
+TEST(Clearance, QuickBoundsTakeNewtonStepsWhereTwoLeaveThePairOpen) {
     namespace sep = filtered::separation;
     struct Example {
         AlignedBox<double> box;
