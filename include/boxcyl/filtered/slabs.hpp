@@ -38,13 +38,13 @@
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/geometry/parallelepiped.hpp"
 #include "boxcyl/geometry/validate.hpp"  // orthonormality_tolerance
+#include "boxcyl/geometry/vec3.hpp"      // dot
 #include "boxcyl/number/traits.hpp"       // BOXCYL_FORCE_INLINE
 
 namespace boxcyl::filtered::slabs {
 
 namespace detail {
 
-inline double dot(const Vec3<double>& u, const Vec3<double>& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
 inline double norm1(const Vec3<double>& v) { return std::fabs(v[0]) + std::fabs(v[1]) + std::fabs(v[2]); }
 
 // The axis times the power of two 2^-k that brings its largest component's magnitude m into [1, 2),
