@@ -364,10 +364,12 @@ TEST_P(BatchKernels, VoxelsNearTheSurface) {
 }
 
 // The first pass alone (detail::aligned_ball_lanes: bounding boxes, then the box's centre and a ball
-// around it), on the boxes at its thresholds: point boxes a few ulps from the lateral surface and the
-// end planes, and cubes whose 1-norm ball (radius 3·half in the doubled test) or whose centre is at
-// the threshold, from both sides. Every lane it decides must agree with the scalar exact default;
-// with its allowance κ set to 0 some of these decisions must come out wrong (the test has teeth).
+// around it, then the box point nearest to C), on the boxes at its thresholds: point boxes a few ulps
+// from the lateral surface and the end planes, and cubes whose 1-norm ball (radius 3·half in the
+// doubled test), whose centre or whose corner nearest C is at the threshold, from both sides. Every
+// lane it decides must agree with the scalar exact default; with the ball's allowance κ set to 0 some
+// of these decisions must come out wrong (the test has teeth; the nearest point's tests are
+// point_tests, whose thresholds the one-ulp boundary sets probe).
 TEST(Batch, BallPassDecisionsAreExact) {
     const std::vector<Cylinder<double>> cyls{
         {{0.3, -0.2, 0.1}, {0.8, 0.5, 0.33}, 2, 40},
@@ -391,12 +393,14 @@ TEST(Batch, BallPassDecisionsAreExact) {
             const double wl = std::sqrt(dot(w, w));
             w = Vec3<double>{w[0] / wl, w[1] / wl, w[2] / wl};
             const double t = unit(rng) * H, half = std::ldexp(1.0, -4 - n % 12) * (r + H);
-            // (radial offset, axial position, half side) of the box's centre
+            // (radial offset, axial position, half side) of the box's centre, or with corner = 1 of the box's
+            // corner nearest C (the box reaches away from C by twice the half side along each axis)
             const double ends = (n % 2 ? 1 : -1) * H;
-            const double probes[][3] = {
-                {r, t, 0}, {r, ends * 0.5, 0}, {r * 0.5, ends, 0},       // points on the surface
-                {r + 3 * half, t, half}, {r * 0.5, ends + (n % 2 ? 3 : -3) * half, half},  // 1-norm balls touching
-                {r, t, half}, {r * 0.25, ends, half},                   // centres on the surface
+            const double probes[][4] = {
+                {r, t, 0, 0}, {r, ends * 0.5, 0, 0}, {r * 0.5, ends, 0, 0},  // points on the surface
+                {r + 3 * half, t, half, 0}, {r * 0.5, ends + (n % 2 ? 3 : -3) * half, half, 0},  // 1-norm balls touching
+                {r, t, half, 0}, {r * 0.25, ends, half, 0},                  // centres on the surface
+                {r, t, half, 1}, {r * 0.5, ends, half, 1},                   // nearest corners on the surface
             };
             for (const auto& pr : probes) {
                 const Vec3<double> p = c.center + pr[1] * u + pr[0] * w;
@@ -404,7 +408,14 @@ TEST(Batch, BallPassDecisionsAreExact) {
                     Vec3<double> q = p;
                     for (int j = 0; j < 3; ++j)
                         for (int step = 0; step < (k < 0 ? -k : k); ++step) q[j] = std::nextafter(q[j], k < 0 ? -1e300 : 1e300);
-                    boxes.push_back({ci, {{q[0] - pr[2], q[1] - pr[2], q[2] - pr[2]}, {q[0] + pr[2], q[1] + pr[2], q[2] + pr[2]}}});
+                    AlignedBox<double> b{{q[0] - pr[2], q[1] - pr[2], q[2] - pr[2]}, {q[0] + pr[2], q[1] + pr[2], q[2] + pr[2]}};
+                    if (pr[3] != 0)
+                        for (int j = 0; j < 3; ++j) {
+                            const bool away = q[j] >= c.center[j];
+                            b.min[j] = away ? q[j] : q[j] - 2 * pr[2];
+                            b.max[j] = away ? q[j] + 2 * pr[2] : q[j];
+                        }
+                    boxes.push_back({ci, b});
                 }
             }
         }
@@ -431,7 +442,7 @@ TEST(Batch, BallPassDecisionsAreExact) {
     run(false, decided, wrong);
     std::printf("first pass: %zu boxes at its thresholds, %ld decided, %ld wrong\n", boxes.size(), decided, wrong);
     EXPECT_EQ(wrong, 0);
-    EXPECT_GT(decided, 1000) << "the first pass decides the probes a few ulps clear of its thresholds (3255 of 29400 when written)";
+    EXPECT_GT(decided, 1000) << "the first pass decides the probes a few ulps clear of its thresholds (10821 of 47250 when written)";
     run(true, decided, wrong);
     std::printf("first pass with kappa = 0: %ld decided, %ld wrong\n", decided, wrong);
     EXPECT_GT(wrong, 0) << "with no error allowance some threshold boxes must be decided wrongly: the data lacks teeth";

@@ -51,8 +51,9 @@
 // has: one portable binary that uses the machine's full width. Threads: contiguous ranges of 64-box
 // blocks (batch/split.hpp); Options::threads = 0 uses std::thread::hardware_concurrency(), and a
 // batch smaller than 32768 boxes per thread uses fewer threads (one below 65536 boxes).
-// Cancellation: Options::stop, a std::stop_token each thread looks at before every 64-box block; a
-// requested stop ends the call with batch::Stopped within a block's time per thread.
+// Cancellation: Options::stop, a std::stop_token each thread looks at before each group of up to 32
+// blocks of 64 boxes and before each block's scalar work; a requested stop ends the call with
+// batch::Stopped within a group's filtering or a block's scalar work per thread.
 //
 // Preconditions: validate() holds for the cylinder and every box (asserted in debug builds; with
 // Options::check_boxes the boxes are checked instead, and an invalid one throws InvalidBox); the

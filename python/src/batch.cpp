@@ -12,8 +12,8 @@
 // element, other options, one box against many cylinders) is the scalar query (with a margin the
 // scalar clearance query) per element on those threads, each element checked by boxcyl::is_valid. An element that fails a check is named by boxcyl::validate
 // ("boxes[17].max[0]: is less than boxes[17].min[0]"), and the batch reports the first by index.
-// Every loop looks at the stop token (Ctrl-C): the batch API before each 64-box block, the others
-// before each element. The distances (distances()) are the scalar boxcyl::distance (or
+// Every loop looks at the stop token (Ctrl-C): the batch API before each group of 64-box blocks and
+// each block's exact work, the others before each element. The distances (distances()) are the scalar boxcyl::distance (or
 // boxcyl::signed_distance) per element, on those threads, each element checked as above.
 #if defined(__SSE2__)
 #include <emmintrin.h>  // the aligned boxes' gather, two at a time

@@ -29,9 +29,9 @@ inline constexpr auto kSignalPeriod = std::chrono::milliseconds(10);
 // short (a few milliseconds at most), so it runs on this thread, uninterrupted. Otherwise a runner
 // thread does it (the batch API then adds its own threads) while this one runs Python's signal
 // handlers every kSignalPeriod: when one raises (KeyboardInterrupt for Ctrl-C), the token's stop is
-// requested — the library's batch threads look at it before every 64-box block, the module's loops
-// between elements — and that exception propagates once the runner has returned. Otherwise the
-// work's own exception, if any, is rethrown here.
+// requested — the library's batch threads look at it before each group of 64-box blocks and each
+// block's exact work, the module's loops between elements — and that exception propagates once the
+// runner has returned. Otherwise the work's own exception, if any, is rethrown here.
 template <class Work>
 void run_interruptibly(bool brief, Work&& work) {
     if (brief) {

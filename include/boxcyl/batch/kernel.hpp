@@ -318,6 +318,10 @@ struct LaterBalls {
     std::uint64_t says = 0;
 };
 
+// filter_block's `later` for a caller that runs the later passes itself, over a group of blocks
+// (group_bits): the first pass alone.
+struct FirstPassOnly {};
+
 // The filter's answers for boxes [begin, begin + count), count ≤ 64, as bits 0..count−1: `hit` for the
 // lanes it proves to meet the cylinder, `open` for those it leaves undecided (the others it proves to
 // miss). The first pass runs over every vector of boxes without a branch per lane (aligned sources load
@@ -329,9 +333,9 @@ struct LaterBalls {
 // aligned and oriented sources by a few vector operations on the loaded lanes (is_valid over the block
 // only when they cannot clear a vector), else by is_valid per box; the first invalid one throws
 // InvalidBox.
-// later (LaterBalls*): the clearance form's later probes, answered on the way (a separate instance, so
-// that the plain batch's first pass stays as it was). That form's caller (group_bits) runs the later
-// passes itself, over the lanes of a whole group of blocks: this instance returns after the first pass.
+// later: nullptr, every pass here; FirstPassOnly, the first pass alone (the caller, group_bits, runs
+// the later passes over the lanes of a whole group of blocks); LaterBalls*, the same for the clearance
+// form, whose later probes the first pass answers on the way where it can.
 template <class Source, class Later = std::nullptr_t>
 BlockFilter filter_block(const CylinderFilter& f, const Source& s, std::size_t begin, std::size_t count, bool check,
                          Stats& st, Later later = nullptr) {
@@ -347,16 +351,19 @@ BlockFilter filter_block(const CylinderFilter& f, const Source& s, std::size_t b
             s.load_lanes(begin + k, valid, lo, hi);
             if (check && !plausible(lo, hi)) suspect = true;
             if constexpr (std::is_same_v<Later, LaterBalls*>) {
-                BallTerms x;
-                bool computed = false;
-                r = aligned_ball_lanes(f, lo, hi, &x, &computed);
+                FirstPassTerms t;
+                r = aligned_ball_lanes(f, lo, hi, &t);
                 const std::uint64_t in_range = (std::uint64_t{1} << valid) - 1;
-                // Only where the first probe's ball proves a hit (its other lanes it answers itself, or
-                // its whole filter takes them up).
-                if (computed && later->count > 0 && stdx::any_of(r.hit)) {
+                // Only where the first probe proves a hit (its other lanes it answers itself, or its
+                // whole filter takes them up): the later probes' ball tests, then, where the first
+                // probe's box point nearest to C was inside it and no ball answered, that point.
+                if (t.computed && later->count > 0 && stdx::any_of(r.hit)) {
                     LaneMask says(false);
                     for (std::size_t i = 0; i < later->count; ++i)
-                        if (later->filter[i]->usable) says = says || ball_inside(later->filter[i]->ball, x);
+                        if (later->filter[i]->usable) says = says || ball_inside(later->filter[i]->ball, t.x);
+                    if (t.tried && stdx::any_of(t.by_point && !says))
+                        for (std::size_t i = 0; i < later->count; ++i)
+                            if (later->filter[i]->usable) says = says || (t.by_point && point_inside(*later->filter[i], t.w));
                     if (stdx::any_of(says)) later->says |= (to_bits({says, says}).hit & in_range) << k;
                 }
             } else {
@@ -380,7 +387,7 @@ BlockFilter filter_block(const CylinderFilter& f, const Source& s, std::size_t b
     if (suspect)
         for (std::size_t i = begin; i < begin + count; ++i)
             if (!is_valid(s.box(i))) throw InvalidBox(i);
-    if constexpr (!std::is_same_v<Later, LaterBalls*>)
+    if constexpr (std::is_same_v<Later, std::nullptr_t>)
         later_passes(f, s, begin, std::span<std::uint64_t>(&bits, 1), std::span<std::uint64_t>(&open, 1), st);
     return {bits, open};
 }
@@ -425,19 +432,36 @@ void assert_valid(const Source& s, std::size_t begin, std::size_t count, bool ch
 #endif
 }
 
-// Answers for boxes [begin, begin + count), count ≤ 64, as bits 0..count−1: the filter, then the scalar
-// exact default for each lane it left undecided, one box at a time.
+// A stop requested (Options::stop) before a block's scalar work ends the call: that work, at up to
+// microseconds a box, is what a group of blocks can spend beyond its filter's few microseconds.
+inline void stop_if_requested(const Options& opt, std::uint64_t open) {
+    if (open != 0 && opt.stop.stop_requested()) throw Stopped();
+}
+
+// Answers for up to kGroupBlocks blocks of 64 boxes from `begin` (n boxes in all), block b's as the bits
+// of `bits[b]`: the filter's first pass block by block (checking the boxes), its later passes over the
+// lanes the first left in all the group's blocks, gathered into full vectors (near the surface a block
+// leaves a lane or two: a vector per block would run mostly empty), then the scalar exact default for
+// each lane still undecided, one box at a time.
 template <class Source>
-std::uint64_t block_bits(const Meets& q, const Source& s, std::size_t begin, std::size_t count, bool check, Stats& st) {
-    assert_valid(s, begin, count, check);
-    const BlockFilter r = filter_block(q.filter, s, begin, count, check, st);
-    std::uint64_t bits = r.hit;
-    for (std::uint64_t o = r.open; o != 0; o &= o - 1) {
-        const std::size_t i = begin + static_cast<std::size_t>(std::countr_zero(o));
-        if (filtered::query(s.box(i), q.cylinder).intersect) bits |= std::uint64_t{1} << (i - begin);
-        ++st.exact_lanes;
+void group_bits(const Meets& q, const Source& s, std::size_t begin, std::size_t n, std::size_t blocks, const Options& opt,
+                Stats& st, std::uint64_t* bits) {
+    std::uint64_t open[kGroupBlocks];
+    for (std::size_t b = 0; b < blocks; ++b) {
+        const std::size_t at = begin + 64 * b, count = std::min<std::size_t>(64, n - at);
+        assert_valid(s, at, count, opt.check_boxes);
+        const BlockFilter r = filter_block(q.filter, s, at, count, opt.check_boxes, st, FirstPassOnly{});
+        bits[b] = r.hit, open[b] = r.open;
     }
-    return bits;
+    later_passes(q.filter, s, begin, std::span<std::uint64_t>(bits, blocks), std::span<std::uint64_t>(open, blocks), st);
+    for (std::size_t b = 0; b < blocks; ++b) {
+        stop_if_requested(opt, open[b]);
+        for (std::uint64_t o = open[b]; o != 0; o &= o - 1) {
+            const auto l = static_cast<std::size_t>(std::countr_zero(o));
+            if (filtered::query(s.box(begin + 64 * b + l), q.cylinder).intersect) bits[b] |= std::uint64_t{1} << l;
+            ++st.exact_lanes;
+        }
+    }
 }
 
 inline bool scalar_within(const Clearance& q, const AlignedBox<double>& b) { return q.aligned(b, q.cylinder, q.margin); }
@@ -452,9 +476,10 @@ inline bool scalar_within(const Clearance& q, const OrientedBox<double>& b) { re
 // answered by the first probe that decides it the way that probe can answer; the scalar clearance
 // query answers the lanes none decides. `bits[b]` receives block b's answers.
 template <class Source>
-void group_bits(const Within& w, const Source& s, std::size_t begin, std::size_t n, std::size_t blocks, bool check,
+void group_bits(const Within& w, const Source& s, std::size_t begin, std::size_t n, std::size_t blocks, const Options& opt,
                 Stats& st, std::uint64_t* bits) {
     const Clearance& q = w.query;
+    const bool check = opt.check_boxes;
     std::uint64_t open[kGroupBlocks], first_hit[kGroupBlocks] = {}, first_left[kGroupBlocks] = {};
     auto count_of = [&](std::size_t b) { return std::min<std::size_t>(64, n - (begin + 64 * b)); };
     // Lanes of block b that probe k decides its deciding way (of those in `before`) leave `open`.
@@ -495,12 +520,14 @@ void group_bits(const Within& w, const Source& s, std::size_t begin, std::size_t
                 if (open[b] != 0) take(k, b, open[b], filter_block(w.filter[k], s, begin + 64 * b, count_of(b), false, st));
         }
     }
-    for (std::size_t b = 0; b < blocks; ++b)
+    for (std::size_t b = 0; b < blocks; ++b) {
+        stop_if_requested(opt, open[b]);
         for (std::uint64_t o = open[b]; o != 0; o &= o - 1) {
             const auto l = static_cast<std::size_t>(std::countr_zero(o));
             if (scalar_within(q, s.box(begin + 64 * b + l))) bits[b] |= std::uint64_t{1} << l;
             ++st.exact_lanes;
         }
+    }
 }
 
 // Runs the blocks of query q (a cylinder or a Clearance) over the threads; emit(block, bits, count)
@@ -513,20 +540,12 @@ Stats run(const Query& query, const Source& s, std::size_t n, const Options& opt
     std::vector<Stats> per_thread(threads);
     split::for_each_range(blocks, threads, [&](std::size_t first, std::size_t last, unsigned t) {
         Stats x;
-        if constexpr (std::is_same_v<std::remove_cvref_t<decltype(q)>, Within>) {
-            std::uint64_t bits[kGroupBlocks];
-            for (std::size_t blk = first; blk < last; blk += kGroupBlocks) {
-                if (opt.stop.stop_requested()) throw Stopped();
-                const std::size_t m = std::min(kGroupBlocks, last - blk);
-                group_bits(q, s, blk * 64, n, m, opt.check_boxes, x, bits);
-                for (std::size_t b = 0; b < m; ++b) emit(blk + b, bits[b], std::min<std::size_t>(64, n - (blk + b) * 64));
-            }
-        } else {
-            for (std::size_t blk = first; blk < last; ++blk) {
-                if (opt.stop.stop_requested()) throw Stopped();
-                const std::size_t begin = blk * 64, count = std::min<std::size_t>(64, n - begin);
-                emit(blk, block_bits(q, s, begin, count, opt.check_boxes, x), count);
-            }
+        std::uint64_t bits[kGroupBlocks];
+        for (std::size_t blk = first; blk < last; blk += kGroupBlocks) {
+            if (opt.stop.stop_requested()) throw Stopped();
+            const std::size_t m = std::min(kGroupBlocks, last - blk);
+            group_bits(q, s, blk * 64, n, m, opt, x, bits);
+            for (std::size_t b = 0; b < m; ++b) emit(blk + b, bits[b], std::min<std::size_t>(64, n - (blk + b) * 64));
         }
         per_thread[t] = x;
     });

@@ -51,10 +51,10 @@ struct Options {
     // numbers, extents ≥ 0, the axes' Gram matrix in double); a block they cannot clear is judged by
     // is_valid. Parallelepipeds call is_valid per box.
     bool check_boxes = false;
-    // Cancellation: every thread looks at it before each 64-box block (the clearance query: before
-    // each group of up to 32 blocks, whose later probes it answers together), and once a stop is requested
-    // the call throws Stopped (the answers written so far are of whole blocks; the others are
-    // unspecified). A default token never stops; looking costs a load per block.
+    // Cancellation: every thread looks at it before each group of up to 32 blocks of 64 boxes (whose
+    // filter passes run together) and before each block's scalar work, and once a stop is requested the
+    // call throws Stopped (the answers written so far are of whole blocks; the others are unspecified).
+    // Parallelepipeds: before each block. A default token never stops; looking costs a load.
     std::stop_token stop = {};
 };
 
