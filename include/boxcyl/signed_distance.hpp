@@ -51,13 +51,13 @@ std::vector<Vec3<double>> edges(const Box& b) {
 // The box's centre relative to the cylinder's, enclosed. An aligned box's is ((min − C) + (max − C))/2:
 // far from the origin each difference is exact (or nearly) and their sum is of the box's size, where
 // (min + max)/2 − C would carry the rounding of the coordinates' size.
-inline filtered::depth::V offset(const AlignedBox<double>& b, const filtered::depth::V& C) {
-    filtered::depth::V z;
+inline Vec3<Interval> offset(const AlignedBox<double>& b, const Vec3<Interval>& C) {
+    Vec3<Interval> z;
     for (int i = 0; i < 3; ++i) z[i] = ((Interval(b.min[i]) - C[i]) + (Interval(b.max[i]) - C[i])) * Interval(0.5);
     return z;
 }
 template <class Box>
-filtered::depth::V offset(const Box& b, const filtered::depth::V& C) {
+Vec3<Interval> offset(const Box& b, const Vec3<Interval>& C) {
     return filtered::rim::enclose(b).center - C;
 }
 
@@ -134,7 +134,10 @@ SignedDistance signed_distance(const Box& box, const Cylinder<double>& cyl) {
     const filtered::rim::Rims f(c, 0.0);
     filtered::depth::Bounds depth;  // [0, ∞] unless the search runs
     if (f.valid) {
-        const filtered::depth::Problem p{offset(b, f.C), enclosed.half, f.u, f.r, f.half_h};
+        namespace fd = filtered::depth;
+        const fd::Problem p{fd::enclose(offset(b, f.C)),
+                            {fd::enclose(enclosed.half[0]), fd::enclose(enclosed.half[1]), fd::enclose(enclosed.half[2])},
+                            fd::enclose(f.u), fd::enclose(f.r), fd::enclose(f.half_h)};
         std::vector<Vec3<double>> circles = edges(b);
         circles.push_back(filtered::rim::scaled_axis(c.axis));
         depth = filtered::depth::bounds(p, circles);

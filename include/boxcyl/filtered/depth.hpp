@@ -22,13 +22,13 @@
 // ℓ(s) between its values at a piece's ends. To prove H/|v| ≥ λ (λ ≥ 0) over a piece it suffices that
 // H(v(s)) − λ·ℓ(s), a convex function, is ≥ 0 there, and a convex function lies above its tangents at
 // the piece's ends, whose larger one is least where they cross. The ends' values and one-sided slopes
-// are enclosed by forward differentiation in interval arithmetic (|x| gets the slope enclosure
+// are enclosed by forward differentiation in running-error arithmetic (|x| gets the slope enclosure
 // [−|x′|, |x′|] where x may vanish, which holds both one-sided slopes). A piece that fails is split
 // where the tangents cross — at a kink of H (a face, an edge across the axis) they cross at the kink,
 // and near a smooth minimum the crossing closes in on it — and the direction at each split point is an
 // upper bound. The search runs, failing pieces with the lowest bound first, until every piece proves
-// λ = (best upper bound) − gap, a small fraction of the problem's length. Every operation is
-// outward-rounded (number/interval.hpp), so the bounds hold in every rounding mode.
+// λ = (best upper bound) − gap, a small fraction of the problem's length. Every operation carries a
+// running error bound (number/bounded.hpp) that holds in every rounding mode, and so do the bounds.
 #pragma once
 
 #include <algorithm>   // std::max, std::min, std::clamp
@@ -38,14 +38,31 @@
 #include <queue>       // the pieces, lowest bound first
 #include <vector>      // arcs, kinks, the heap's storage
 
-#include "boxcyl/filtered/rim.hpp"  // Box, Rims: the shapes as interval enclosures
 #include "boxcyl/geometry/vec3.hpp"
+#include "boxcyl/number/bounded.hpp"
 #include "boxcyl/number/interval.hpp"
 
 namespace boxcyl::filtered::depth {
 
-using I = Interval;
-using V = Vec3<Interval>;
+// The search's arithmetic: running error bounds (number/bounded.hpp), branch-free and inlined, a few
+// times cheaper per operation than outward-rounded intervals and as sound in every rounding mode; its
+// bounds are a little wider, far below the search's target gap.
+using I = Bounded;
+using V = Vec3<Bounded>;
+
+// An interval's enclosure as a value with a bound (a bound that is not finite: undecided).
+inline I enclose(const Interval& x) {
+    if (x.lo() == x.hi()) return I(x.lo());
+    if (!(std::isfinite(x.lo()) && std::isfinite(x.hi()))) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()};
+    return I::range(x.lo(), x.hi());
+}
+inline V enclose(const Vec3<Interval>& v) { return {enclose(v[0]), enclose(v[1]), enclose(v[2])}; }
+inline V lift(const Vec3<double>& v) { return {I(v[0]), I(v[1]), I(v[2])}; }
+// Every value in [−m, m] (m ≥ 0; NaN or ∞: undecided).
+inline I symmetric(double m) {
+    if (!std::isfinite(m)) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()};
+    return I::range(-m, m);
+}
 
 // A value and its derivative in s, both enclosed.
 struct Dual {
@@ -59,14 +76,22 @@ inline I times(const I& x, const I& y) { return x * y; }
 inline Dual times(const Dual& x, const I& y) { return {x.v * y, x.d * y}; }
 inline I negated(const I& x) { return -x; }
 inline Dual negated(const Dual& x) { return {-x.v, -x.d}; }
-inline I root(const I& x) { return boxcyl::sqrt(I(std::max(0.0, x.lo()), x.hi())); }
+// √x of a quantity known to be ≥ 0, enclosed even where x's enclosure reaches 0 or below (sqrt itself
+// declines there): [0, √(upper bound)].
+inline I root(const I& x) {
+    if (x.exact_zero()) return I(0.0);
+    if (x.lo() > 0) return sqrt(x);
+    const double hi = x.hi();
+    if (!(hi >= 0)) return hi <= 0 ? I(0.0) : x;  // NaN stays NaN
+    return I::range(0, boxcyl::detail::next_up(std::sqrt(hi)));
+}
 inline I magnitude(const I& x) { return enclosure_abs(x); }
 // |x|: where x may vanish, the slope enclosure [−|x′|, |x′|], which holds both one-sided slopes.
 inline Dual magnitude(const Dual& x) {
     if (x.v.lo() >= 0) return x;
     if (x.v.hi() <= 0) return negated(x);
     const double m = std::max(-x.d.lo(), x.d.hi());
-    return {enclosure_abs(x.v), I(-m, m)};
+    return {enclosure_abs(x.v), symmetric(m)};
 }
 template <class S>
 S inner(const Vec3<S>& a, const V& b) {
@@ -86,9 +111,13 @@ struct Problem {
 inline I norm(const I& c0, const I& c1, const I& c2) { return root(c0 * c0 + c1 * c1 + c2 * c2); }
 inline Dual norm(const Dual& c0, const Dual& c1, const Dual& c2) {
     const I n = norm(c0.v, c1.v, c2.v);
-    if (n.lo() > 0) return {n, (c0.v * c0.d + c1.v * c1.d + c2.v * c2.d) / n};
+    if (n.lo() > 0) {
+        // The quotient declines (NaN) where n's bound is not below half its value.
+        const I slope = (c0.v * c0.d + c1.v * c1.d + c2.v * c2.d) / n;
+        if (slope.lo() == slope.lo() && slope.hi() == slope.hi()) return {n, slope};
+    }
     const double m = norm(c0.d, c1.d, c2.d).hi();
-    return {n, I(-m, m)};
+    return {n, symmetric(m)};
 }
 
 // H(v), and its derivative along the arc for Dual. Each term is convex in v (a linear form, the
@@ -147,8 +176,8 @@ inline void add_arcs(const Problem& p, const Vec3<double>& x, std::vector<Arc>& 
         if (std::abs(x[i]) < std::abs(x[k])) k = i;
     Vec3<double> e{0, 0, 0};
     e[k] = 1;
-    const V X = rim::lift(x);
-    const V a = cross(X, rim::lift(e));
+    const V X = lift(x);
+    const V a = cross(X, lift(e));
     const V b = cross(X, a);
     arcs.emplace_back(p, a, b), arcs.emplace_back(p, b, -a), arcs.emplace_back(p, -a, -b), arcs.emplace_back(p, -b, a);
     for (const V& w : p.h) {
