@@ -224,9 +224,14 @@ inline double tangent_bound(const End& a, const End& b, double lambda, double* a
     return V.lo();
 }
 
-// The search's target width: 2⁻⁴⁵ of the problem's own length L (the largest of |z|∞, the half axes'
-// components, r and k) — the bounds' rounding is about 2⁻⁴⁷·L — and at least 8 times the width z and
-// the half axes carry in from their own rounding (z = c − C is exact only where the centres are close).
+// The search's target width: 2⁻⁴⁴ of the problem's own length L (the largest of |z|∞, the half axes'
+// components, r and k), and at least 8 times the width z and the half axes carry in from their own
+// rounding (z = c − C is exact only where the centres are close). The tangent bounds at a piece's ends
+// carry the enclosures of H, its slope and λ·ℓ, together up to about 2⁻⁴⁵·L wide: with a gap of 2⁻⁴⁵
+// a piece at a smooth minimum often could not prove it, the search ended on it split down to single
+// doubles, and every piece still open took a bisection on λ (on bench_distance's overlapping pairs
+// about a dozen a query; with 2⁻⁴⁴, one or two). The stated width, 2⁻⁴³·L, leaves room for the upper
+// bound's own enclosure.
 inline double target_gap(const Problem& p) {
     double L = std::max(p.r.hi(), p.k.hi()), carried = 0;
     auto take = [&](const V& v) {
@@ -237,7 +242,7 @@ inline double target_gap(const Problem& p) {
     };
     take(p.z);
     for (const V& h : p.h) take(h);
-    const double relative = L > 0 && std::isfinite(L) ? std::ldexp(1.0, std::ilogb(L) - 45) : 0;
+    const double relative = L > 0 && std::isfinite(L) ? std::ldexp(1.0, std::ilogb(L) - 44) : 0;
     return std::max({relative, 8 * carried, std::numeric_limits<double>::denorm_min()});
 }
 
@@ -327,23 +332,28 @@ inline Bounds bounds(const Problem& p, const std::vector<Vec3<double>>& circles,
     if (lambda() <= 0) {
         lower = 0;  // the solids intersect: the depth is at least 0
     } else {
+        // The pieces left (set aside, or by the budget) lower λ to the least that each proves: found by
+        // bisection on λ (the bound falls as λ grows) to within 2^-6 of the gap, first between
+        // λ − 4·gap and λ (where the pieces set aside fall), from 0 where that does not prove.
         double proved = lambda();
-        // Pieces left by the budget: the largest λ each proves, by bisection on λ (the bound falls as λ grows).
-        for (; !pieces.empty(); pieces.pop()) {
-            const Piece& q = pieces.top();
-            double lo = 0, hi = proved;
-            if (tangent_bound(q.a, q.b, 0.0) < 0) {
-                proved = 0;
-                break;
+        auto lower_to = [&](const Piece& q) {
+            if (tangent_bound(q.a, q.b, proved) >= 0) return true;
+            double lo = std::max(0.0, proved - 4 * gap), hi = proved;
+            if (tangent_bound(q.a, q.b, lo) < 0) {
+                if (lo == 0 || tangent_bound(q.a, q.b, 0.0) < 0) return false;
+                lo = 0;
             }
-            for (int i = 0; i < 60 && lo < hi; ++i) {
+            while (hi - lo > 0x1p-6 * gap) {
                 const double m = 0.5 * lo + 0.5 * hi;
                 if (m <= lo || m >= hi) break;
                 (tangent_bound(q.a, q.b, m) >= 0 ? lo : hi) = m;
             }
-            proved = std::min(proved, lo);
-        }
-        lower = std::min(lower, proved);
+            proved = lo;
+            return true;
+        };
+        bool all = true;
+        for (; all && !pieces.empty(); pieces.pop()) all = lower_to(pieces.top());
+        lower = std::min(lower, all ? proved : 0.0);
     }
     out.lower = std::max(0.0, lower);
     return out;
