@@ -80,19 +80,21 @@ inline OrientedBox<double> moved(const CanonicalBox<double>& b, const Vec3<doubl
 }
 
 // A witness pair for overlapping shapes (scaled to lengths near 1): the box moved along −n by the depth
-// and 2⁻¹² of the shapes' size more, the distance's nearest pair of the then separate shapes
-// (distance.hpp's refinement), the box point moved back. The box point is then on the box's feature
-// that supports it along n, the cylinder point on the cylinder's along −n, and their difference about
-// −depth·n.
+// and 2⁻¹² of the shapes' size more, a nearest pair of the then separate shapes, the box point moved
+// back. The box point is then on the box's feature that supports it along n, the cylinder point on the
+// cylinder's along −n, and their difference about −depth·n. The pair needs no proof: the distance's
+// search and Newton's steps in double, without its certified bounds.
 template <class Box>
 void witnesses(const Box& box, const Cylinder<double>& cyl, const Vec3<double>& n, double depth, Vec3<double>& on_box,
                Vec3<double>& on_cylinder) {
     distance::Magnitude size;
     size(box), size(cyl);
     const double step = depth + std::ldexp(1.0, size.e - 12);
-    const Distance d = distance::refined(moved(box, -step * n), cyl, false);
-    on_box = d.on_box + step * n;
-    on_cylinder = d.on_cylinder;
+    const filtered::separation::Approximate a =
+        clearance::search_in_double(moved(box, -step * n), cyl, -1, distance::search_gap);
+    const auto [X, Y] = filtered::separation::nearest_pair(a, cyl, distance::newton_steps);
+    on_box = X + step * n;
+    on_cylinder = Y;
 }
 
 // For solids apart whose nearest pair coincides in doubles (a distance below the coordinates' rounding):

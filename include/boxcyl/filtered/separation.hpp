@@ -152,6 +152,21 @@ inline bool clear_of(const Approximate& a, double decide_at) {
 // double shows a side.
 inline bool near_of(const Approximate& a, double decide_at) { return std::abs(a.upper - decide_at) <= 0x1p-20 * decide_at; }
 
+namespace detail {
+// The point of the cylinder c (u its unit axis, in double) nearest x, or with on_rim the point of its
+// rims nearest x; in double, no proof.
+inline Vec3<double> nearest_on_cylinder(const Cylinder<double>& c, const Vec3<double>& u, const Vec3<double>& x, bool on_rim) {
+    const double h = 0.5 * c.height;
+    const Vec3<double> z = x - c.center;
+    const double t = dot(z, u);
+    const Vec3<double> across = z - t * u;
+    const double l = std::sqrt(dot(across, across));
+    const double k = on_rim ? (l > 0 ? c.radius / l : 0.0) : (l > c.radius ? c.radius / l : 1.0);
+    const double along = on_rim ? (t >= 0 ? h : -h) : std::clamp(t, -h, h);
+    return c.center + along * u + k * across;
+}
+}  // namespace detail
+
 // A quick search for a box near the rim, where GJK's first steps go round: the box point nearest the
 // rim point nearest the box centre, then two steps of alternating projections (the box point nearest
 // the cylinder point nearest the last one). Box points are clamped in the box's axes (for the
@@ -175,16 +190,7 @@ inline void projected(Approximate& a, const Cylinder<double>& c, double decide_a
         for (int i = 0; i < 3; ++i) mu[i] = std::clamp(dot(z, a.box.half[i]) * inverse[i], -1.0, 1.0);  // a NaN stays (undecided)
         return mu;
     };
-    // The cylinder point nearest x (on_rim: the rim point nearest x instead).
-    auto nearest_on_cylinder = [&](const Vec3<double>& x, bool on_rim) {
-        const Vec3<double> z = x - c.center;
-        const double t = dot(z, u);
-        const Vec3<double> across = z - t * u;
-        const double l = std::sqrt(dot(across, across));
-        const double k = on_rim ? (l > 0 ? c.radius / l : 0.0) : (l > c.radius ? c.radius / l : 1.0);
-        const double along = on_rim ? (t >= 0 ? h : -h) : std::clamp(t, -h, h);
-        return c.center + along * u + k * across;
-    };
+    auto nearest_on_cylinder = [&](const Vec3<double>& x, bool on_rim) { return detail::nearest_on_cylinder(c, u, x, on_rim); };
     Vec3<double> q = nearest_on_cylinder(a.box.c, true);
     for (int i = 0; i <= 2; ++i) {
         a.closest.mu = nearest_mu(q);
@@ -202,6 +208,20 @@ inline void projected(Approximate& a, const Cylinder<double>& c, double decide_a
     a.closest.mu = {mu[0], mu[1], mu[2]};
     a.closest.q = nearest_on_cylinder(algo::gjk::detail::box_point(a.box, a.closest.mu), false);
     detail::complete(a, c, false);
+}
+
+// A nearest pair in double, no proof: the search's box point refined by up to `newton_steps` of Newton's
+// steps in double (nearest_box_point.hpp), and the cylinder point nearest it. {box point, cylinder point}.
+inline std::pair<Vec3<double>, Vec3<double>> nearest_pair(const Approximate& a, const Cylinder<double>& c, int newton_steps) {
+    std::array<double, 3> mu{};
+    std::array<bool, 3> free{};
+    Vec3<double> X = a.p;
+    if (refined::held_start(a.closest.mu, mu, free)) {
+        const refined::BoxOf<double> box{a.box.c, a.box.half};
+        refined::refine(box, refined::CylOf<double>{c.center, a.u, c.radius, 0.5 * c.height}, mu, free, newton_steps);
+        X = refined::point(box, mu);
+    }
+    return {X, detail::nearest_on_cylinder(c, a.u, X, false)};
 }
 
 // The bounds that a search's result `a` shows, proved for the box enclosed by `box` (rim.hpp's
