@@ -135,15 +135,27 @@ S support(const Problem& p, const Vec3<S>& v) {
     return H + times(norm(c0, c1, c2), p.r);
 }
 
+// The linear forms of H at a vector x: x·hᵢ (i < 3), x·u, x·z, and x × u.
+struct Forms {
+    std::array<I, 5> dots;
+    V cross_u;
+};
+inline Forms forms(const Problem& p, const V& x) {
+    return {{dot(x, p.h[0]), dot(x, p.h[1]), dot(x, p.h[2]), dot(x, p.u), dot(x, p.z)}, cross(x, p.u)};
+}
+inline Forms negated(const Forms& f) {
+    return {{-f.dots[0], -f.dots[1], -f.dots[2], -f.dots[3], -f.dots[4]}, -f.cross_u};
+}
+
 // An arc of a circle: the directions of the vectors from + s·step, s ∈ [0, 1] (the shorter arc
 // between two directions less than a half turn apart).
-// Along it every linear form of v is affine in s, and v × u too: their values at the ends (from·w) and
-// slopes (step·w) are formed once per arc, so that each point costs a product and a sum per form.
+// Along it every linear form of v is affine in s, and v × u too: their values at the ends and slopes
+// (the forms at `to` less those at `from`: the forms are linear) are formed once per arc, from the
+// forms of its ends, so that each point costs a product and a sum per form.
 struct Arc {
-    Arc(const Problem& p, const V& from_, const V& to) : from(from_), step(to - from_), F(cross(from, p.u)), G(cross(step, p.u)) {
-        for (std::size_t i = 0; i < 3; ++i) at0[i] = dot(from, p.h[i]), slope[i] = dot(step, p.h[i]);
-        at0[3] = dot(from, p.u), slope[3] = dot(step, p.u);
-        at0[4] = dot(from, p.z), slope[4] = dot(step, p.z);
+    Arc(const V& from_, const V& to, const Forms& at_from, const Forms& at_to)
+        : from(from_), step(to - from_), F(at_from.cross_u), G(at_to.cross_u - at_from.cross_u) {
+        for (std::size_t i = 0; i < 5; ++i) at0[i] = at_from.dots[i], slope[i] = at_to.dots[i] - at_from.dots[i];
     }
     V from, step;
     std::array<I, 5> at0, slope;  // v·hᵢ (i < 3), v·u, v·z at s = 0, and their slopes
@@ -179,7 +191,9 @@ inline void add_arcs(const Problem& p, const Vec3<double>& x, std::vector<Arc>& 
     const V X = lift(x);
     const V a = cross(X, lift(e));
     const V b = cross(X, a);
-    arcs.emplace_back(p, a, b), arcs.emplace_back(p, b, -a), arcs.emplace_back(p, -a, -b), arcs.emplace_back(p, -b, a);
+    const Forms A = forms(p, a), B = forms(p, b), minus_A = negated(A), minus_B = negated(B);
+    arcs.emplace_back(a, b, A, B), arcs.emplace_back(b, -a, B, minus_A), arcs.emplace_back(-a, -b, minus_A, minus_B),
+        arcs.emplace_back(-b, a, minus_B, A);
     for (const V& w : p.h) {
         const V c = cross(X, w);
         kinks.push_back(c), kinks.push_back(-c);
@@ -253,8 +267,8 @@ inline Bounds bounds(const Problem& p, const std::vector<Vec3<double>>& circles,
     const double gap = target_gap(p);
     Bounds out;
     auto lower_of = [](const I& x) { return x.lo() == x.lo() ? x.lo() : -std::numeric_limits<double>::infinity(); };
-    auto try_upper = [&](const I& F, const Vec3<double>& n) {
-        if (F.hi() < out.upper) out.upper = F.hi(), out.normal = n;  // NaN never wins
+    auto try_upper = [&](const I& F, const V& n) {
+        if (F.hi() < out.upper) out.upper = F.hi(), out.normal = mid(n);  // NaN never wins
     };
     double lower = std::numeric_limits<double>::infinity();
     for (double sign : {1.0, -1.0}) {  // ±u: a vertex against a cap
@@ -264,7 +278,7 @@ inline Bounds bounds(const Problem& p, const std::vector<Vec3<double>>& circles,
         I H = dot(n, p.z) + p.k;
         for (const V& h : p.h) H = H + enclosure_abs(dot(p.u, h));
         lower = std::min(lower, lower_of(H));
-        try_upper(H, mid(n));
+        try_upper(H, n);
     }
     std::vector<Arc> arcs;
     std::vector<V> kinks;
@@ -284,7 +298,7 @@ inline Bounds bounds(const Problem& p, const std::vector<Vec3<double>>& circles,
             const double g = guess(mid(n));
             if (g < least) least = g, best = &n;
         }
-        if (best) try_upper(support(p, *best) / norm((*best)[0], (*best)[1], (*best)[2]), mid(*best));
+        if (best) try_upper(support(p, *best) / norm((*best)[0], (*best)[1], (*best)[2]), *best);
     }
 
     auto end_at = [&](const Arc& arc, double s) {
@@ -292,11 +306,13 @@ inline Bounds bounds(const Problem& p, const std::vector<Vec3<double>>& circles,
         const V v{arc.from[0] + t * arc.step[0], arc.from[1] + t * arc.step[1], arc.from[2] + t * arc.step[2]};
         const Dual H = support_along(p, arc, s);
         const I len = norm(v[0], v[1], v[2]);
-        try_upper(H.v / len, mid(v));
+        try_upper(H.v / len, v);
         return End{s, H.v, H.d, len};
     };
     struct Piece {
         double priority;  // the tangent bound when it was made, over the longer |v|: lowest first
+        double lambda;    // the λ it failed when it was made, and where its tangents crossed then
+        double at;
         std::size_t arc;
         End a, b;
         bool operator>(const Piece& o) const { return priority > o.priority; }
@@ -304,9 +320,11 @@ inline Bounds bounds(const Problem& p, const std::vector<Vec3<double>>& circles,
     std::priority_queue<Piece, std::vector<Piece>, std::greater<>> pieces;
     auto lambda = [&] { return out.upper - gap; };
     auto push = [&](std::size_t arc, const End& a, const End& b) {
-        const double t = tangent_bound(a, b, std::max(0.0, lambda()));
+        const double l = std::max(0.0, lambda());
+        double at = 0;
+        const double t = tangent_bound(a, b, l, &at);
         if (t >= 0) return;  // proved: H ≥ λ·|v| over the piece
-        pieces.push({t / std::max(a.len.hi(), b.len.hi()), arc, a, b});
+        pieces.push({t / std::max(a.len.hi(), b.len.hi()), l, at, arc, a, b});
     };
     for (std::size_t i = 0; i < arcs.size(); ++i) {
         const End a = end_at(arcs[i], 0.0), b = end_at(arcs[i], 1.0);
@@ -315,8 +333,8 @@ inline Bounds bounds(const Problem& p, const std::vector<Vec3<double>>& circles,
     int splits = 0;
     while (!pieces.empty() && lambda() > 0) {
         const Piece top = pieces.top();
-        double at = 0;
-        if (tangent_bound(top.a, top.b, lambda(), &at) >= 0) {  // proved since, by a lower λ
+        double at = top.at;  // λ unchanged since it was made: it still fails, its tangents cross there
+        if (top.lambda != lambda() && tangent_bound(top.a, top.b, lambda(), &at) >= 0) {  // proved since, by a lower λ
             pieces.pop();
             continue;
         }
@@ -332,9 +350,9 @@ inline Bounds bounds(const Problem& p, const std::vector<Vec3<double>>& circles,
     if (lambda() <= 0) {
         lower = 0;  // the solids intersect: the depth is at least 0
     } else {
-        // The pieces left (set aside, or by the budget) lower λ to the least that each proves: found by
-        // bisection on λ (the bound falls as λ grows) to within 2^-6 of the gap, first between
-        // λ − 4·gap and λ (where the pieces set aside fall), from 0 where that does not prove.
+        // The pieces left (by the budget, or behind one too narrow to split) lower λ to the least that
+        // each proves: found by bisection on λ (the bound falls as λ grows) to within 2^-6 of the gap,
+        // first between λ − 4·gap and λ (where a piece at a minimum falls), from 0 where that does not prove.
         double proved = lambda();
         auto lower_to = [&](const Piece& q) {
             if (tangent_bound(q.a, q.b, proved) >= 0) return true;
