@@ -162,15 +162,22 @@ struct Arc {
     V F, G;                       // v × u = F + s·G
 };
 
-// H(v(s)) and its slope along the arc.
-inline Dual support_along(const Problem& p, const Arc& arc, double s) {
-    const I t(s);
-    auto form = [&](std::size_t i) { return Dual{arc.at0[i] + t * arc.slope[i], arc.slope[i]}; };
+// H and its slope along an arc at a point where the forms are `at` and v × u is `c`, the arc's slopes
+// being `slope` and G.
+inline Dual support_at(const Problem& p, const std::array<I, 5>& at, const V& c, const std::array<I, 5>& slope, const V& G) {
+    auto form = [&](std::size_t i) { return Dual{at[i], slope[i]}; };
     Dual H = form(4);
     for (std::size_t i = 0; i < 3; ++i) H = H + magnitude(form(i));
     H = H + times(magnitude(form(3)), p.k);
-    auto component = [&](int i) { return Dual{arc.F[i] + t * arc.G[i], arc.G[i]}; };
-    return H + times(norm(component(0), component(1), component(2)), p.r);
+    return H + times(norm(Dual{c[0], G[0]}, Dual{c[1], G[1]}, Dual{c[2], G[2]}), p.r);
+}
+// H(v(s)) and its slope along the arc.
+inline Dual support_along(const Problem& p, const Arc& arc, double s) {
+    const I t(s);
+    std::array<I, 5> at;
+    for (std::size_t i = 0; i < 5; ++i) at[i] = arc.at0[i] + t * arc.slope[i];
+    const V c{arc.F[0] + t * arc.G[0], arc.F[1] + t * arc.G[1], arc.F[2] + t * arc.G[2]};
+    return support_at(p, at, c, arc.slope, arc.G);
 }
 
 inline Vec3<double> mid(const V& v) {
@@ -178,7 +185,7 @@ inline Vec3<double> mid(const V& v) {
 }
 
 // The circle ⊥ x (x a nonzero double vector) as four quarter arcs between ±a, ±b, a basis a ⊥ b of the
-// plane (x × e, e the coordinate axis x leans on least, and x × a). H's kinks on it (where v·hᵢ or v·u
+// plane, appended in order round the circle (each ends where the next, cyclically, starts) (x × e, e the coordinate axis x leans on least, and x × a). H's kinks on it (where v·hᵢ or v·u
 // changes sign: x × hᵢ, x × u) lie inside the arcs: the tangent bound below meets a kink where the two
 // sides' tangents cross. They are common minimizers (faces, edges across the axis), so `kinks` receives
 // them to be tried first as upper bounds.
@@ -326,10 +333,17 @@ inline Bounds bounds(const Problem& p, const std::vector<Vec3<double>>& circles,
         if (t >= 0) return;  // proved: H ≥ λ·|v| over the piece
         pieces.push({t / std::max(a.len.hi(), b.len.hi()), l, at, arc, a, b});
     };
-    for (std::size_t i = 0; i < arcs.size(); ++i) {
-        const End a = end_at(arcs[i], 0.0), b = end_at(arcs[i], 1.0);
-        push(i, a, b);
-    }
+    // The arcs' own ends: the forms there are those an arc starts with (its end is where the next arc
+    // of its circle starts), with no products by s.
+    auto end_of = [&](const Arc& arc, const Arc& starting_there, double s) {
+        const Dual H = support_at(p, starting_there.at0, starting_there.F, arc.slope, arc.G);
+        const V& v = starting_there.from;
+        const I len = norm(v[0], v[1], v[2]);
+        try_upper(H.v / len, v);
+        return End{s, H.v, H.d, len};
+    };
+    for (std::size_t i = 0; i < arcs.size(); ++i)
+        push(i, end_of(arcs[i], arcs[i], 0.0), end_of(arcs[i], arcs[i % 4 == 3 ? i - 3 : i + 1], 1.0));
     int splits = 0;
     while (!pieces.empty() && lambda() > 0) {
         const Piece top = pieces.top();
