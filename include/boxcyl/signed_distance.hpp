@@ -25,6 +25,7 @@
 #include "boxcyl/distance.hpp"
 #include "boxcyl/distance_types.hpp"
 #include "boxcyl/filtered/depth.hpp"
+#include "boxcyl/filtered/rim.hpp"
 #include "boxcyl/filtered/separation.hpp"
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"

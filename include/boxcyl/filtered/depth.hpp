@@ -51,16 +51,17 @@ using I = Bounded;
 using V = Vec3<Bounded>;
 
 // An interval's enclosure as a value with a bound (a bound that is not finite: undecided).
+inline I undecided() { return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}; }
 inline I enclose(const Interval& x) {
     if (x.lo() == x.hi()) return I(x.lo());
-    if (!(std::isfinite(x.lo()) && std::isfinite(x.hi()))) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()};
+    if (!(std::isfinite(x.lo()) && std::isfinite(x.hi()))) return undecided();
     return I::range(x.lo(), x.hi());
 }
 inline V enclose(const Vec3<Interval>& v) { return {enclose(v[0]), enclose(v[1]), enclose(v[2])}; }
 inline V lift(const Vec3<double>& v) { return {I(v[0]), I(v[1]), I(v[2])}; }
 // Every value in [−m, m] (m ≥ 0; NaN or ∞: undecided).
 inline I symmetric(double m) {
-    if (!std::isfinite(m)) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()};
+    if (!std::isfinite(m)) return undecided();
     return I::range(-m, m);
 }
 
@@ -185,7 +186,8 @@ inline Vec3<double> mid(const V& v) {
 }
 
 // The circle ⊥ x (x a nonzero double vector) as four quarter arcs between ±a, ±b, a basis a ⊥ b of the
-// plane, appended in order round the circle (each ends where the next, cyclically, starts) (x × e, e the coordinate axis x leans on least, and x × a). H's kinks on it (where v·hᵢ or v·u
+// plane (x × e, e the coordinate axis x leans on least, and x × a), appended in order round the circle:
+// each ends where the next (cyclically) starts. H's kinks on it (where v·hᵢ or v·u
 // changes sign: x × hᵢ, x × u) lie inside the arcs: the tangent bound below meets a kink where the two
 // sides' tangents cross. They are common minimizers (faces, edges across the axis), so `kinks` receives
 // them to be tried first as upper bounds.
