@@ -420,14 +420,12 @@ std::optional<bool> grown_box_misses(Pair<Box>& q) {
 #endif
     return std::nullopt;
 }
-// An approximate closest pair from doubles, the distance query's start (distance.hpp): GJK on the box's
-// centre and half axes and the unit axis, rounded, without the interval enclosures that the distance
-// bounds are proved on (the search needs no proof; the refined bounds prove what it finds). The axis is
-// scaled exactly by a power of two first, so that |D|² neither overflows nor underflows. `decide_at` and
-// `rel_gap` are GJK's (algo/gjk.hpp).
+// The doubles a search in double starts from: the box's centre and half axes and the unit axis,
+// rounded, without the interval enclosures that the distance bounds are proved on (the search needs no
+// proof; the refined bounds prove what it finds). The axis is scaled exactly by a power of two first, so
+// that |D|² neither overflows nor underflows.
 template <class Box>
-filtered::separation::Approximate search_in_double(const Box& box, const Cylinder<double>& cyl, double decide_at,
-                                                   double rel_gap) {
+filtered::separation::Approximate search_start(const Box& box, const Cylinder<double>& cyl) {
     namespace sep = filtered::separation;
     const sep::BoundedBox b = sep::bounded_box(box);
     sep::Approximate a;
@@ -436,8 +434,24 @@ filtered::separation::Approximate search_in_double(const Box& box, const Cylinde
     const Vec3<double> D = filtered::rim::scaled_axis(cyl.axis);
     const double len = std::sqrt(dot(D, D));
     a.u = sep::without_tiny_components({D[0] / len, D[1] / len, D[2] / len});
+    return a;
+}
+// An approximate closest pair from doubles (distance.hpp's start, signed_distance.hpp's witnesses): GJK
+// from search_start. `decide_at` and `rel_gap` are GJK's (algo/gjk.hpp).
+template <class Box>
+filtered::separation::Approximate search_in_double(const Box& box, const Cylinder<double>& cyl, double decide_at,
+                                                   double rel_gap) {
+    filtered::separation::Approximate a = search_start(box, cyl);
     a.closest = algo::gjk::closest(a.box, {cyl.center, a.u, cyl.radius, 0.5 * cyl.height}, decide_at, 48, rel_gap);
-    sep::detail::complete(a, cyl);
+    filtered::separation::detail::complete(a, cyl);
+    return a;
+}
+// The same from alternating projections (separation.hpp's projected(): a third of GJK's cost), for a
+// separated pair.
+template <class Box>
+filtered::separation::Approximate projected_search(const Box& box, const Cylinder<double>& cyl) {
+    filtered::separation::Approximate a = search_start(box, cyl);
+    filtered::separation::projected(a, cyl);
     return a;
 }
 // Probe k of probes(), unless stage 0 or the search answered it.

@@ -126,13 +126,25 @@ struct Magnitude {
 // (2^-20 measured fastest on bench_distance's sets: looser starts cost Newton more steps, and a few of
 // them end on a point whose bounds need the bisection).
 inline constexpr double search_gap = 0x1p-20;
-
+// The start: for a separated pair, alternating projections first (a third of GJK's cost; Newton's steps
+// converge from their point on nearly every pair), without the refinement's last resorts; where their
+// bounds are still wider than the goal, GJK's pair, with them (a box lying nearly along the axis or a
+// cap, where the projections' point lies in the wrong valley). On bench_distance's random set 44 of
+// 2,048 pairs take the second start.
 template <class Box>
 Distance refined(const Box& box, const Cylinder<double>& cyl, bool touching) {
     namespace sep = filtered::separation;
     Distance out{0.0, touching ? 0.0 : std::numeric_limits<double>::infinity(), {}, {}};
-    const sep::Approximate search = clearance::search_in_double(box, cyl, -1, search_gap);
-    const sep::RefinedBounds r = sep::refined_bounds(box, cyl, search, -1, newton_steps, max_steps);
+    sep::Approximate search;
+    sep::RefinedBounds r{};
+    if (!touching) {
+        search = clearance::projected_search(box, cyl);
+        r = sep::refined_bounds(box, cyl, search, -1, newton_steps, max_steps, false);
+    }
+    if (touching || !r.found || !sep::refined::within_doubles(r, max_steps)) {
+        search = clearance::search_in_double(box, cyl, -1, search_gap);
+        r = sep::refined_bounds(box, cyl, search, -1, newton_steps, max_steps);
+    }
     if (r.found && !touching) {
         out.lower = sep::refined::lower_double(r.lower);
         out.upper = sep::refined::upper_double(r.upper);

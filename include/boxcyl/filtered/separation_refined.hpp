@@ -119,6 +119,7 @@ inline D sqrt_nonnegative(const D& x) {
 struct AtPoint {
     D distance;
     DV toward;
+    bool axial = false, radial = false;  // whether the step has a part along the axis, across it
 };
 inline AtPoint at_point(const Cyl& k, const DV& X) {
     const DV Z = X - k.C;
@@ -137,9 +138,45 @@ inline AtPoint at_point(const Cyl& k, const DV& X) {
     else if (approx(tv) < -approx(hh)) axial = -hh - tv;
     if (approx(rv) > approx(r)) radial = (r - rv) / rv;
     for (std::size_t i = 0; i < 3; ++i) out.toward[i] = (axial * u[i] + radial * P[i]).exact();
+    out.axial = approx(axial) != 0, out.radial = approx(radial) != 0;
     return out;
 }
 inline D point_distance(const Cyl& k, const DV& X) { return at_point(k, X).distance; }
+
+// The lower bound's direction at the box point μ: the step `at.toward` to the cylinder point nearest
+// it, put into both shapes' normal cones there. Where a support function has a kink (across a box edge
+// or face, whose exact direction is orthogonal to the free half axes; at the side, orthogonal to the
+// axis; at a cap, along it) the gap loses the direction's error to first order, and the step, formed
+// from coordinates far larger than the distance, is off by about ε·|X|/dist: as many ulps. In the
+// normal cone only the smooth part's second-order loss is left (an edge against a rim: across the
+// edge; a vertex against the side: across the axis). Values only: any direction gives a proved gap.
+inline DV in_normal_cones(const Box& box, const Cyl& k, const std::array<D, 3>& mu, const AtPoint& at) {
+    const DV& t = at.toward;
+    auto toward_cylinder = [&t](const DV& n) { return approx(dot(n, t)) < 0 ? value(-n) : n; };
+    auto across = [](const DV& n, const DV& a) {  // n less its part along a
+        const D aa = value(dot(a, a));
+        if (!(approx(aa) > 0)) return n;
+        const D f = value(dot(n, a) / aa);
+        return value(n - DV{f * a[0], f * a[1], f * a[2]});
+    };
+    auto normal = [&](const DV& a, const DV& b, const DV& otherwise) {  // a × b, unless a ∥ b
+        const DV n = value(cross(a, b));
+        return approx(dot(n, n)) > 0 ? toward_cylinder(n) : otherwise;
+    };
+    if (at.axial && !at.radial) return toward_cylinder(k.u);  // a cap
+    std::array<std::size_t, 3> free{};
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < 3; ++i)
+        if (std::abs(approx(mu[i])) < 1 && approx(dot(box.half[i], box.half[i])) > 0) free[count++] = i;
+    const bool side = at.radial && !at.axial;
+    if (count == 2) return normal(box.half[free[0]], box.half[free[1]], t);  // a face
+    if (count == 1) {
+        const DV edge = across(t, box.half[free[0]]);
+        return side ? normal(box.half[free[0]], k.u, edge) : edge;
+    }
+    if (count == 0 && side) return across(t, k.u);
+    return t;
+}
 
 // The gap along n (any nonzero vector), over |n|: a lower bound of the distance when positive.
 inline D gap(const Box& box, const Cyl& k, const DV& n) {
@@ -408,10 +445,11 @@ inline std::optional<bool> decides(const RefinedBounds& r, double m) {
 // ≥ 0, the further candidates (a foot, the kinks) are tried only while the bounds do not decide
 // dist ≤ decide_at, and with `enough_doubles` > 0 only while the bounds prove doubles farther apart than
 // that. `newton_steps` bounds the refinement's steps in double (in double-double, at most 4 follow); it ends
-// sooner once converged.
+// sooner once converged. Without `last_resorts` the bounds end after the Newton steps, for a caller that
+// has a better start to try next.
 template <class AnyBox>
 RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const Approximate& a, double decide_at = -1,
-                             int newton_steps = 4, std::uint64_t enough_doubles = 0) {
+                             int newton_steps = 4, std::uint64_t enough_doubles = 0, bool last_resorts = true) {
     using namespace refined;
     if (!a.found || !boxcyl::detail::round_to_nearest()) return {D(0.0), D(0.0), false};
     const UncertaintyScope scope;  // undecided operations are read through their bounds here
@@ -423,7 +461,7 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
     std::array<bool, 3> free{};
     if (!held_start(a.closest.mu, mu_double, free)) return {D(0.0), D(0.0), false};  // NaN
     RefinedBounds out{D(0.0), D(0.0), true, {}};
-    bool first = true;
+    bool first = true, in_cones = false;
     auto enough = [&] {
         return (decide_at >= 0 && refined::decides(out, decide_at)) ||
                (enough_doubles > 0 && refined::within_doubles(out, enough_doubles));
@@ -434,9 +472,11 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
         if (lower_end_above(g, out.lower)) out.lower = g;
     };
     // The bounds at the box point μ: its distance to the cylinder, and the gap along the direction to
-    // its nearest cylinder point (each kept where better). The direction is read from the step to that
-    // point, or, where its parts come near the ends of double's range, from the cylinder point itself
-    // (nearest_on_cylinder scales).
+    // its nearest cylinder point (each kept where better). The direction is the step to that point in
+    // both shapes' normal cones (in_normal_cones), or the step itself where the cones turn it by more
+    // than 2^-30 (the point is then not on the features it seems to be on: a flat valley along an edge or face nearly
+    // parallel to the axis), or, where its parts come near the ends of double's range, it is read from
+    // the cylinder point itself (nearest_on_cylinder scales).
     auto upper_at = [&](const std::array<D, 3>& m) {
         const DV X = point(box, m);
         const AtPoint up = at_point(k, X);
@@ -444,7 +484,13 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
         first = false;
         const Vec3<double> n = approx(up.toward);
         const double big = std::max({std::abs(n[0]), std::abs(n[1]), std::abs(n[2])});
-        if (big >= 0x1p-900 && big <= 0x1p900) return up.toward;
+        in_cones = false;
+        if (big >= 0x1p-900 && big <= 0x1p900) {
+            const DV cones = in_normal_cones(box, k, m, up);
+            const Vec3<double> v = approx(cones), turn = cross(v, n);
+            in_cones = dot(turn, turn) <= 0x1p-60 * dot(v, v) * dot(n, n);
+            return in_cones ? cones : up.toward;
+        }
         return value(nearest_on_cylinder(k, X) - X);
     };
     // The upper bound alone decides dist ≤ decide_at where it holds: the gap is computed only where it
@@ -460,24 +506,31 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
     // double-double from where it ended, for the last bits: one or two steps where it converges
     // quadratically, at most dd_steps (more only crawl along a nearly flat valley of the distance, a
     // face nearly parallel to the axis, where the foot and the kinks below do better).
-    const BoxOf<double> box_d = rounded(box);
-    const CylOf<double> k_d = rounded(k);
+    // In double, the shapes relative to the box's centre (their difference formed in double-double):
+    // far from the origin (coordinates of 1e7 about shapes of 1e-3) the difference rounded in double
+    // would move the cylinder by an ulp of the coordinates, and the point with it, far more than the
+    // distance's last bits allow; relative to the box, by an ulp of the shapes' own size.
+    BoxOf<double> box_d = rounded(box);
+    CylOf<double> k_d = rounded(k);
+    const DV origin = lift(box_d.center);
+    box_d.center = approx(box.center - origin);
+    k_d.C = approx(k.C - origin);
     refine(box_d, k_d, mu_double, free, newton_steps);
     std::array<D, 3> mu{D(mu_double[0]), D(mu_double[1]), D(mu_double[2])};
     const DV toward = upper_at(mu);
     if (enough()) return out;
     // Two directions for the lower bound: the refined pair's, and the double search's best (a face
-    // normal, the axis, an edge crossed with the axis: exact for face, cap and side contacts, where the
-    // refined direction is only nearly so). Each gap costs as much as the upper bound, so the one whose
-    // gap in double is the larger goes first, and the other only where the first does not suffice (for
-    // the distance: where it leaves the enclosure wider than one double, so that the second direction
-    // still tightens what the first proves to within four).
+    // normal, the axis, an edge crossed with the axis: exact for face, cap and side contacts). Each gap
+    // costs as much as the upper bound, so one goes first, and the other only where the first does not
+    // suffice (for the distance: where it leaves the enclosure wider than two doubles, so that the second
+    // direction still tightens what the first proves to within four). First the refined pair's where it
+    // lies in the normal cones, else the one whose gap in double is the larger.
     const DV search = lift(a.direction);
     // At a vertex (every coordinate at ±1) the refined direction is the exact one wherever both agree.
     const bool vertex = std::abs(mu_double[0]) == 1 && std::abs(mu_double[1]) == 1 && std::abs(mu_double[2]) == 1;
-    const bool search_first = !vertex && a.lower >= gap_in_double(box_d, k_d, approx(toward)) * (1 - 0x1p-30);
+    const bool search_first = !in_cones && !vertex && a.lower >= gap_in_double(box_d, k_d, approx(toward)) * (1 - 0x1p-30);
     lower(search_first ? search : toward);
-    if (enough() && (enough_doubles == 0 || refined::within_doubles(out, 1))) return out;
+    if (enough() && (enough_doubles == 0 || refined::within_doubles(out, 2))) return out;
     lower(search_first ? toward : search);
     if (enough()) return out;
     // The margin inside bounds within 2^-80 of it (double-double's evaluations leave about 2^-94): the
@@ -504,6 +557,7 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
     };
     if (steps(0.0) && bounds_at(mu)) return out;
     if (steps(W(0.0)) && bounds_at(mu)) return out;
+    if (!last_resorts) return out;
     // A second box point where the bounds still differ in double: the foot of the cylinder's point
     // extreme along the best direction (where a face lies nearly parallel to a cap, Newton's model
     // sees no curvature, and that rim point's foot is the nearest box point).
