@@ -8,7 +8,8 @@
 // skips that check. Needs the exact backend (boxcyl::exact).
 //
 // How (docs/distance.md has the argument):
-//   1. The exact intersection query: a hit is [0, 0].
+//   1. Whether they meet: a hit is [0, 0]. Asked of the exact intersection query only where the bounds
+//      of step 3 do not prove a gap first.
 //   2. Both shapes scaled by a power of two, exactly, to lengths near 1.
 //   3. Certified bounds from an approximate closest pair (filtered/separation.hpp), refined by Newton's
 //      method (in double, then in double-double where the bounds need it) and evaluated in
@@ -27,6 +28,7 @@
 #include <cmath>        // std::isfinite, std::ilogb, std::sqrt
 #include <cstdint>      // std::uint64_t
 #include <limits>       // infinity
+#include <optional>     // the intersection query, asked once
 #include <stdexcept>    // std::invalid_argument
 #include <type_traits>  // std::is_same_v
 
@@ -131,16 +133,20 @@ inline constexpr double search_gap = 0x1p-20;
 // bounds are still wider than the goal, GJK's pair, with them (a box lying nearly along the axis or a
 // cap, where the projections' point lies in the wrong valley). On bench_distance's random set 44 of
 // 2,048 pairs take the second start.
-template <class Box>
-Distance refined(const Box& box, const Cylinder<double>& cyl, bool touching) {
+// `meets()`: whether the solids intersect (the exact query), asked only where the bounds from the first
+// start do not prove them apart (a lower bound above 0), or where the search in double sees no gap.
+template <class Box, class Meets>
+Distance refined(const Box& box, const Cylinder<double>& cyl, Meets&& meets) {
     namespace sep = filtered::separation;
-    Distance out{0.0, touching ? 0.0 : std::numeric_limits<double>::infinity(), {}, {}};
-    sep::Approximate search;
+    sep::Approximate search = clearance::projected_search(box, cyl);
     sep::RefinedBounds r{};
-    if (!touching) {
-        search = clearance::projected_search(box, cyl);
+    bool apart = false;
+    if (search.lower > 0) {
         r = sep::refined_bounds(box, cyl, search, -1, newton_steps, max_steps, false);
+        apart = r.found && sep::refined::lower_double(r.lower) > 0;
     }
+    const bool touching = !apart && meets();
+    Distance out{0.0, touching ? 0.0 : std::numeric_limits<double>::infinity(), {}, {}};
     if (touching || !r.found || !sep::refined::within_doubles(r, max_steps)) {
         search = clearance::search_in_double(box, cyl, -1, search_gap);
         r = sep::refined_bounds(box, cyl, search, -1, newton_steps, max_steps);
@@ -169,7 +175,11 @@ Distance refined(const Box& box, const Cylinder<double>& cyl, bool touching) {
 
 template <class Box>
 Distance distance(const Box& box, const Cylinder<double>& cyl) {
-    const bool touching = intersects_unchecked(box, cyl);
+    std::optional<bool> meet;  // the exact intersection query's answer, once asked
+    auto meets = [&] {
+        if (!meet) meet = intersects_unchecked(box, cyl);
+        return *meet;
+    };
     // Scaled so that the largest length is near 1, where the scaling is exact (distances scale with it).
     Magnitude size;
     size(box), size(cyl);
@@ -178,7 +188,7 @@ Distance distance(const Box& box, const Cylinder<double>& cyl) {
     const Cylinder<double> scyl = scale(cyl);
     Distance out;
     if (scale.exact && scale.e != 0) {
-        out = refined(sbox, scyl, touching);
+        out = refined(sbox, scyl, meets);
         Scale back{-scale.e};
         out.on_box = back(out.on_box);
         out.on_cylinder = back(out.on_cylinder);
@@ -187,10 +197,10 @@ Distance distance(const Box& box, const Cylinder<double>& cyl) {
         out.lower = filtered::times_two_to(lower, scale.e) == out.lower ? lower : std::max(0.0, boxcyl::detail::next_down(lower));
         out.upper = filtered::times_two_to(upper, scale.e) == out.upper ? upper : boxcyl::detail::next_up(upper);
     } else {
-        out = refined(box, cyl, touching);
+        out = refined(box, cyl, meets);
     }
     out.on_box = into(box, out.on_box);
-    if (touching) return out;
+    if (meet.value_or(false)) return out;  // not asked: the bounds proved them apart
     // The exact bisection: what the bounds leave wider than the goal.
     while (steps(out.lower, out.upper) > max_steps) {
         const double m = halfway(out.lower, out.upper);

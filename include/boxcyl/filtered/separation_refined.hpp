@@ -425,8 +425,15 @@ inline double lower_double(const DoubleDouble& lower) {
 inline double width(const RefinedBounds& r) {
     return (r.upper.high() - r.lower.high()) + ((r.upper.low() + r.upper.error()) - (r.lower.low() - r.lower.error()));
 }
-// Whether the doubles the bounds prove are at most n apart.
+// Whether the doubles the bounds prove are at most n apart. Where the values' leading doubles are more
+// than n + 4 apart, the doubles proved are too (they lie within about one double of them, the error
+// bounds far below an ulp), and the comparisons that prove them are skipped (as after the upper bound
+// alone, with the lower still 0).
 inline bool within_doubles(const RefinedBounds& r, std::uint64_t n) {
+    const double up_value = r.upper.high(), lo_value = std::max(0.0, r.lower.high());
+    if (up_value >= lo_value && up_value <= std::numeric_limits<double>::max() &&
+        std::bit_cast<std::uint64_t>(up_value) - std::bit_cast<std::uint64_t>(lo_value) > n + 4)
+        return false;
     const double lo = lower_double(r.lower), up = upper_double(r.upper);
     return lo <= up && std::bit_cast<std::uint64_t>(up) - std::bit_cast<std::uint64_t>(lo) <= n;
 }
@@ -445,8 +452,8 @@ inline std::optional<bool> decides(const RefinedBounds& r, double m) {
 // ≥ 0, the further candidates (a foot, the kinks) are tried only while the bounds do not decide
 // dist ≤ decide_at, and with `enough_doubles` > 0 only while the bounds prove doubles farther apart than
 // that. `newton_steps` bounds the refinement's steps in double (in double-double, at most 4 follow); it ends
-// sooner once converged. Without `last_resorts` the bounds end after the Newton steps, for a caller that
-// has a better start to try next.
+// sooner once converged. Without `last_resorts` the bounds end before the costly candidates (for the
+// distance, before the steps in double-double), for a caller that has a better start to try next.
 template <class AnyBox>
 RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const Approximate& a, double decide_at = -1,
                              int newton_steps = 4, std::uint64_t enough_doubles = 0, bool last_resorts = true) {
@@ -555,20 +562,34 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
         mu = {mu_v[0].exact(), mu_v[1].exact(), mu_v[2].exact()};
         return moved(before);
     };
-    if (steps(0.0) && bounds_at(mu)) return out;
-    if (steps(W(0.0)) && bounds_at(mu)) return out;
-    if (!last_resorts) return out;
+    auto newton_in_double_double = [&] { return (steps(0.0) && bounds_at(mu)) || (steps(W(0.0)) && bounds_at(mu)); };
     // A second box point where the bounds still differ in double: the foot of the cylinder's point
     // extreme along the best direction (where a face lies nearly parallel to a cap, Newton's model
     // sees no curvature, and that rim point's foot is the nearest box point).
-    if (out.upper.hi() - out.lower.lo() > 0x1p-50 * out.upper.hi()) {
-        const DV X2 = point(box, foot(a.box, algo::gjk::detail::support(algo::gjk::Cylinder{c.center, a.u, c.radius, 0.5 * c.height}, -a.direction)));
-        const AtPoint upper2 = at_point(k, X2);
-        if (upper_end_below(upper2.distance, out.upper)) out.upper = upper2.distance, out.witness = value(X2), out.toward = upper2.toward;
+    auto foot_point = [&] {
+        if (out.upper.hi() - out.lower.lo() > 0x1p-50 * out.upper.hi()) {
+            const DV X2 = point(box, foot(a.box, algo::gjk::detail::support(algo::gjk::Cylinder{c.center, a.u, c.radius, 0.5 * c.height}, -a.direction)));
+            const AtPoint upper2 = at_point(k, X2);
+            if (upper_end_below(upper2.distance, out.upper)) out.upper = upper2.distance, out.witness = value(X2), out.toward = upper2.toward;
+        }
+        return enough();
+    };
+    auto kinks_here = [&] {
+        if (out.upper.hi() - out.lower.lo() > 0x1p-80 * out.upper.hi()) kinks(box, k, mu, out);
+        return enough();
+    };
+    // The distance, which has only the enclosure's width to go by, tries the foot and the kinks first:
+    // on bench_distance's random set nearly every pair the double stage leaves open lies in a flat
+    // valley, where the steps in double-double crawl (several µs) and those candidates, or a better
+    // start (last_resorts false), end it. The clearance query's pairs left open lie within rounding of
+    // their margin, where the steps are what decides.
+    if (enough_doubles > 0) {
+        if (foot_point() || kinks_here() || !last_resorts || newton_in_double_double()) return out;
+    } else {
+        if (newton_in_double_double()) return out;
     }
-    if (enough()) return out;
-    if (out.upper.hi() - out.lower.lo() > 0x1p-80 * out.upper.hi()) kinks(box, k, mu, out);
-    if (enough()) return out;
+    if (!last_resorts) return out;
+    if (enough_doubles == 0 && (foot_point() || kinks_here())) return out;
     // The kinks of every edge: the refinement can leave its point inside a face that lies nearly
     // parallel to a cap, while the nearest point is where one of the face's edges enters the rim's
     // region. The four vertices of even parity meet each of the 12 edges once.
