@@ -481,9 +481,9 @@ RefinedBounds refined_bounds(const AnyBox& b, const Cylinder<double>& c, const A
     // The bounds at the box point μ: its distance to the cylinder, and the gap along the direction to
     // its nearest cylinder point (each kept where better). The direction is the step to that point in
     // both shapes' normal cones (in_normal_cones), or the step itself where the cones turn it by more
-    // than 2^-30 (the point is then not on the features it seems to be on: a flat valley along an edge or face nearly
-    // parallel to the axis), or, where its parts come near the ends of double's range, it is read from
-    // the cylinder point itself (nearest_on_cylinder scales).
+    // than 2^-30 (the point is then not on the features it seems to be on: a flat valley along an edge
+    // or face nearly parallel to the axis), or, where its parts come near the ends of double's range,
+    // it is read from the cylinder point itself (nearest_on_cylinder scales).
     auto upper_at = [&](const std::array<D, 3>& m) {
         const DV X = point(box, m);
         const AtPoint up = at_point(k, X);
