@@ -60,7 +60,7 @@ OUTPUT
 
 EXAMPLE
   echo '{"box":{"min":[0,0,0],"max":[1,1,1]},"cylinder":{"center":[3,0.5,0.5],"axis":[0,0,1],"radius":1,"height":1}}' | boxcyl distance
-  {"lower": 1, "upper": 1.0000000000000002, "on_box": [1, 0.5, 1], "on_cylinder": [2, 0.5, 1]}
+  {"lower": 1, "upper": 1, "on_box": [1, 0.5, 1], "on_cylinder": [2, 0.5, 1]}
 )";
 
 void append_number(std::string& s, double x) {
