@@ -297,10 +297,9 @@ TEST(SeparationJudged, RefinedEdgesAlongNearlyParallelFaces) {
 
 // The distance's first start (the projections, then Newton's steps in double, without the steps in
 // double-double or the last resorts) on random separated pairs: the bounds hold by the oracle's
-// distance, and nearly all are within the distance's goal of 4 doubles. Where the lower bound's
-// direction were the refined pair's step as it is (off by about ε·|X|/dist, lost to first order at a
-// box edge or face, the side or a cap), 306 of bench_distance's 2,048 random pairs needed the steps in
-// double-double; in the shapes' normal cones, 61.
+// distance, and nearly all are within the distance's goal of 4 doubles: the lower bound's direction in
+// the shapes' normal cones (in_normal_cones) leaves no first-order loss at a box edge or face, the
+// side or a cap, so the steps in double-double are rarely needed.
 TEST(SeparationJudged, FirstStartMeetsTheDistanceGoal) {
     long separated = 0, within = 0;
     int violations = 0;
