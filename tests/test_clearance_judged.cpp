@@ -17,11 +17,13 @@
 #include <cstdint>  // seeds, bit patterns
 #include <cstdio>   // std::printf
 #include <cstring>  // std::memcpy
+#include <optional> // the centre ball's undecided
 #include <random>   // fixed-seed generators
 #include <string>   // describe()
 #include <vector>   // margins
 
 #include "boxcyl/clearance.hpp"
+#include "boxcyl/filtered/centre_ball.hpp"
 #include "clearance/clearance_oracle.hpp"
 #include "clearance/exact_case.hpp"
 #include "clearance/lattice.hpp"
@@ -184,6 +186,70 @@ TEST(ClearanceJudged, EveryRoundingMode) {
         }
     }
     std::printf("rounding modes: %ld queries judged, %d disagreements\n", checked, disagreements);
+    EXPECT_EQ(disagreements, 0);
+}
+
+// The centre ball's answers (filtered/centre_ball.hpp) at the edges of its error allowance: for each
+// pair, the least margin its "yes" test answers and the greatest its "no" test answers (bisected on
+// the doubles' order: both tests are monotone in m), judged by the oracle in every rounding mode. Random
+// pairs of every profile; small cubes near a cylinder's rim (the boxes a batch leaves to the scalar
+// query), whose centre decides most often; and points there, near the origin and far from it, whose
+// distance is their centre's, so that only the error allowance separates the edge margin from it.
+std::optional<bool> ball_says(const Case& c, double m) {
+    return with_box(c, [m](const auto& box, const Cylinder<double>& cyl) { return filtered::centre_ball::decide(box, cyl, m); });
+}
+double ball_edge(const Case& c, bool yes) {  // the least m it says yes at (yes), the greatest it says no at (!yes); -1: none
+    std::int64_t lo = 0, hi = ordered_bits(0x1p300);
+    auto says = [&](std::int64_t i) { return ball_says(c, from_ordered_bits(i)) == yes; };
+    if (yes ? !says(hi) : !says(lo)) return -1;
+    if (yes && says(lo)) return 0.0;
+    if (!yes && says(hi)) return -1;
+    while (hi - lo > 1) {
+        const std::int64_t mid = lo + (hi - lo) / 2;
+        (says(mid) == yes ? hi : lo) = mid;
+    }
+    return from_ordered_bits(yes ? hi : lo);
+}
+TEST(ClearanceJudged, CentreBallAtTheEdgesOfItsAllowance) {
+    std::vector<Case> cases;
+    for (Profile p : {Profile::mixed, Profile::uniform, Profile::georeferenced, Profile::degenerate, Profile::magnitudes}) {
+        CaseGenerator gen(0xc1ea0500 + static_cast<std::uint64_t>(p), p);
+        for (int i = 0; i < 40; ++i) cases.push_back(gen.next());
+    }
+    std::mt19937_64 rng(0xc1ea0501);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int i = 0; i < 200; ++i) {  // cubes of 1/64 of the reach within 1.5 reaches of a tilted cylinder
+        Case c;
+        c.cylinder = {{0.3, -0.2, 0.1}, {0.3, 0.5, 0.8}, 1.7, 2.9};
+        const double reach = 1.7 + 1.45, side = reach / 64;
+        for (int j = 0; j < 3; ++j) {
+            c.aligned.min[j] = c.cylinder.center[j] + 1.5 * reach * unit(rng);
+            c.aligned.max[j] = c.aligned.min[j] + side;
+        }
+        cases.push_back(c);
+        c.aligned.max = c.aligned.min;  // a point: its distance is the centre's, the allowance all that is left
+        cases.push_back(c);
+        c.cylinder.center = c.cylinder.center + Vec3<double>{4e5, 7e6, 1e3};  // the same far from the origin
+        c.aligned.min = c.aligned.max = c.aligned.min + Vec3<double>{4e5, 7e6, 1e3};
+        cases.push_back(c);
+    }
+    int disagreements = 0, edges = 0;
+    for (const Case& c : cases)
+        for (const bool yes : {true, false}) {
+            const double m = ball_edge(c, yes);
+            if (m < 0) continue;
+            ++edges;
+            const bool j = judged(c, m);
+            for (const int mode : {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+                const RoundingMode scope(mode);
+                const std::optional<bool> a = ball_says(c, m);
+                if (a && *a != j && ++disagreements <= 5)
+                    ADD_FAILURE() << "rounding mode " << mode_name(mode) << ": centre ball " << (a ? (*a ? "yes" : "no") : "undecided")
+                                  << ", oracle " << j << " at margin " << hex(m) << " for\n" << describe(c);
+            }
+        }
+    std::printf("centre ball: %d edge margins of %zu pairs judged, %d disagreements\n", edges, cases.size(), disagreements);
+    EXPECT_GT(edges, 100);
     EXPECT_EQ(disagreements, 0);
 }
 

@@ -83,6 +83,7 @@
 #include "boxcyl/batch/parallelepiped.hpp"
 #include "boxcyl/batch/types.hpp"
 #include "boxcyl/clearance.hpp"
+#include "boxcyl/filtered/centre_ball.hpp"  // the lanes left to the scalar query: their centre first
 #include "boxcyl/geometry/box.hpp"
 #include "boxcyl/geometry/cylinder.hpp"
 #include "boxcyl/margin.hpp"
@@ -195,9 +196,12 @@ Stats answer(const Q& q, std::span<const Parallelepiped<T>> b, Out out, const Op
 }
 
 // The scalar clearance query for the lanes the filter leaves (types.hpp's Clearance says why through a
-// pointer).
+// pointer). Those lanes lie near the rim tori, where the box's centre ball (the scalar query's stage
+// after its probes' stage 0) decides more than half of them alone, and stage 0 fewer at several times
+// the cost: the ball first.
 template <class Box>
 bool scalar_within(const Box& box, const Cylinder<double>& cyl, double m) {
+    if (const std::optional<bool> v = filtered::centre_ball::decide(box, cyl, m)) return *v;
     return boxcyl::within_distance_unchecked(box, cyl, m);
 }
 

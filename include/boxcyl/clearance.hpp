@@ -36,6 +36,7 @@
 #if defined(BOXCYL_HAS_EXACT)
 #include "boxcyl/exact/clearance.hpp"
 #include "boxcyl/exact/convert.hpp"
+#include "boxcyl/filtered/centre_ball.hpp"
 #include "boxcyl/filtered/prepared.hpp"
 #include "boxcyl/filtered/rim.hpp"
 #include "boxcyl/filtered/separation.hpp"
@@ -491,6 +492,13 @@ std::optional<bool> quick_separation(Pair<Box>& q) {
     }
     return std::nullopt;
 }
+// The box's centre and a ball about it (filtered/centre_ball.hpp): a box near the rim tori that stage
+// 0's cylinders leave often has its centre within the margin, or lies beyond it as a whole ball, which
+// a few dozen flops prove where the quick bounds' search costs most of a microsecond.
+template <class Box>
+std::optional<bool> centre_ball(Pair<Box>& q) {
+    return filtered::centre_ball::decide(q.box, q.cyl, q.m);
+}
 // The same bounds after Newton refinement, in double-double (filtered/separation_refined.hpp): the
 // pairs within rounding of the margin.
 template <class Box>
@@ -528,9 +536,9 @@ std::optional<bool> exact_stage(Pair<Box>& q) {
 }
 
 // The order is policy: on random pairs most are decided by the probes' stage 0 (the fat cylinder's hit
-// or the outer one's miss, certified in plain double, or a rim witness's hit), and nearly all of the
-// rest near the rim by the quick bounds, a fraction of the cost of the grown box, the shoulders and
-// GJK's bounds that follow. A pair whose quick search lands within kNearMargin of the margin skips the grown
+// or the outer one's miss, certified in plain double, or a rim witness's hit); of the rest, near the
+// rim, the centre ball decides many for a few dozen flops and the quick bounds nearly all others, a
+// fraction of the cost of the grown box, the shoulders and GJK's bounds that follow. A pair whose quick search lands within kNearMargin of the margin skips the grown
 // box, the shoulders and GJK (near_margin): the refined bounds start from its pair. They come before the
 // probes' whole queries: at the margin they decide the pairs whose distance is within rounding of it
 // but not equal (most contacts with the side or a cap among them), where the probes' queries, on
@@ -539,13 +547,13 @@ std::optional<bool> exact_stage(Pair<Box>& q) {
 // rim contacts at exactly the margin, and queries in a directed rounding mode that the earlier stages
 // leave (docs/clearance.md gives the measured shares).
 template <class Box>
-inline constexpr std::array<Stage<Box>, 11> stages{
-    &probes_stage0<Box>,       &quick_separation<Box>, &grown_box_misses<Box>, &shoulders<Box>,
-    &separation<Box>,          &refined_separation<Box>, &probe<Box, 0>,         &probe<Box, 1>,
-    &probe<Box, 2>,            &rim<Box>,              &exact_stage<Box>};
-inline constexpr std::array<const char*, 11> stage_names{
-    "probes' stage 0", "quick bounds", "grown box",       "shoulders",         "distance bounds", "refined bounds",
-    "fat probe",       "outer probe", "tall probe",       "rim intervals",     "exact"};
+inline constexpr std::array<Stage<Box>, 12> stages{
+    &probes_stage0<Box>, &centre_ball<Box>,        &quick_separation<Box>, &grown_box_misses<Box>,
+    &shoulders<Box>,     &separation<Box>,         &refined_separation<Box>, &probe<Box, 0>,
+    &probe<Box, 1>,      &probe<Box, 2>,           &rim<Box>,              &exact_stage<Box>};
+inline constexpr std::array<const char*, 12> stage_names{
+    "probes' stage 0", "centre ball", "quick bounds", "grown box",   "shoulders",     "distance bounds",
+    "refined bounds",  "fat probe",   "outer probe",  "tall probe",  "rim intervals", "exact"};
 
 // The index of the stage that answers, for the benchmark's per-stage shares (margin > 0).
 template <class Box>
