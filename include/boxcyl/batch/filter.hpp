@@ -252,19 +252,34 @@ BOXCYL_FORCE_INLINE inline Lanes clamp(const Lanes& x, const Lanes& lo, const La
 struct PointTests {
     LaneMask radial, below_top, above_bottom;
 };
-BOXCYL_FORCE_INLINE inline PointTests point_tests(const CylinderFilter& f, const Lanes v[3], const Lanes& ev) {
-    const Lanes a = f.u[0] * v[0] + f.u[1] * v[1] + f.u[2] * v[2];
+// The terms of the tests that depend on the point and the axis alone (û, δ_u), not on the radius or
+// the height: cylinders that share the axis (the clearance form's probes) share them, and each further
+// cylinder's tests cost a few operations (point_tests below: the same values, summed in the same order).
+struct PointTerms {
+    Lanes a, aa, ea, q, a2, t1, t2;
+};
+BOXCYL_FORCE_INLINE inline PointTerms point_terms(const CylinderFilter& f, const Lanes v[3], const Lanes& ev) {
+    PointTerms t;
+    t.a = f.u[0] * v[0] + f.u[1] * v[1] + f.u[2] * v[2];
     const Lanes sa = std::fabs(f.u[0]) * stdx::abs(v[0]) + std::fabs(f.u[1]) * stdx::abs(v[1]) +
                      std::fabs(f.u[2]) * stdx::abs(v[2]);
     const Lanes sv = stdx::abs(v[0]) + stdx::abs(v[1]) + stdx::abs(v[2]);
-    const Lanes ea = kRel * sa + f.du * sv + 2.5 * ev + kAbs;
-    const Lanes aa = stdx::abs(a);
-    const Lanes axial_bound = ea + kRel * (f.h + aa);
-    const Lanes q = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-    const Lanes a2 = a * a;
-    const Lanes m = (f.r2 - q) + a2;
-    const Lanes bound = kRel * (f.r2 + q + a2) + ea * (2 * aa + ea) + ev * (2 * sv + 3 * ev) + kAbs;
-    return {m > bound, (f.h - a) > axial_bound, (f.h + a) > axial_bound};
+    t.ea = kRel * sa + f.du * sv + 2.5 * ev + kAbs;
+    t.aa = stdx::abs(t.a);
+    t.q = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    t.a2 = t.a * t.a;
+    t.t1 = t.ea * (2 * t.aa + t.ea);
+    t.t2 = ev * (2 * sv + 3 * ev);
+    return t;
+}
+BOXCYL_FORCE_INLINE inline PointTests point_tests(const CylinderFilter& f, const PointTerms& t) {
+    const Lanes axial_bound = t.ea + kRel * (f.h + t.aa);
+    const Lanes m = (f.r2 - t.q) + t.a2;
+    const Lanes bound = kRel * (f.r2 + t.q + t.a2) + t.t1 + t.t2 + kAbs;
+    return {m > bound, (f.h - t.a) > axial_bound, (f.h + t.a) > axial_bound};
+}
+BOXCYL_FORCE_INLINE inline PointTests point_tests(const CylinderFilter& f, const Lanes v[3], const Lanes& ev) {
+    return point_tests(f, point_terms(f, v, ev));
 }
 
 // A certain hit from box points P_k (each exactly in the box): if the points that are radially inside
@@ -426,10 +441,12 @@ BOXCYL_FORCE_INLINE inline void nearest_to_centre(const BallConstants& b, const 
 }
 // The lanes whose box point w (nearest_to_centre) certainly lies in the cylinder of f (a usable
 // filter's); eligible where |w_j| ≤ 2^200, point_tests' range.
-BOXCYL_FORCE_INLINE inline LaneMask point_inside(const CylinderFilter& f, const Lanes w[3]) {
-    const Lanes big = stdx::max(stdx::max(stdx::abs(w[0]), stdx::abs(w[1])), stdx::abs(w[2]));
-    const PointTests p = point_tests(f, w, Lanes(0));
-    return big <= kLimit && p.radial && p.below_top && p.above_bottom;
+BOXCYL_FORCE_INLINE inline LaneMask point_inside(const CylinderFilter& f, const PointTerms& t, const LaneMask& in_range) {
+    const PointTests p = point_tests(f, t);
+    return in_range && p.radial && p.below_top && p.above_bottom;
+}
+BOXCYL_FORCE_INLINE inline LaneMask point_in_range(const Lanes w[3]) {
+    return stdx::max(stdx::max(stdx::abs(w[0]), stdx::abs(w[1])), stdx::abs(w[2])) <= kLimit;
 }
 
 // What the first pass computed for a vector, for the clearance form's later probes (kernel.hpp's
@@ -437,7 +454,8 @@ BOXCYL_FORCE_INLINE inline LaneMask point_inside(const CylinderFilter& f, const 
 // nearest to C and the lanes it proved to be hits (`by_point`).
 struct FirstPassTerms {
     BallTerms x;
-    Lanes w[3];
+    PointTerms w;       // the point's terms (point_terms, ev = 0), which probes sharing û and δ_u share
+    LaneMask w_ok;      // the point within point_tests' range
     LaneMask by_point;  // no initialiser: the constructor would not inline into a kernel's `#pragma GCC target`
     bool computed = false, tried = false;
 };
@@ -467,10 +485,12 @@ BOXCYL_FORCE_INLINE inline LaneResult aligned_ball_lanes(const CylinderFilter& f
     if (!stdx::all_of(decided)) {
         Lanes w[3];
         nearest_to_centre(b, lo, hi, w);
-        const LaneMask by_point = point_inside(f, w) && !out;
+        const PointTerms pt = point_terms(f, w, Lanes(0));
+        const LaneMask w_ok = point_in_range(w);
+        const LaneMask by_point = point_inside(f, pt, w_ok) && !out;
         decided = decided || by_point, hit = hit || by_point;
         if (terms != nullptr) {
-            for (int j = 0; j < 3; ++j) terms->w[j] = w[j];
+            terms->w = pt, terms->w_ok = w_ok;
             terms->by_point = by_point, terms->tried = true;
         }
     }

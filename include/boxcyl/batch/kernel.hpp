@@ -308,8 +308,8 @@ void later_passes(const CylinderFilter& f, const Source& s, std::size_t begin, s
 
 // The clearance form's later probes whose hit answers yes (fat and tall), answered in the first pass
 // where their own ball test proves the hit: they share the first probe's centre and axis, so the ball's
-// terms are computed once (filter.hpp's ball_terms) and each further cylinder costs a few comparisons
-// per lane. Otherwise the lanes inside the outer cylinder (its hits, which answer nothing: on the voxel
+// terms and the box point's (filter.hpp's ball_terms, point_terms) are computed once and each further
+// cylinder costs a few operations per lane. Otherwise the lanes inside the outer cylinder (its hits, which answer nothing: on the voxel
 // set one box in twenty) all went through the later probes' whole filter, gathered. `says`: the lanes
 // one of them proves to be hits.
 struct LaterBalls {
@@ -363,7 +363,7 @@ BlockFilter filter_block(const CylinderFilter& f, const Source& s, std::size_t b
                         if (later->filter[i]->usable) says = says || ball_inside(later->filter[i]->ball, t.x);
                     if (t.tried && stdx::any_of(t.by_point && !says))
                         for (std::size_t i = 0; i < later->count; ++i)
-                            if (later->filter[i]->usable) says = says || (t.by_point && point_inside(*later->filter[i], t.w));
+                            if (later->filter[i]->usable) says = says || (t.by_point && point_inside(*later->filter[i], t.w, t.w_ok));
                     if (stdx::any_of(says)) later->says |= (to_bits({says, says}).hit & in_range) << k;
                 }
             } else {
@@ -401,7 +401,7 @@ struct Meets {
 struct Within {
     const Clearance& query;
     CylinderFilter filter[3];
-    bool shared_terms = false;  // every probe's filter has the first's C, û and κ (LaterBalls)
+    bool shared_terms = false;  // every probe's filter has the first's C, û, δ_u and κ (LaterBalls)
 };
 inline Meets prepare_query(const Cylinder<double>& cyl) {
     assert(is_valid(cyl) && "boxcyl::batch::intersects: invalid cylinder (see boxcyl::validate)");
@@ -411,13 +411,13 @@ inline Within prepare_query(const Clearance& q) {
     assert(is_valid(q.cylinder) && "boxcyl::batch::within_distance: invalid cylinder (see boxcyl::validate)");
     Within w{q, {}};
     for (std::size_t k = 0; k < q.probes; ++k) w.filter[k] = prepare(q.probe[k]);
-    // The probes share the cylinder's centre and axis, so prepare() gives them the same C, û and κ; the
-    // check keeps LaterBalls sound should that ever change.
+    // The probes share the cylinder's centre and axis, so prepare() gives them the same C, û, δ_u and κ;
+    // the check keeps LaterBalls sound should that ever change.
     w.shared_terms = q.probes > 0;
     for (std::size_t k = 1; k < q.probes; ++k)
         for (int j = 0; j < 3; ++j)
             w.shared_terms = w.shared_terms && w.filter[k].c[j] == w.filter[0].c[j] && w.filter[k].u[j] == w.filter[0].u[j] &&
-                             w.filter[k].kappa == w.filter[0].kappa;
+                             w.filter[k].du == w.filter[0].du && w.filter[k].kappa == w.filter[0].kappa;
     return w;
 }
 
