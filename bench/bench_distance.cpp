@@ -240,6 +240,7 @@ int main(int argc, char** argv) {
         add_intersects_row(s.name, cases);
 #ifdef BOXCYL_BENCH_PEERS
         for (const boxcyl::bench::ClearancePeerInfo& info : boxcyl::bench::kClearancePeers) {
+            if (!boxcyl::bench::has_distance(info.peer)) continue;
             g_peers.push_back(std::make_unique<boxcyl::bench::PeerDistances>(info.peer, s.cases));
             const boxcyl::bench::PeerDistances* p = g_peers.back().get();
             const std::size_t n = s.cases.size();

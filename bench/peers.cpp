@@ -12,6 +12,7 @@
 // oracle's for the converted inputs' sake as well as its own.
 #include "peers.hpp"
 
+#include <algorithm>  // std::copy
 #include <array>      // 3×3 matrices
 #include <cmath>      // std::sqrt, std::copysign, std::ilogb, std::scalbn, std::fabs
 #include <cstdarg>    // va_list (ODE's message handlers)
@@ -19,6 +20,7 @@
 #include <mutex>      // std::call_once
 #include <optional>   // Bullet's distance, when it has one
 #include <stdexcept>  // std::logic_error, std::runtime_error
+#include <string>     // MuJoCo's messages
 #include <utility>    // std::pair
 
 #include <fcl/geometry/shape/box.h>
@@ -34,6 +36,8 @@
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 
 #include <ode/ode.h>
+
+#include <mujoco/mujoco.h>
 
 #include <fcntl.h>     // open: /dev/null for a child's stderr
 #include <sys/wait.h>  // waitpid
@@ -380,6 +384,129 @@ private:
     std::vector<char> failed_;
 };
 
+// ---- MuJoCo 2.2 (Debian's libmujoco): mj_collision on a model of two free bodies ----
+//
+// A box geom and a cylinder geom (MuJoCo's sizes: half extents; radius and half height), each on a free
+// body, so that the pair is not filtered out. Each query writes its poses (qpos: position, then the
+// quaternion of R) and sizes (with the bounding radii the broad phase reads) into the one model and
+// data, then mj_kinematics places the geoms and mj_collision finds the contacts. (A contact's `dist`
+// under a margin beyond the distance is no distance: see peers.hpp's has_distance.) A pair's margin is the
+// larger of its geoms', so the box geom's margin is m and the cylinder's 0. mju_user_error (by default:
+// print and exit) throws while the queries are first tried, untimed; a query that fails counts as no
+// contact and is left out of the timed passes, as for ODE. Warnings (contact buffer full, …) are dropped.
+struct MujocoError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+[[noreturn]] void throw_mujoco_error(const char* message) { throw MujocoError(message); }
+void ignore_mujoco_warning(const char*) {}
+
+class MujocoScene {
+public:
+    explicit MujocoScene(const std::vector<Case>& cases) {
+        static const char* const kModel =
+            "<mujoco><worldbody>"
+            "<body><freejoint/><geom type='box' size='1 1 1'/></body>"
+            "<body><freejoint/><geom type='cylinder' size='1 1'/></body>"
+            "</worldbody></mujoco>";
+        mjVFS vfs;
+        mj_defaultVFS(&vfs);
+        const auto size = static_cast<int>(std::char_traits<char>::length(kModel));
+        if (mj_makeEmptyFileVFS(&vfs, "pair.xml", size) != 0) throw std::runtime_error("MuJoCo: no room in the VFS");
+        std::copy(kModel, kModel + size, static_cast<char*>(vfs.filedata[vfs.nfile - 1]));
+        char error[500] = "";
+        model_ = mj_loadXML("pair.xml", &vfs, error, sizeof error);
+        mj_deleteVFS(&vfs);
+        if (model_ == nullptr) throw std::runtime_error(std::string("MuJoCo: ") + error);
+        data_ = mj_makeData(model_);
+        mju_user_warning = ignore_mujoco_warning;
+        for (const Case& c : cases) {
+            const BoxPose b = box_pose(c);
+            const CylinderPose y = cylinder_pose(c);
+            Query q{};
+            place(q.qpos, b);
+            place(q.qpos + 7, y);
+            q.box = b.half;
+            q.radius = y.radius, q.half_height = 0.5 * y.height;
+            q.box_rbound = std::sqrt(b.half[0] * b.half[0] + b.half[1] * b.half[1] + b.half[2] * b.half[2]);
+            q.cylinder_rbound = std::sqrt(q.radius * q.radius + q.half_height * q.half_height);
+            queries_.push_back(q);
+        }
+    }
+    ~MujocoScene() {
+        mj_deleteData(data_);
+        mj_deleteModel(model_);
+    }
+    MujocoScene(const MujocoScene&) = delete;
+    MujocoScene& operator=(const MujocoScene&) = delete;
+
+    // Whether each query fails at `margin(i)` (tried once, untimed).
+    template <class Margin>
+    std::vector<char> failures(Margin&& margin) const {
+        std::vector<char> failed(queries_.size(), 0);
+        mju_user_error = throw_mujoco_error;
+        for (std::size_t i = 0; i < queries_.size(); ++i) {
+            try {
+                contact(i, margin(i));
+            } catch (const MujocoError&) {
+                failed[i] = 1;
+            }
+        }
+        return failed;
+    }
+    // Whether query i has a contact at the given margin.
+    bool contact(std::size_t i, double margin) const {
+        const Query& q = queries_[i];
+        std::copy(q.qpos, q.qpos + 14, data_->qpos);
+        for (int j = 0; j < 3; ++j) model_->geom_size[j] = q.box[j];
+        model_->geom_size[3] = q.radius, model_->geom_size[4] = q.half_height;
+        model_->geom_rbound[0] = q.box_rbound, model_->geom_rbound[1] = q.cylinder_rbound;
+        model_->geom_margin[0] = margin, model_->geom_margin[1] = 0;
+        mj_kinematics(model_, data_);
+        mj_collision(model_, data_);
+        return data_->ncon > 0;
+    }
+private:
+    struct Query {
+        double qpos[14];  // box: position, quaternion (w, x, y, z); then the cylinder's
+        Vec3<double> box;
+        double radius, half_height, box_rbound, cylinder_rbound;
+    };
+    static void place(double* qpos, const Placed& p) {
+        double rotation[9];
+        for (int row = 0; row < 3; ++row)
+            for (int col = 0; col < 3; ++col) rotation[3 * row + col] = p.rotation[row][col];
+        for (int j = 0; j < 3; ++j) qpos[j] = p.center[j];
+        mju_mat2Quat(qpos + 3, rotation);
+    }
+
+    mjModel* model_ = nullptr;
+    mjData* data_ = nullptr;
+    std::vector<Query> queries_;
+};
+
+// The clearance question: a contact at margin m.
+class Mujoco final : public PeerQueries::Impl {
+public:
+    Mujoco(const std::vector<Case>& cases, const std::vector<double>& margins) : scene_(cases), margins_(margins) {
+        failed_ = scene_.failures([this](std::size_t i) { return margins_[i]; });
+    }
+    bool answer(std::size_t i) const override { return !failed_[i] && query(i); }
+    long pass(std::size_t n) const override {
+        long hits = 0;
+        for (std::size_t i = 0; i < n; ++i)
+            if (!failed_[i]) hits += query(i);
+        return hits;
+    }
+    bool failed(std::size_t i) const override { return failed_[i]; }
+
+private:
+    bool query(std::size_t i) const { return scene_.contact(i, margins_[i]); }
+
+    MujocoScene scene_;
+    std::vector<double> margins_;
+    std::vector<char> failed_;
+};
+
 }  // namespace
 
 PeerQueries::PeerQueries(Peer peer, const std::vector<Case>& cases) {
@@ -399,6 +526,7 @@ PeerQueries::PeerQueries(ClearancePeer peer, const std::vector<Case>& cases, con
         case ClearancePeer::fcl_indep: impl_ = std::make_unique<FclDistance>(cases, margins, fcl::GST_INDEP); break;
         case ClearancePeer::bullet_gjk: impl_ = std::make_unique<Bullet>(cases, margins); break;
         case ClearancePeer::bullet_gjkepa2: impl_ = std::make_unique<BulletGjkEpa2>(cases, margins); break;
+        case ClearancePeer::mujoco: impl_ = std::make_unique<Mujoco>(cases, margins); break;
     }
     if (!impl_) throw std::logic_error("unknown peer library");
 }
@@ -525,6 +653,7 @@ PeerDistances::PeerDistances(ClearancePeer peer, const std::vector<Case>& cases)
         case ClearancePeer::fcl_indep: impl_ = std::make_unique<FclDistances>(cases, fcl::GST_INDEP); break;
         case ClearancePeer::bullet_gjk: impl_ = std::make_unique<BulletDistances>(cases, BulletDistances::Call::gjk); break;
         case ClearancePeer::bullet_gjkepa2: impl_ = std::make_unique<BulletDistances>(cases, BulletDistances::Call::epa2_distance); break;
+        case ClearancePeer::mujoco: throw std::logic_error("MuJoCo 2.2 has no distance call (has_distance)");
     }
     if (!impl_) throw std::logic_error("unknown peer library");
 }

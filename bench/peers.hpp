@@ -1,5 +1,6 @@
 // The same box–cylinder queries through peer collision libraries: FCL's GJK, Bullet's GJK
-// pair detector and ODE's dCollide, from Debian's packages. Built only with -DBOXCYL_BENCH_PEERS=ON
+// pair detector, ODE's dCollide and (for the clearance question and the distance) MuJoCo's collision
+// with a contact margin, from Debian's packages. Built only with -DBOXCYL_BENCH_PEERS=ON
 // (bench/CMakeLists.txt); bench_query.cpp times them beside boxcyl's queries in the same run,
 // bench_clearance.cpp the clearance question (within a distance m?) beside within_distance, and
 // bench_distance.cpp their distances and signed distances beside distance and signed_distance.
@@ -53,8 +54,9 @@ inline constexpr PeerInfo kPeers[] = {
 
 // The clearance question (is the box within distance m of the cylinder?) as each library can ask it.
 // FCL 0.7's CollisionRequest has no security margin (Coal's has), and ODE has neither a margin nor a
-// box–cylinder distance, so these are distance queries compared with m.
-enum class ClearancePeer { fcl_libccd, fcl_indep, bullet_gjk, bullet_gjkepa2 };
+// box–cylinder distance, so those are distance queries compared with m. MuJoCo has a margin of its
+// own: a contact "if dist < margin".
+enum class ClearancePeer { fcl_libccd, fcl_indep, bullet_gjk, bullet_gjkepa2, mujoco };
 
 struct ClearancePeerInfo {
     ClearancePeer peer;
@@ -67,6 +69,7 @@ inline constexpr ClearancePeerInfo kClearancePeers[] = {
     {ClearancePeer::fcl_indep, "fcl_distance_indep", "FCL distance() ≤ m, solver GST_INDEP"},
     {ClearancePeer::bullet_gjk, "bullet_gjk_distance", "Bullet btGjkPairDetector distance ≤ m (margins 0)"},
     {ClearancePeer::bullet_gjkepa2, "bullet_gjkepa2_distance", "Bullet btGjkEpaSolver2::Distance ≤ m (margins 0)"},
+    {ClearancePeer::mujoco, "mujoco_margin", "MuJoCo mj_collision, the box geom's margin m (contact: distance < m)"},
 };
 
 // One data set's queries in one peer library's representation.
@@ -112,6 +115,11 @@ inline constexpr SignedPeerInfo kSignedPeers[] = {
     {SignedPeer::bullet_gjk, "bullet_gjk_signed_distance", "Bullet btGjkPairDetector (GJK + EPA, margins 0)"},
     {SignedPeer::bullet_gjkepa2, "bullet_gjkepa2_signed_distance", "Bullet btGjkEpaSolver2::SignedDistance (margins 0)"},
 };
+
+// Whether the clearance peer has a distance call: MuJoCo 2.2 has none (its contacts under a margin
+// carry a `dist`, but with a margin of the centres' distance it lay outside boxcyl's enclosure on every
+// random pair, off by a median 94% of the distance: not a distance a user could take).
+constexpr bool has_distance(ClearancePeer p) { return p != ClearancePeer::mujoco; }
 
 // The distance itself as each clearance peer computes it (bench_distance.cpp): FCL's distance() (its
 // defaults: distance_tolerance 1e-6, no nearest points), btGjkPairDetector's and btGjkEpaSolver2's.

@@ -17,7 +17,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # The peer libraries are Debian's packages; pkg-config finds Bullet's double-precision build and ODE.
-bash scripts/deps.sh libfcl-dev libbullet-dev libode-dev pkg-config
+bash scripts/deps.sh libfcl-dev libbullet-dev libode-dev libmujoco-dev pkg-config
 build="${BUILD_DIR:-build-bench}"
 out="${OUTPUT:-docs/performance.md}"
 # -O2 as the tests and the CLI are built; -g changes no code, it lets `perf annotate` show sources.

@@ -3,7 +3,7 @@
 # Usage: scripts/tidy.sh [build-dir]   — prints the warnings; exits 1 if there are any.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/deps.sh clang-tidy libfcl-dev libbullet-dev libode-dev pkg-config
+bash scripts/deps.sh clang-tidy libfcl-dev libbullet-dev libode-dev libmujoco-dev pkg-config
 build="${1:-build-tidy}"
 cmake -S . -B "$build" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_BUILD_TYPE=Debug -DBOXCYL_BUILD_TESTS=ON -DBOXCYL_BUILD_TOOLS=ON \
       -DBOXCYL_BUILD_PYTHON=ON -DBOXCYL_BUILD_BENCHMARKS=ON -DBOXCYL_BENCH_PEERS=ON >/dev/null
