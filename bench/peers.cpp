@@ -566,7 +566,7 @@ std::vector<char> ending_the_process(std::size_t n, const Query& query) {
         }
         int status = 0;
         if (waitpid(pid, &status, 0) != pid) throw std::runtime_error("waitpid() failed");
-        failed[i] = !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+        failed[i] = static_cast<char>(!(WIFEXITED(status) && WEXITSTATUS(status) == 0));
     }
     return failed;
 }
