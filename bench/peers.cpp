@@ -155,6 +155,26 @@ private:
     const Library& self() const { return static_cast<const Library&>(*this); }
 };
 
+// The same for a library whose query(i) can fail, tried once first (untimed): the constructor fills
+// failed_; a failed query answers false and is left out of the timed passes.
+template <class Library>
+struct AnsweringUnlessFailed : PeerQueries::Impl {
+    bool answer(std::size_t i) const override { return !failed_[i] && self().query(i); }
+    long pass(std::size_t n) const override {
+        long hits = 0;
+        for (std::size_t i = 0; i < n; ++i)
+            if (!failed_[i]) hits += self().query(i);
+        return hits;
+    }
+    bool failed(std::size_t i) const override { return failed_[i]; }
+
+protected:
+    std::vector<char> failed_;
+
+private:
+    const Library& self() const { return static_cast<const Library&>(*this); }
+};
+
 // ---- FCL 0.7: fcl::collide and fcl::distance on two shapes, GJK solver libccd (the default) or FCL's own ----
 
 fcl::Transform3d fcl_transform(const Placed& p) {
@@ -328,7 +348,7 @@ struct OdeAssertion : std::runtime_error {
 };
 [[noreturn]] void throw_ode_assertion(int, const char* format, va_list) { throw OdeAssertion(format); }
 
-class Ode final : public PeerQueries::Impl {
+class Ode final : public AnsweringUnlessFailed<Ode> {
 public:
     explicit Ode(const std::vector<Case>& cases) {
         static std::once_flag init;
@@ -364,24 +384,14 @@ public:
     Ode(const Ode&) = delete;
     Ode& operator=(const Ode&) = delete;
 
-    bool answer(std::size_t i) const override { return failed_[i] ? false : query(i); }
-    long pass(std::size_t n) const override {
-        long hits = 0;
-        for (std::size_t i = 0; i < n; ++i)
-            if (!failed_[i]) hits += query(i);
-        return hits;
-    }
-    bool failed(std::size_t i) const override { return failed_[i]; }
-
-private:
     // Intersecting: at least one contact (a buffer of one: the count is capped by it).
     bool query(std::size_t i) const {
         dContactGeom contact;
         return dCollide(geoms_[i].first, geoms_[i].second, 1, &contact, sizeof contact) > 0;
     }
 
+private:
     std::vector<std::pair<dGeomID, dGeomID>> geoms_;
-    std::vector<char> failed_;
 };
 
 // ---- MuJoCo 2.2 (Debian's libmujoco): mj_collision on a model of two free bodies ----
@@ -485,26 +495,16 @@ private:
 };
 
 // The clearance question: a contact at margin m.
-class Mujoco final : public PeerQueries::Impl {
+class Mujoco final : public AnsweringUnlessFailed<Mujoco> {
 public:
     Mujoco(const std::vector<Case>& cases, const std::vector<double>& margins) : scene_(cases), margins_(margins) {
         failed_ = scene_.failures([this](std::size_t i) { return margins_[i]; });
     }
-    bool answer(std::size_t i) const override { return !failed_[i] && query(i); }
-    long pass(std::size_t n) const override {
-        long hits = 0;
-        for (std::size_t i = 0; i < n; ++i)
-            if (!failed_[i]) hits += query(i);
-        return hits;
-    }
-    bool failed(std::size_t i) const override { return failed_[i]; }
-
-private:
     bool query(std::size_t i) const { return scene_.contact(i, margins_[i]); }
 
+private:
     MujocoScene scene_;
     std::vector<double> margins_;
-    std::vector<char> failed_;
 };
 
 }  // namespace
