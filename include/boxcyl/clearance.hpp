@@ -538,8 +538,9 @@ std::optional<bool> exact_stage(Pair<Box>& q) {
 // The order is policy: on random pairs most are decided by the probes' stage 0 (the fat cylinder's hit
 // or the outer one's miss, certified in plain double, or a rim witness's hit); of the rest, near the
 // rim, the centre ball decides many for a few dozen flops and the quick bounds nearly all others, a
-// fraction of the cost of the grown box, the shoulders and GJK's bounds that follow. A pair whose quick search lands within kNearMargin of the margin skips the grown
-// box, the shoulders and GJK (near_margin): the refined bounds start from its pair. They come before the
+// fraction of the cost of the grown box, the shoulders and GJK's bounds that follow. A pair whose quick
+// search lands within kNearMargin of the margin skips the grown box, the shoulders and GJK
+// (near_margin): the refined bounds start from its pair. They come before the
 // probes' whole queries: at the margin they decide the pairs whose distance is within rounding of it
 // but not equal (most contacts with the side or a cap among them), where the probes' queries, on
 // shapes within rounding of touching, cost as much and decide fewer. The probes then decide the
