@@ -117,8 +117,7 @@ inline constexpr SignedPeerInfo kSignedPeers[] = {
 };
 
 // Whether the clearance peer has a distance call: MuJoCo 2.2 has none (its contacts under a margin
-// carry a `dist`, but with a margin of the centres' distance it lay outside boxcyl's enclosure on every
-// random pair, off by a median 94% of the distance: not a distance a user could take).
+// carry a `dist`, but under a margin far beyond the distance that is not the distance).
 constexpr bool has_distance(ClearancePeer p) { return p != ClearancePeer::mujoco; }
 
 // The distance itself as each clearance peer computes it (bench_distance.cpp): FCL's distance() (its

@@ -197,8 +197,8 @@ Stats answer(const Q& q, std::span<const Parallelepiped<T>> b, Out out, const Op
 
 // The scalar clearance query for the lanes the filter leaves (types.hpp's Clearance says why through a
 // pointer). Those lanes lie near the rim tori, where the box's centre ball (the scalar query's stage
-// after its probes' stage 0) decides more than half of them alone, and stage 0 fewer at several times
-// the cost: the ball first.
+// after its probes' stage 0) decides most of them alone, at a fraction of stage 0's cost: the ball
+// first (the scalar query asks it again after stage 0 for the rest, a few dozen flops).
 template <class Box>
 bool scalar_within(const Box& box, const Cylinder<double>& cyl, double m) {
     if (const std::optional<bool> v = filtered::centre_ball::decide(box, cyl, m)) return *v;
